@@ -1,0 +1,94 @@
+//! The contract every chapter fulfils, so that one runner can open it in a
+//! window, render it headless to a PNG, benchmark it and snapshot-test it.
+
+use crate::{Gpu, GpuNeeds, Input, PassTimer, ShaderError};
+
+/// A named picture a chapter can show: the default scene, a preset, or a
+/// debug view such as the depth buffer. Every view is also a snapshot.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct View {
+    pub name: &'static str,
+    pub about: &'static str,
+}
+
+/// The colour target a chapter draws into: the window's surface or an
+/// offscreen texture. Pipelines are built for `format`.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct Target {
+    pub format: wgpu::TextureFormat,
+    pub width: u32,
+    pub height: u32,
+}
+
+impl Target {
+    pub fn aspect(&self) -> f32 {
+        self.width as f32 / self.height.max(1) as f32
+    }
+}
+
+/// Everything a chapter needs to record one frame.
+pub struct Frame<'a> {
+    /// Record passes here; the runner submits it.
+    pub encoder: &'a mut wgpu::CommandEncoder,
+    /// The picture to draw into (window or offscreen), sized like [`Target`].
+    pub target: &'a wgpu::TextureView,
+    /// Scene time in seconds. Chapters animate from this and never read a
+    /// clock, so a snapshot at a given time is the same picture every run.
+    pub time: f32,
+    /// Index into [`Chapter::VIEWS`].
+    pub view: usize,
+    /// Hands out GPU timestamp slots for render passes (a no-op when the
+    /// adapter has no timestamp queries or nobody is measuring).
+    pub timer: &'a PassTimer,
+}
+
+/// One technique of the book, runnable in a window or headless.
+pub trait Chapter: Sized + 'static {
+    /// The package name, used for the window title, files and `--help`.
+    const NAME: &'static str;
+    /// The book's title for this chapter.
+    const TITLE: &'static str;
+    /// Every view the chapter can show; the first is the default.
+    const VIEWS: &'static [View];
+    /// Scene time at which snapshots and `--screenshot` are taken by default.
+    const SNAPSHOT_TIME: f32 = 1.0;
+    /// Chapter-specific keys for the F1 help, as (key, what it does).
+    const KEYS: &'static [(&'static str, &'static str)] = &[];
+
+    /// Device features the chapter requires or can use.
+    fn gpu_needs() -> GpuNeeds {
+        GpuNeeds::default()
+    }
+
+    /// Builds buffers, textures and pipelines for `target`.
+    fn new(gpu: &Gpu, target: Target) -> anyhow::Result<Self>;
+
+    /// The target changed size (window resize); recreate size-dependent
+    /// resources such as the depth buffer.
+    fn resize(&mut self, _gpu: &Gpu, _target: Target) {}
+
+    /// The learner (or `--view`) picked another view: set presets here.
+    fn select_view(&mut self, _view: usize) {}
+
+    /// Interactive input, once per frame before `render`; `dt` is the real
+    /// frame time in seconds. Never called when rendering headless.
+    fn update(&mut self, _input: &Input, _dt: f32) {}
+
+    /// Records the frame into `frame.encoder`.
+    fn render(&mut self, gpu: &Gpu, frame: &mut Frame);
+
+    /// Adds the chapter's controls to the overlay panel. The state the
+    /// controls start in is the state snapshots are taken in.
+    fn ui(&mut self, _ui: &mut egui::Ui) {}
+
+    /// A WGSL file under `shaders/` changed on disk: rebuild pipelines from
+    /// it. On error keep the old pipelines; the runner shows the message.
+    fn reload_shaders(&mut self, _gpu: &Gpu) -> Result<(), ShaderError> {
+        Ok(())
+    }
+}
+
+/// Looks a view up by name.
+pub fn view_index<C: Chapter>(name: &str) -> Option<usize> {
+    C::VIEWS.iter().position(|v| v.name == name)
+}

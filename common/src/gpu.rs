@@ -1,0 +1,120 @@
+//! Finding a GPU (or a software rasteriser) and opening a device on it.
+//!
+//! Everything else in the book starts from a [`Gpu`]: the adapter says what
+//! the machine can do, the device creates resources, the queue runs work.
+
+use std::fmt;
+
+/// The adapter, device and queue a chapter draws with.
+pub struct Gpu {
+    pub instance: wgpu::Instance,
+    pub adapter: wgpu::Adapter,
+    pub device: wgpu::Device,
+    pub queue: wgpu::Queue,
+}
+
+/// What a chapter needs beyond the WebGPU baseline. Optional features are
+/// enabled when the adapter has them; required ones make setup fail clearly.
+#[derive(Clone, Copy, Debug, Default)]
+pub struct GpuNeeds {
+    pub required: wgpu::Features,
+    pub optional: wgpu::Features,
+}
+
+/// Setup failed in a way a learner can fix: the message says how.
+#[derive(Debug)]
+pub struct NoAdapter {
+    pub reason: String,
+}
+
+impl fmt::Display for NoAdapter {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        write!(
+            f,
+            "no usable graphics adapter ({}). Install a driver; with no GPU, the software \
+             Vulkan driver works: `sudo apt-get install mesa-vulkan-drivers` on Debian/Ubuntu",
+            self.reason
+        )
+    }
+}
+
+impl std::error::Error for NoAdapter {}
+
+impl Gpu {
+    /// A device with no window: for screenshots, benches and tests.
+    ///
+    /// `WGPU_BACKEND` (vulkan, gl, metal, dx12) picks the API. Without it
+    /// the primary APIs are tried first and OpenGL only if they find
+    /// nothing, which avoids GL driver noise on machines with Vulkan.
+    pub fn headless(needs: GpuNeeds) -> Result<Self, NoAdapter> {
+        let instance = |backends: Option<wgpu::Backends>| {
+            let mut desc = wgpu::InstanceDescriptor::new_without_display_handle_from_env();
+            if let Some(backends) = backends {
+                desc.backends = backends;
+            }
+            wgpu::Instance::new(desc)
+        };
+        if wgpu::Backends::from_env().is_some() {
+            return pollster::block_on(Self::open(instance(None), None, needs));
+        }
+        pollster::block_on(Self::open(instance(Some(wgpu::Backends::PRIMARY)), None, needs))
+            .or_else(|_| pollster::block_on(Self::open(instance(Some(wgpu::Backends::GL)), None, needs)))
+    }
+
+    /// A device that can present to `surface` (created from `instance`).
+    pub async fn open(
+        instance: wgpu::Instance,
+        surface: Option<&wgpu::Surface<'_>>,
+        needs: GpuNeeds,
+    ) -> Result<Self, NoAdapter> {
+        let adapter = instance
+            .request_adapter(&wgpu::RequestAdapterOptions {
+                power_preference: wgpu::PowerPreference::HighPerformance,
+                force_fallback_adapter: false,
+                compatible_surface: surface,
+                ..Default::default()
+            })
+            .await
+            .map_err(|e| NoAdapter { reason: e.to_string() })?;
+
+        let missing = needs.required - adapter.features();
+        if !missing.is_empty() {
+            return Err(NoAdapter {
+                reason: format!("{} lacks the features {missing:?}", adapter.get_info().name),
+            });
+        }
+        let features = needs.required | (needs.optional & adapter.features());
+        let (device, queue) = adapter
+            .request_device(&wgpu::DeviceDescriptor {
+                label: Some("chapter device"),
+                required_features: features,
+                // Ask for what the adapter has: software adapters allow
+                // large textures, and limits only ever grow from defaults.
+                required_limits: adapter.limits(),
+                ..Default::default()
+            })
+            .await
+            .map_err(|e| NoAdapter { reason: format!("request_device failed: {e}") })?;
+
+        Ok(Self { instance, adapter, device, queue })
+    }
+
+    /// One line naming the adapter, for logs and bench tables.
+    pub fn describe(&self) -> String {
+        let info = self.adapter.get_info();
+        format!("{} ({:?}, {:?})", info.name, info.backend, info.device_type)
+    }
+
+    /// Runs `create` inside a validation error scope and returns the error
+    /// instead of letting wgpu's default handler panic. Hot reload uses
+    /// this so that a shader that parses but does not fit its pipeline
+    /// layout is reported, not fatal.
+    pub fn catch_validation<T>(&self, create: impl FnOnce() -> T) -> Result<T, String> {
+        let scope = self.device.push_error_scope(wgpu::ErrorFilter::Validation);
+        let value = create();
+        match pollster::block_on(scope.pop()) {
+            None => Ok(value),
+            Some(error) => Err(error.to_string()),
+        }
+    }
+}

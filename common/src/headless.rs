@@ -1,0 +1,167 @@
+//! Rendering with no window: into an offscreen texture, read back to the
+//! CPU as an image. Screenshots, snapshots and benches all go through here.
+
+use std::time::Instant;
+
+use anyhow::{Context as _, bail};
+
+use crate::{Chapter, Frame, Gpu, PassTimer, Stats, Target};
+
+/// Offscreen pictures are 8-bit RGBA with sRGB encoding, like a PNG.
+pub const OFFSCREEN_FORMAT: wgpu::TextureFormat = wgpu::TextureFormat::Rgba8UnormSrgb;
+
+/// What to render: size, scene time and view.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct RenderRequest {
+    pub width: u32,
+    pub height: u32,
+    pub time: f32,
+    pub view: usize,
+}
+
+/// A texture to render into instead of a window.
+pub struct Offscreen {
+    pub texture: wgpu::Texture,
+    pub view: wgpu::TextureView,
+}
+
+impl Offscreen {
+    pub fn new(device: &wgpu::Device, target: Target) -> Self {
+        let texture = device.create_texture(&wgpu::TextureDescriptor {
+            label: Some("offscreen target"),
+            size: wgpu::Extent3d { width: target.width, height: target.height, depth_or_array_layers: 1 },
+            mip_level_count: 1,
+            sample_count: 1,
+            dimension: wgpu::TextureDimension::D2,
+            format: target.format,
+            usage: wgpu::TextureUsages::RENDER_ATTACHMENT | wgpu::TextureUsages::COPY_SRC,
+            view_formats: &[],
+        });
+        let view = texture.create_view(&Default::default());
+        Self { texture, view }
+    }
+}
+
+// ANCHOR: readback
+/// Copies an RGBA8 or BGRA8 texture to the CPU as an RGBA image.
+///
+/// GPUs copy textures to buffers in rows padded to 256 bytes
+/// (`COPY_BYTES_PER_ROW_ALIGNMENT`), so a 37-pixel-wide image arrives as
+/// rows of 256 bytes, of which 148 are pixels. The padding is cut here.
+pub fn read_texture(gpu: &Gpu, texture: &wgpu::Texture) -> anyhow::Result<image::RgbaImage> {
+    use wgpu::TextureFormat as F;
+    let (width, height) = (texture.width(), texture.height());
+    let bgra = match texture.format() {
+        F::Rgba8Unorm | F::Rgba8UnormSrgb => false,
+        F::Bgra8Unorm | F::Bgra8UnormSrgb => true,
+        other => bail!("cannot read back {other:?} textures"),
+    };
+    let row_bytes = 4 * width;
+    let padded_row_bytes = row_bytes.next_multiple_of(wgpu::COPY_BYTES_PER_ROW_ALIGNMENT);
+    let buffer = gpu.device.create_buffer(&wgpu::BufferDescriptor {
+        label: Some("readback"),
+        size: u64::from(padded_row_bytes) * u64::from(height),
+        usage: wgpu::BufferUsages::COPY_DST | wgpu::BufferUsages::MAP_READ,
+        mapped_at_creation: false,
+    });
+    let mut encoder = gpu.device.create_command_encoder(&Default::default());
+    encoder.copy_texture_to_buffer(
+        texture.as_image_copy(),
+        wgpu::TexelCopyBufferInfo {
+            buffer: &buffer,
+            layout: wgpu::TexelCopyBufferLayout {
+                offset: 0,
+                bytes_per_row: Some(padded_row_bytes),
+                rows_per_image: Some(height),
+            },
+        },
+        texture.size(),
+    );
+    gpu.queue.submit([encoder.finish()]);
+
+    let slice = buffer.slice(..);
+    slice.map_async(wgpu::MapMode::Read, |_| {});
+    gpu.device.poll(wgpu::PollType::wait_indefinitely()).context("waiting for the readback")?;
+    let padded = slice.get_mapped_range().context("mapping the readback buffer")?;
+    let mut pixels = Vec::with_capacity((row_bytes * height) as usize);
+    for row in padded.chunks_exact(padded_row_bytes as usize) {
+        pixels.extend_from_slice(&row[..row_bytes as usize]);
+    }
+    if bgra {
+        pixels.chunks_exact_mut(4).for_each(|p| p.swap(0, 2));
+    }
+    image::RgbaImage::from_raw(width, height, pixels).context("readback size mismatch")
+}
+// ANCHOR_END: readback
+
+/// Records and submits one frame of `chapter` into `target`.
+pub fn draw_frame<C: Chapter>(gpu: &Gpu, chapter: &mut C, target: &wgpu::TextureView, time: f32, view: usize, timer: &PassTimer) {
+    let mut encoder = gpu.device.create_command_encoder(&wgpu::CommandEncoderDescriptor { label: Some(C::NAME) });
+    chapter.render(gpu, &mut Frame { encoder: &mut encoder, target, time, view, timer });
+    timer.resolve(&mut encoder);
+    gpu.queue.submit([encoder.finish()]);
+}
+
+/// Renders one picture of an existing chapter instance at its target size.
+pub fn capture<C: Chapter>(gpu: &Gpu, chapter: &mut C, target: Target, time: f32, view: usize) -> anyhow::Result<image::RgbaImage> {
+    let offscreen = Offscreen::new(&gpu.device, target);
+    draw_frame(gpu, chapter, &offscreen.view, time, view, &PassTimer::off());
+    read_texture(gpu, &offscreen.texture)
+}
+
+/// Creates the chapter offscreen and renders one picture.
+pub fn render_image<C: Chapter>(gpu: &Gpu, request: &RenderRequest) -> anyhow::Result<image::RgbaImage> {
+    let target = Target { format: OFFSCREEN_FORMAT, width: request.width, height: request.height };
+    let mut chapter = C::new(gpu, target)?;
+    chapter.select_view(request.view);
+    capture(gpu, &mut chapter, target, request.time, request.view)
+}
+
+/// Frame-time figures for one chapter view.
+#[derive(Clone, Debug)]
+pub struct BenchReport {
+    pub view: &'static str,
+    pub width: u32,
+    pub height: u32,
+    /// Wall time from recording the frame to the GPU finishing it.
+    pub frame: Stats,
+    /// GPU time per timed pass, when the adapter has timestamp queries.
+    pub passes: Vec<(&'static str, Stats)>,
+}
+
+/// Renders `frames` frames offscreen (after a few warm-up frames) and
+/// measures each. The scene time stays fixed so every frame does the same work.
+pub fn bench<C: Chapter>(gpu: &Gpu, request: &RenderRequest, frames: u32) -> anyhow::Result<BenchReport> {
+    let target = Target { format: OFFSCREEN_FORMAT, width: request.width, height: request.height };
+    let mut chapter = C::new(gpu, target)?;
+    chapter.select_view(request.view);
+    let offscreen = Offscreen::new(&gpu.device, target);
+    let timer = PassTimer::new(&gpu.device, 16);
+
+    let mut wall = Vec::new();
+    let mut passes: Vec<(&'static str, Vec<f64>)> = Vec::new();
+    for i in 0..frames + 3 {
+        let start = Instant::now();
+        draw_frame(gpu, &mut chapter, &offscreen.view, request.time, request.view, &timer);
+        gpu.device.poll(wgpu::PollType::wait_indefinitely()).context("waiting for the frame")?;
+        let elapsed = start.elapsed().as_secs_f64() * 1e3;
+        let timed = timer.read(gpu);
+        if i < 3 {
+            continue; // warm-up: pipeline caches, first-touch allocations
+        }
+        wall.push(elapsed);
+        for (label, ms) in timed {
+            match passes.iter_mut().find(|(l, _)| *l == label) {
+                Some((_, samples)) => samples.push(ms),
+                None => passes.push((label, vec![ms])),
+            }
+        }
+    }
+    Ok(BenchReport {
+        view: C::VIEWS[request.view].name,
+        width: request.width,
+        height: request.height,
+        frame: Stats::of(&wall).context("no frames measured")?,
+        passes: passes.into_iter().filter_map(|(l, s)| Some((l, Stats::of(&s)?))).collect(),
+    })
+}

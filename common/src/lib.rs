@@ -1,0 +1,32 @@
+//! The plumbing every chapter shares, and nothing any chapter teaches.
+//!
+//! A chapter implements [`Chapter`]; its `main` calls [`run`]. From there
+//! this crate opens a window with an egui overlay and hot-reloaded shaders,
+//! or renders headless for `--screenshot`, `--bench` and the snapshot tests.
+
+pub mod camera;
+pub mod chapter;
+pub mod cli;
+pub mod gpu;
+pub mod headless;
+pub mod input;
+pub mod mesh;
+mod overlay;
+pub mod primitives;
+pub mod shader;
+pub mod snapshot;
+pub mod texture;
+pub mod timing;
+mod window;
+
+pub use camera::{Camera, FlyController};
+pub use chapter::{Chapter, Frame, Target, View};
+pub use cli::run;
+pub use gpu::{Gpu, GpuNeeds, NoAdapter};
+pub use input::Input;
+pub use mesh::{Mesh, MeshData, Vertex};
+pub use shader::{ShaderError, ShaderFile};
+pub use timing::{PassTimer, Stats};
+
+// Chapters use the same versions as `common` without listing them again.
+pub use {anyhow, bytemuck, egui, glam, image, log, wgpu, winit};

@@ -1,0 +1,134 @@
+//! The egui overlay drawn over every chapter in a window: frame times, the
+//! view selector, the chapter's own controls, shader errors and key help.
+
+use std::collections::VecDeque;
+
+use winit::window::Window;
+
+use crate::Gpu;
+
+/// egui's input state, context and wgpu renderer for one window.
+pub struct Overlay {
+    pub ctx: egui::Context,
+    state: egui_winit::State,
+    renderer: egui_wgpu::Renderer,
+}
+
+impl Overlay {
+    /// `format` must be a non-sRGB format: egui blends in gamma space.
+    pub fn new(window: &Window, gpu: &Gpu, format: wgpu::TextureFormat) -> Self {
+        let ctx = egui::Context::default();
+        let max_side = gpu.device.limits().max_texture_dimension_2d as usize;
+        let state = egui_winit::State::new(
+            ctx.clone(),
+            egui::ViewportId::ROOT,
+            window,
+            Some(window.scale_factor() as f32),
+            window.theme(),
+            Some(max_side),
+        );
+        let renderer = egui_wgpu::Renderer::new(&gpu.device, format, egui_wgpu::RendererOptions::default());
+        Self { ctx, state, renderer }
+    }
+
+    /// Feeds a window event to egui; true when egui used it.
+    pub fn on_event(&mut self, window: &Window, event: &winit::event::WindowEvent) -> bool {
+        self.state.on_window_event(window, event).consumed
+    }
+
+    /// Runs the UI and records drawing it over `target` (loading, not clearing).
+    pub fn draw(
+        &mut self,
+        gpu: &Gpu,
+        encoder: &mut wgpu::CommandEncoder,
+        target: &wgpu::TextureView,
+        window: &Window,
+        ui: impl FnMut(&egui::Context),
+    ) -> Vec<wgpu::CommandBuffer> {
+        let raw = self.state.take_egui_input(window);
+        let output = self.ctx.run_pass(raw, ui);
+        self.state.handle_platform_output(window, output.platform_output);
+        let jobs = self.ctx.tessellate(output.shapes, output.pixels_per_point);
+        // Every texture delta must be applied, or egui's glyphs go missing.
+        for (id, deltas) in &output.textures_delta.set {
+            for delta in deltas {
+                self.renderer.update_texture(&gpu.device, &gpu.queue, *id, delta);
+            }
+        }
+        let size = window.inner_size();
+        let screen = egui_wgpu::ScreenDescriptor {
+            size_in_pixels: [size.width, size.height],
+            pixels_per_point: output.pixels_per_point,
+        };
+        let extra = self.renderer.update_buffers(&gpu.device, &gpu.queue, encoder, &jobs, &screen);
+        {
+            let mut pass = encoder
+                .begin_render_pass(&wgpu::RenderPassDescriptor {
+                    label: Some("egui overlay"),
+                    color_attachments: &[Some(wgpu::RenderPassColorAttachment {
+                        view: target,
+                        depth_slice: None,
+                        resolve_target: None,
+                        ops: wgpu::Operations { load: wgpu::LoadOp::Load, store: wgpu::StoreOp::Store },
+                    })],
+                    ..Default::default()
+                })
+                .forget_lifetime();
+            self.renderer.render(&mut pass, &jobs, &screen);
+        }
+        for id in &output.textures_delta.free {
+            self.renderer.free_texture(id);
+        }
+        extra
+    }
+}
+
+/// The last few seconds of frame times, for the FPS readout and graph.
+#[derive(Default)]
+pub struct FrameHistory {
+    millis: VecDeque<f32>,
+}
+
+impl FrameHistory {
+    const LEN: usize = 240;
+
+    pub fn push(&mut self, seconds: f32) {
+        if self.millis.len() == Self::LEN {
+            self.millis.pop_front();
+        }
+        self.millis.push_back(seconds * 1000.0);
+    }
+
+    /// Mean frame time over the last 60 frames, in milliseconds.
+    pub fn mean_ms(&self) -> f32 {
+        let recent = self.millis.iter().rev().take(60);
+        let n = recent.len().max(1) as f32;
+        recent.sum::<f32>() / n
+    }
+
+    /// A small line graph of frame times, scaled to the slowest frame shown.
+    pub fn graph(&self, ui: &mut egui::Ui) {
+        let size = egui::vec2(ui.available_width().max(200.0), 48.0);
+        let (rect, _) = ui.allocate_exact_size(size, egui::Sense::hover());
+        let painter = ui.painter_at(rect);
+        painter.rect_filled(rect, 2.0, egui::Color32::from_black_alpha(120));
+        let top = self.millis.iter().copied().fold(1.0f32, f32::max) * 1.1;
+        let points: Vec<egui::Pos2> = self
+            .millis
+            .iter()
+            .enumerate()
+            .map(|(i, ms)| {
+                let x = rect.left() + rect.width() * i as f32 / (Self::LEN - 1) as f32;
+                egui::pos2(x, rect.bottom() - rect.height() * ms / top)
+            })
+            .collect();
+        painter.add(egui::Shape::line(points, egui::Stroke::new(1.5, egui::Color32::LIGHT_GREEN)));
+        painter.text(
+            rect.left_top() + egui::vec2(4.0, 2.0),
+            egui::Align2::LEFT_TOP,
+            format!("{top:.1} ms"),
+            egui::FontId::monospace(10.0),
+            egui::Color32::GRAY,
+        );
+    }
+}

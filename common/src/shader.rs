@@ -1,0 +1,147 @@
+//! WGSL files: embedded at compile time, validated by naga with readable
+//! diagnostics, and re-read from disk while a window is open (hot reload).
+
+use std::path::{Path, PathBuf};
+use std::sync::atomic::{AtomicBool, Ordering};
+use std::sync::mpsc;
+
+/// The `shaders/` folder of the source tree this binary was built from.
+pub const SHADER_DIR: &str = concat!(env!("CARGO_MANIFEST_DIR"), "/../shaders");
+
+/// A WGSL file under `shaders/`, with its text as it was at compile time.
+#[derive(Clone, Copy, Debug)]
+pub struct ShaderFile {
+    /// Path relative to `shaders/`, e.g. `"triangle/triangle.wgsl"`.
+    pub path: &'static str,
+    pub embedded: &'static str,
+}
+
+/// Names a WGSL file under `shaders/` and embeds it, so the binary runs from
+/// anywhere. For use in chapter crates (`chapters/NN-name/`).
+#[macro_export]
+macro_rules! shader {
+    ($path:literal) => {
+        $crate::ShaderFile {
+            path: $path,
+            embedded: include_str!(concat!(env!("CARGO_MANIFEST_DIR"), "/../../shaders/", $path)),
+        }
+    };
+}
+
+/// A shader that failed to load: naga's diagnostic, with file and line.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct ShaderError(pub String);
+
+impl std::fmt::Display for ShaderError {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.write_str(&self.0)
+    }
+}
+
+impl std::error::Error for ShaderError {}
+
+static FROM_DISK: AtomicBool = AtomicBool::new(false);
+
+/// Read shaders from the source tree instead of the embedded copies. The
+/// window runner turns this on when it watches `shaders/` for edits.
+pub fn read_from_disk(on: bool) {
+    FROM_DISK.store(on, Ordering::Relaxed);
+}
+
+impl ShaderFile {
+    /// Where the file lives in the source tree.
+    pub fn disk_path(&self) -> PathBuf {
+        Path::new(SHADER_DIR).join(self.path)
+    }
+
+    /// The current text: from disk while hot reload is on, else embedded.
+    pub fn source(&self) -> Result<String, ShaderError> {
+        if FROM_DISK.load(Ordering::Relaxed) {
+            std::fs::read_to_string(self.disk_path())
+                .map_err(|e| ShaderError(format!("cannot read {}: {e}", self.disk_path().display())))
+        } else {
+            Ok(self.embedded.to_string())
+        }
+    }
+
+    /// Validates the current text and creates a shader module from it.
+    pub fn module(&self, device: &wgpu::Device) -> Result<wgpu::ShaderModule, ShaderError> {
+        let source = self.source()?;
+        validate(&source, self.path)?;
+        Ok(device.create_shader_module(wgpu::ShaderModuleDescriptor {
+            label: Some(self.path),
+            source: wgpu::ShaderSource::Wgsl(source.into()),
+        }))
+    }
+}
+
+/// Parses and validates WGSL with naga, the same front end wgpu uses, and
+/// renders any error as a codespan diagnostic naming `path` and the line.
+pub fn validate(source: &str, path: &str) -> Result<naga::Module, ShaderError> {
+    let module = naga::front::wgsl::parse_str(source)
+        .map_err(|e| ShaderError(e.emit_to_string_with_path(source, path)))?;
+    naga::valid::Validator::new(naga::valid::ValidationFlags::all(), naga::valid::Capabilities::all())
+        .validate(&module)
+        .map_err(|e| ShaderError(e.emit_to_string_with_path(source, path)))?;
+    Ok(module)
+}
+
+/// Watches `shaders/` and reports when a `.wgsl` file changes.
+pub struct ShaderWatcher {
+    _watcher: notify::RecommendedWatcher,
+    changes: mpsc::Receiver<PathBuf>,
+}
+
+impl ShaderWatcher {
+    /// Starts watching, or returns `None` when the source tree is absent
+    /// (a binary copied elsewhere): then the embedded shaders are all there is.
+    pub fn start() -> Option<Self> {
+        use notify::Watcher as _;
+        let dir = Path::new(SHADER_DIR);
+        if !dir.is_dir() {
+            return None;
+        }
+        let (sender, changes) = mpsc::channel();
+        let mut watcher = notify::recommended_watcher(move |event: notify::Result<notify::Event>| {
+            if let Ok(event) = event
+                && (event.kind.is_modify() || event.kind.is_create())
+            {
+                for path in event.paths {
+                    if path.extension().is_some_and(|e| e == "wgsl") {
+                        let _ = sender.send(path);
+                    }
+                }
+            }
+        })
+        .ok()?;
+        watcher.watch(dir, notify::RecursiveMode::Recursive).ok()?;
+        Some(Self { _watcher: watcher, changes })
+    }
+
+    /// The files changed since the last call (editors often write several
+    /// events per save; they are merged into one list).
+    pub fn changed(&self) -> Vec<PathBuf> {
+        let mut paths: Vec<PathBuf> = self.changes.try_iter().collect();
+        paths.sort();
+        paths.dedup();
+        paths
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn diagnostic_names_file_and_line() {
+        let broken = "@vertex\nfn vs() -> @builtin(position) vec4<f32> {\n    return vec4<f32>(1.0, 2.0);\n}\n";
+        let ShaderError(message) = validate(broken, "camera/broken.wgsl").unwrap_err();
+        assert!(message.contains("camera/broken.wgsl:3"), "{message}");
+    }
+
+    #[test]
+    fn a_valid_shader_passes() {
+        let ok = "@vertex\nfn vs() -> @builtin(position) vec4<f32> { return vec4<f32>(0.0); }\n";
+        assert!(validate(ok, "ok.wgsl").is_ok());
+    }
+}

@@ -1,0 +1,230 @@
+//! Comparing a rendered picture with its reference by NVIDIA's FLIP metric,
+//! which scores differences the way a viewer would notice them.
+
+use std::fmt;
+use std::path::{Path, PathBuf};
+
+/// How different a picture may be from its reference and still pass.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Tolerance {
+    /// Largest allowed mean FLIP error over the image (0 = identical, 1 = opposite).
+    pub mean: f32,
+    /// Largest allowed fraction of pixels whose FLIP error exceeds
+    /// [`Tolerance::OUTLIER_ERROR`]: catches a small object gone missing,
+    /// which barely moves the mean.
+    pub outliers: f32,
+}
+
+impl Tolerance {
+    /// FLIP error above which a pixel counts as visibly wrong.
+    pub const OUTLIER_ERROR: f32 = 0.3;
+    /// Allows rasteriser and driver differences, not missing geometry.
+    pub const DEFAULT: Self = Self { mean: 0.01, outliers: 0.001 };
+}
+
+/// The FLIP figures of one comparison.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Comparison {
+    pub mean: f32,
+    pub p99: f32,
+    pub max: f32,
+    /// Fraction of pixels above [`Tolerance::OUTLIER_ERROR`].
+    pub outliers: f32,
+}
+
+impl Comparison {
+    pub fn passes(&self, tolerance: Tolerance) -> bool {
+        self.mean <= tolerance.mean && self.outliers <= tolerance.outliers
+    }
+}
+
+impl fmt::Display for Comparison {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        write!(
+            f,
+            "FLIP mean {:.5}, p99 {:.4}, max {:.4}, {:.3}% of pixels above {}",
+            self.mean,
+            self.p99,
+            self.max,
+            100.0 * self.outliers,
+            Tolerance::OUTLIER_ERROR
+        )
+    }
+}
+
+/// Why a snapshot did not pass.
+#[derive(Debug)]
+pub enum SnapshotError {
+    /// There is no reference image: a failure, never a silent pass.
+    Missing { reference: PathBuf, actual: PathBuf },
+    Unreadable { reference: PathBuf, reason: String },
+    WrongSize { reference: PathBuf, expected: (u32, u32), found: (u32, u32), actual: PathBuf },
+    TooDifferent { comparison: Comparison, tolerance: Tolerance, actual: PathBuf, diff: PathBuf },
+    CannotWrite { path: PathBuf, reason: String },
+}
+
+impl fmt::Display for SnapshotError {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self {
+            Self::Missing { reference, actual } => write!(
+                f,
+                "no reference image {}; the picture rendered now is {} (look at it, then `cargo xtask snapshot --bless`)",
+                reference.display(),
+                actual.display()
+            ),
+            Self::Unreadable { reference, reason } => write!(f, "cannot read reference {}: {reason}", reference.display()),
+            Self::WrongSize { reference, expected, found, actual } => write!(
+                f,
+                "{} is {}x{} but the render is {}x{} (written to {})",
+                reference.display(),
+                expected.0,
+                expected.1,
+                found.0,
+                found.1,
+                actual.display()
+            ),
+            Self::TooDifferent { comparison, tolerance, actual, diff } => write!(
+                f,
+                "{comparison} (allowed: mean {}, {}% above {}); actual: {}, FLIP error map: {}",
+                tolerance.mean,
+                100.0 * tolerance.outliers,
+                Tolerance::OUTLIER_ERROR,
+                actual.display(),
+                diff.display()
+            ),
+            Self::CannotWrite { path, reason } => write!(f, "cannot write {}: {reason}", path.display()),
+        }
+    }
+}
+
+impl std::error::Error for SnapshotError {}
+
+/// `tests/snapshots/x/view.png` → `tests/snapshots/x/view-<suffix>.png`.
+pub fn sibling(reference: &Path, suffix: &str) -> PathBuf {
+    let stem = reference.file_stem().unwrap_or_default().to_string_lossy();
+    reference.with_file_name(format!("{stem}-{suffix}.png"))
+}
+
+fn save(image: &image::RgbaImage, path: &Path) -> Result<(), SnapshotError> {
+    image.save(path).map_err(|e| SnapshotError::CannotWrite { path: path.into(), reason: e.to_string() })
+}
+
+fn rgb(image: &image::RgbaImage) -> nv_flip::FlipImageRgb8 {
+    let data: Vec<u8> = image.pixels().flat_map(|p| [p[0], p[1], p[2]]).collect();
+    nv_flip::FlipImageRgb8::with_data(image.width(), image.height(), &data)
+}
+
+/// Scores `actual` against `reference` (same size) and returns the figures
+/// and FLIP's colour-mapped error image.
+pub fn compare(reference: &image::RgbaImage, actual: &image::RgbaImage) -> (Comparison, image::RgbImage) {
+    let error = nv_flip::flip(rgb(reference), rgb(actual), nv_flip::DEFAULT_PIXELS_PER_DEGREE);
+    let values = error.to_vec();
+    let mut pool = nv_flip::FlipPool::from_image(&error);
+    let comparison = Comparison {
+        mean: pool.mean(),
+        p99: pool.get_percentile(0.99, false),
+        max: pool.max_value(),
+        outliers: values.iter().filter(|&&e| e > Tolerance::OUTLIER_ERROR).count() as f32 / values.len() as f32,
+    };
+    let heat = error.apply_color_lut(&nv_flip::magma_lut());
+    let diff = image::RgbImage::from_raw(heat.width(), heat.height(), heat.to_vec()).expect("FLIP returns w*h*3 bytes");
+    (comparison, diff)
+}
+
+/// Checks `actual` against the reference PNG. On failure the rendered
+/// picture is written beside the reference as `<view>-actual.png`, with the
+/// FLIP error map as `<view>-diff.png`. Stale ones are removed on success.
+pub fn check(actual: &image::RgbaImage, reference: &Path, tolerance: Tolerance) -> Result<Comparison, SnapshotError> {
+    let actual_path = sibling(reference, "actual");
+    let diff_path = sibling(reference, "diff");
+    if !reference.exists() {
+        if let Some(dir) = actual_path.parent() {
+            let _ = std::fs::create_dir_all(dir);
+        }
+        save(actual, &actual_path)?;
+        return Err(SnapshotError::Missing { reference: reference.into(), actual: actual_path });
+    }
+    let expected = image::open(reference)
+        .map_err(|e| SnapshotError::Unreadable { reference: reference.into(), reason: e.to_string() })?
+        .to_rgba8();
+    if expected.dimensions() != actual.dimensions() {
+        save(actual, &actual_path)?;
+        return Err(SnapshotError::WrongSize {
+            reference: reference.into(),
+            expected: expected.dimensions(),
+            found: actual.dimensions(),
+            actual: actual_path,
+        });
+    }
+    let (comparison, diff) = compare(&expected, actual);
+    if comparison.passes(tolerance) {
+        let _ = std::fs::remove_file(&actual_path);
+        let _ = std::fs::remove_file(&diff_path);
+        Ok(comparison)
+    } else {
+        save(actual, &actual_path)?;
+        diff.save(&diff_path).map_err(|e| SnapshotError::CannotWrite { path: diff_path.clone(), reason: e.to_string() })?;
+        Err(SnapshotError::TooDifferent { comparison, tolerance, actual: actual_path, diff: diff_path })
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn scene(shift: u32) -> image::RgbaImage {
+        image::RgbaImage::from_fn(64, 48, |x, y| {
+            let inside = (20 + shift..40 + shift).contains(&x) && (10..30).contains(&y);
+            if inside { image::Rgba([230, 120, 30, 255]) } else { image::Rgba([20, 30, 60, 255]) }
+        })
+    }
+
+    fn temp_dir(name: &str) -> PathBuf {
+        let dir = std::env::temp_dir().join(format!("snapshot-test-{name}-{}", std::process::id()));
+        std::fs::create_dir_all(&dir).unwrap();
+        dir
+    }
+
+    #[test]
+    fn identical_pictures_score_zero() {
+        let (comparison, _) = compare(&scene(0), &scene(0));
+        assert_eq!(comparison.mean, 0.0);
+        assert!(comparison.passes(Tolerance::DEFAULT));
+    }
+
+    #[test]
+    fn a_missing_reference_fails_and_writes_the_actual_picture() {
+        let dir = temp_dir("missing");
+        let reference = dir.join("view.png");
+        let error = check(&scene(0), &reference, Tolerance::DEFAULT).unwrap_err();
+        assert!(matches!(error, SnapshotError::Missing { .. }), "{error}");
+        assert!(dir.join("view-actual.png").exists());
+        std::fs::remove_dir_all(dir).unwrap();
+    }
+
+    #[test]
+    fn a_moved_object_fails_with_actual_and_diff_written() {
+        let dir = temp_dir("moved");
+        let reference = dir.join("view.png");
+        scene(0).save(&reference).unwrap();
+        assert!(check(&scene(0), &reference, Tolerance::DEFAULT).is_ok());
+        let error = check(&scene(6), &reference, Tolerance::DEFAULT).unwrap_err();
+        let SnapshotError::TooDifferent { comparison, .. } = &error else { panic!("{error}") };
+        assert!(comparison.outliers > 0.05, "{comparison}");
+        assert!(dir.join("view-actual.png").exists() && dir.join("view-diff.png").exists());
+        // Passing again clears the stale failure pictures.
+        assert!(check(&scene(0), &reference, Tolerance::DEFAULT).is_ok());
+        assert!(!dir.join("view-actual.png").exists());
+        std::fs::remove_dir_all(dir).unwrap();
+    }
+
+    #[test]
+    fn a_different_size_fails() {
+        let dir = temp_dir("size");
+        let reference = dir.join("view.png");
+        scene(0).save(&reference).unwrap();
+        let small = image::RgbaImage::new(8, 8);
+        assert!(matches!(check(&small, &reference, Tolerance::DEFAULT), Err(SnapshotError::WrongSize { .. })));
+        std::fs::remove_dir_all(dir).unwrap();
+    }
+}

@@ -1,0 +1,128 @@
+//! Loading images into GPU textures, and the depth buffer helper.
+
+use std::path::Path;
+
+use anyhow::Context as _;
+
+/// The depth format every chapter uses: 32-bit float, nothing to pack.
+pub const DEPTH_FORMAT: wgpu::TextureFormat = wgpu::TextureFormat::Depth32Float;
+
+/// How the texels of an image are to be read.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum ColorSpace {
+    /// Colour pictures: stored sRGB-encoded, and the sampler decodes to
+    /// linear light so that lighting maths is right.
+    Srgb,
+    /// Data (normal maps, height maps, DuDv maps): used as stored.
+    Linear,
+}
+
+/// Reads a PNG or JPEG into RGBA8. Errors name the file and the reason.
+pub fn load_rgba(path: &Path) -> anyhow::Result<image::RgbaImage> {
+    let bytes = std::fs::read(path).with_context(|| format!("cannot read {}", path.display()))?;
+    decode_rgba(&bytes).with_context(|| format!("{} is not a readable PNG or JPEG", path.display()))
+}
+
+/// Decodes an encoded image already in memory (for assets embedded with
+/// `include_bytes!`).
+pub fn decode_rgba(bytes: &[u8]) -> anyhow::Result<image::RgbaImage> {
+    Ok(image::load_from_memory(bytes)?.to_rgba8())
+}
+
+/// A texture with the view and sampler a shader binds.
+pub struct Texture {
+    pub texture: wgpu::Texture,
+    pub view: wgpu::TextureView,
+    pub sampler: wgpu::Sampler,
+}
+
+impl Texture {
+    /// Uploads an RGBA8 image (one mip level) with a linear, repeating sampler.
+    pub fn from_image(device: &wgpu::Device, queue: &wgpu::Queue, image: &image::RgbaImage, space: ColorSpace, label: &str) -> Self {
+        let format = match space {
+            ColorSpace::Srgb => wgpu::TextureFormat::Rgba8UnormSrgb,
+            ColorSpace::Linear => wgpu::TextureFormat::Rgba8Unorm,
+        };
+        let size = wgpu::Extent3d { width: image.width(), height: image.height(), depth_or_array_layers: 1 };
+        let texture = device.create_texture(&wgpu::TextureDescriptor {
+            label: Some(label),
+            size,
+            mip_level_count: 1,
+            sample_count: 1,
+            dimension: wgpu::TextureDimension::D2,
+            format,
+            usage: wgpu::TextureUsages::TEXTURE_BINDING | wgpu::TextureUsages::COPY_DST,
+            view_formats: &[],
+        });
+        queue.write_texture(
+            texture.as_image_copy(),
+            image.as_raw(),
+            wgpu::TexelCopyBufferLayout { offset: 0, bytes_per_row: Some(4 * image.width()), rows_per_image: None },
+            size,
+        );
+        let view = texture.create_view(&Default::default());
+        let sampler = device.create_sampler(&wgpu::SamplerDescriptor {
+            label: Some(label),
+            address_mode_u: wgpu::AddressMode::Repeat,
+            address_mode_v: wgpu::AddressMode::Repeat,
+            mag_filter: wgpu::FilterMode::Linear,
+            min_filter: wgpu::FilterMode::Linear,
+            ..Default::default()
+        });
+        Self { texture, view, sampler }
+    }
+
+    /// Loads an image file; see [`load_rgba`] for the errors.
+    pub fn from_file(device: &wgpu::Device, queue: &wgpu::Queue, path: &Path, space: ColorSpace) -> anyhow::Result<Self> {
+        let image = load_rgba(path)?;
+        Ok(Self::from_image(device, queue, &image, space, &path.display().to_string()))
+    }
+}
+
+/// A depth buffer the size of the colour target.
+pub fn depth_view(device: &wgpu::Device, width: u32, height: u32) -> wgpu::TextureView {
+    device
+        .create_texture(&wgpu::TextureDescriptor {
+            label: Some("depth"),
+            size: wgpu::Extent3d { width, height, depth_or_array_layers: 1 },
+            mip_level_count: 1,
+            sample_count: 1,
+            dimension: wgpu::TextureDimension::D2,
+            format: DEPTH_FORMAT,
+            // Sampled too, so debug views can show what the depth test saw.
+            usage: wgpu::TextureUsages::RENDER_ATTACHMENT | wgpu::TextureUsages::TEXTURE_BINDING,
+            view_formats: &[],
+        })
+        .create_view(&Default::default())
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn missing_file_error_names_the_file() {
+        let error = load_rgba(Path::new("no/such/rock.png")).unwrap_err();
+        let message = format!("{error:#}");
+        assert!(message.contains("no/such/rock.png"), "{message}");
+        assert!(message.contains("No such file"), "{message}");
+    }
+
+    #[test]
+    fn corrupt_file_error_names_the_file_and_the_reason() {
+        let path = std::env::temp_dir().join(format!("corrupt-{}.png", std::process::id()));
+        std::fs::write(&path, b"\x89PNG\r\n\x1a\nthis is not a png").unwrap();
+        let message = format!("{:#}", load_rgba(&path).unwrap_err());
+        std::fs::remove_file(&path).unwrap();
+        assert!(message.contains(&path.display().to_string()), "{message}");
+        assert!(message.contains("not a readable PNG or JPEG"), "{message}");
+    }
+
+    #[test]
+    fn decodes_what_it_encodes() {
+        let image = image::RgbaImage::from_fn(3, 2, |x, y| image::Rgba([x as u8 * 80, y as u8 * 200, 7, 255]));
+        let mut png = Vec::new();
+        image.write_to(&mut std::io::Cursor::new(&mut png), image::ImageFormat::Png).unwrap();
+        assert_eq!(decode_rgba(&png).unwrap(), image);
+    }
+}

@@ -1,0 +1,152 @@
+//! Measuring frames: GPU timestamps around render passes, and the
+//! min/median/p95 summaries the bench prints.
+
+use std::cell::RefCell;
+
+/// Hands out timestamp query slots to render passes and reads the times back.
+///
+/// A chapter asks `timer.pass("reflection")` when it begins a pass and puts
+/// the answer into `RenderPassDescriptor::timestamp_writes`. When the
+/// adapter has no timestamp queries, or nobody is measuring, the answer is
+/// `None` and the pass is simply not timed.
+pub struct PassTimer {
+    queries: Option<Queries>,
+    labels: RefCell<Vec<&'static str>>,
+}
+
+struct Queries {
+    set: wgpu::QuerySet,
+    resolve: wgpu::Buffer,
+    readback: wgpu::Buffer,
+    capacity: u32,
+}
+
+impl PassTimer {
+    /// A timer that never measures.
+    pub fn off() -> Self {
+        Self { queries: None, labels: RefCell::new(Vec::new()) }
+    }
+
+    /// A timer for up to `passes` passes a frame, if the device can time them.
+    pub fn new(device: &wgpu::Device, passes: u32) -> Self {
+        if !device.features().contains(wgpu::Features::TIMESTAMP_QUERY) {
+            return Self::off();
+        }
+        let count = 2 * passes;
+        let size = u64::from(count) * 8;
+        let set = device.create_query_set(&wgpu::QuerySetDescriptor {
+            label: Some("pass timestamps"),
+            ty: wgpu::QueryType::Timestamp,
+            count,
+        });
+        let resolve = device.create_buffer(&wgpu::BufferDescriptor {
+            label: Some("timestamp resolve"),
+            size,
+            usage: wgpu::BufferUsages::QUERY_RESOLVE | wgpu::BufferUsages::COPY_SRC,
+            mapped_at_creation: false,
+        });
+        let readback = device.create_buffer(&wgpu::BufferDescriptor {
+            label: Some("timestamp readback"),
+            size,
+            usage: wgpu::BufferUsages::MAP_READ | wgpu::BufferUsages::COPY_DST,
+            mapped_at_creation: false,
+        });
+        Self { queries: Some(Queries { set, resolve, readback, capacity: passes }), labels: RefCell::new(Vec::new()) }
+    }
+
+    pub fn is_on(&self) -> bool {
+        self.queries.is_some()
+    }
+
+    /// Timestamp writes for the next pass, labelled for the report.
+    pub fn pass(&self, label: &'static str) -> Option<wgpu::RenderPassTimestampWrites<'_>> {
+        let queries = self.queries.as_ref()?;
+        let mut labels = self.labels.borrow_mut();
+        let index = labels.len() as u32;
+        if index >= queries.capacity {
+            return None;
+        }
+        labels.push(label);
+        Some(wgpu::RenderPassTimestampWrites {
+            query_set: &queries.set,
+            beginning_of_pass_write_index: Some(2 * index),
+            end_of_pass_write_index: Some(2 * index + 1),
+        })
+    }
+
+    /// Records the copy of this frame's timestamps; call after the passes.
+    pub fn resolve(&self, encoder: &mut wgpu::CommandEncoder) {
+        let Some(queries) = &self.queries else { return };
+        let used = self.labels.borrow().len() as u32;
+        if used == 0 {
+            return;
+        }
+        encoder.resolve_query_set(&queries.set, 0..2 * used, &queries.resolve, 0);
+        encoder.copy_buffer_to_buffer(&queries.resolve, 0, &queries.readback, 0, u64::from(used) * 16);
+    }
+
+    /// Waits for the frame and returns (label, milliseconds) per timed pass,
+    /// then forgets the labels for the next frame.
+    pub fn read(&self, gpu: &crate::Gpu) -> Vec<(&'static str, f64)> {
+        let labels = std::mem::take(&mut *self.labels.borrow_mut());
+        let Some(queries) = &self.queries else { return Vec::new() };
+        if labels.is_empty() {
+            return Vec::new();
+        }
+        let bytes = labels.len() as u64 * 16;
+        let slice = queries.readback.slice(..bytes);
+        slice.map_async(wgpu::MapMode::Read, |_| {});
+        if gpu.device.poll(wgpu::PollType::wait_indefinitely()).is_err() {
+            return Vec::new();
+        }
+        let period_ms = f64::from(gpu.queue.get_timestamp_period()) / 1e6;
+        let times: Vec<u64> = match slice.get_mapped_range() {
+            Ok(view) => bytemuck::cast_slice(&view).to_vec(),
+            Err(_) => return Vec::new(),
+        };
+        queries.readback.unmap();
+        labels
+            .into_iter()
+            .zip(times.chunks_exact(2))
+            .map(|(label, t)| (label, t[1].saturating_sub(t[0]) as f64 * period_ms))
+            .collect()
+    }
+}
+
+/// Summary of a series of timings, in milliseconds.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Stats {
+    pub min: f64,
+    pub median: f64,
+    pub p95: f64,
+    pub count: usize,
+}
+
+impl Stats {
+    /// Summarises `samples`; `None` when there are none.
+    pub fn of(samples: &[f64]) -> Option<Self> {
+        if samples.is_empty() {
+            return None;
+        }
+        let mut sorted = samples.to_vec();
+        sorted.sort_by(f64::total_cmp);
+        // Nearest-rank percentile: the smallest sample with at least p% at or below it.
+        let rank = |p: f64| sorted[((p * sorted.len() as f64).ceil() as usize).clamp(1, sorted.len()) - 1];
+        Some(Self { min: sorted[0], median: rank(0.5), p95: rank(0.95), count: sorted.len() })
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn stats_use_nearest_rank() {
+        let samples: Vec<f64> = (1..=100).rev().map(f64::from).collect();
+        let stats = Stats::of(&samples).unwrap();
+        assert_eq!((stats.min, stats.median, stats.p95, stats.count), (1.0, 50.0, 95.0, 100));
+        let one = Stats::of(&[4.0]).unwrap();
+        assert_eq!((one.min, one.median, one.p95), (4.0, 4.0, 4.0));
+        assert!(Stats::of(&[]).is_none());
+    }
+}
