@@ -1,6 +1,7 @@
 //! The contract every chapter fulfils, so that one runner can open it in a
 //! window, render it headless to a PNG, benchmark it and snapshot-test it.
 
+use crate::snapshot::Tolerance;
 use crate::{Gpu, GpuNeeds, Input, PassTimer, ShaderError};
 
 /// A named picture a chapter can show: the default scene, a preset, or a
@@ -54,6 +55,12 @@ pub trait Chapter: Sized + 'static {
     const SNAPSHOT_TIME: f32 = 1.0;
     /// Chapter-specific keys for the F1 help, as (key, what it does).
     const KEYS: &'static [(&'static str, &'static str)] = &[];
+
+    /// How far a snapshot of `view` may drift from its reference. Loosen it
+    /// only for views whose pixels legitimately vary between drivers.
+    fn snapshot_tolerance(_view: usize) -> Tolerance {
+        Tolerance::DEFAULT
+    }
 
     /// Device features the chapter requires or can use.
     fn gpu_needs() -> GpuNeeds {

@@ -105,6 +105,7 @@ impl std::error::Error for UsageError {}
 /// this one call. Errors print as one line and a non-zero exit code, never
 /// a panic: 2 for bad flags and a missing adapter, 1 for anything else.
 pub fn run<C: Chapter>() -> ExitCode {
+    crate::gpu::quiet_driver_warnings();
     env_logger::Builder::from_env(env_logger::Env::default().default_filter_or("warn")).init();
     let args = match Args::parse_for::<C>() {
         Ok(args) => args,

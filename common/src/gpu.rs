@@ -40,6 +40,18 @@ impl fmt::Display for NoAdapter {
 
 impl std::error::Error for NoAdapter {}
 
+/// Mesa's Vulkan driver prints "XDG_RUNTIME_DIR is invalid" twice per
+/// device when that variable is unset, as it is on servers and in
+/// containers; nothing here needs it. Call first thing in `main`, before
+/// any other thread exists.
+pub fn quiet_driver_warnings() {
+    if std::env::var_os("XDG_RUNTIME_DIR").is_none() {
+        // SAFETY: called at the start of `main`, while no other thread can
+        // read the environment.
+        unsafe { std::env::set_var("XDG_RUNTIME_DIR", std::env::temp_dir()) };
+    }
+}
+
 impl Gpu {
     /// A device with no window: for screenshots, benches and tests.
     ///

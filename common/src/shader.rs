@@ -2,8 +2,7 @@
 //! diagnostics, and re-read from disk while a window is open (hot reload).
 
 use std::path::{Path, PathBuf};
-use std::sync::atomic::{AtomicBool, Ordering};
-use std::sync::mpsc;
+use std::sync::{Mutex, mpsc};
 
 /// The `shaders/` folder of the source tree this binary was built from.
 pub const SHADER_DIR: &str = concat!(env!("CARGO_MANIFEST_DIR"), "/../shaders");
@@ -40,27 +39,27 @@ impl std::fmt::Display for ShaderError {
 
 impl std::error::Error for ShaderError {}
 
-static FROM_DISK: AtomicBool = AtomicBool::new(false);
+/// Where shader text comes from: `None` for the embedded copies, or a
+/// folder laid out like `shaders/`.
+static DISK_ROOT: Mutex<Option<PathBuf>> = Mutex::new(None);
 
-/// Read shaders from the source tree instead of the embedded copies. The
-/// window runner turns this on when it watches `shaders/` for edits.
-pub fn read_from_disk(on: bool) {
-    FROM_DISK.store(on, Ordering::Relaxed);
+/// Reads shaders from `root` (a folder laid out like `shaders/`) instead of
+/// the embedded copies, or from the embedded copies again with `None`. The
+/// window runner points this at the source tree it watches for edits.
+pub fn read_from(root: Option<PathBuf>) {
+    *DISK_ROOT.lock().unwrap_or_else(|e| e.into_inner()) = root;
 }
 
 impl ShaderFile {
-    /// Where the file lives in the source tree.
-    pub fn disk_path(&self) -> PathBuf {
-        Path::new(SHADER_DIR).join(self.path)
-    }
-
     /// The current text: from disk while hot reload is on, else embedded.
     pub fn source(&self) -> Result<String, ShaderError> {
-        if FROM_DISK.load(Ordering::Relaxed) {
-            std::fs::read_to_string(self.disk_path())
-                .map_err(|e| ShaderError(format!("cannot read {}: {e}", self.disk_path().display())))
-        } else {
-            Ok(self.embedded.to_string())
+        let root = DISK_ROOT.lock().unwrap_or_else(|e| e.into_inner()).clone();
+        match root {
+            Some(root) => {
+                let path = root.join(self.path);
+                std::fs::read_to_string(&path).map_err(|e| ShaderError(format!("cannot read {}: {e}", path.display())))
+            }
+            None => Ok(self.embedded.to_string()),
         }
     }
 

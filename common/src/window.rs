@@ -188,7 +188,7 @@ impl<C: Chapter> Running<C> {
         let overlay = Overlay::new(&window, &gpu, overlay_format);
 
         let watcher = ShaderWatcher::start();
-        shader::read_from_disk(watcher.is_some());
+        shader::read_from(watcher.as_ref().map(|_| PathBuf::from(shader::SHADER_DIR)));
         let status = match &watcher {
             Some(_) => format!("watching {} for edits", PathBuf::from(shader::SHADER_DIR).display()),
             None => "shaders are built in (no source tree to watch)".into(),

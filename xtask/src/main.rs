@@ -1,1 +1,144 @@
-fn main(){}
+//! `cargo xtask <task>`: the project's maintenance commands.
+//!
+//! - `test`      everything CI runs: prerequisites, rustfmt, clippy, `cargo test`
+//!               (which includes the snapshot tests) and the book.
+//! - `snapshot [--bless] [CHAPTER...]`  compare with, or rewrite, the reference images.
+//! - `book`      check snapshots, copy them in as figures, check anchors, build HTML, check links.
+//! - `bench [CHAPTER...]`  release build, frame times per view, written into the book.
+
+use std::path::{Path, PathBuf};
+use std::process::{Command, ExitCode};
+
+use anyhow::{Context as _, bail, ensure};
+
+mod book;
+mod prerequisites;
+
+fn main() -> ExitCode {
+    let args: Vec<String> = std::env::args().skip(1).collect();
+    let result = match args.first().map(String::as_str) {
+        Some("test") => test(),
+        Some("snapshot") => snapshot(&args[1..]),
+        Some("book") => book::build(true),
+        Some("bench") => bench(&args[1..]),
+        Some("help" | "--help" | "-h") | None => {
+            print!("{}", USAGE);
+            return ExitCode::SUCCESS;
+        }
+        Some(other) => Err(anyhow::anyhow!("unknown task '{other}'; the tasks are: test, snapshot, book, bench")),
+    };
+    match result {
+        Ok(()) => ExitCode::SUCCESS,
+        Err(error) => {
+            eprintln!("xtask: error: {error:#}");
+            ExitCode::FAILURE
+        }
+    }
+}
+
+const USAGE: &str = "\
+cargo xtask test                           everything CI runs (prerequisites, fmt, clippy, tests, snapshots, book)
+cargo xtask snapshot [--bless] [CHAPTER..] compare every view with its reference; --bless rewrites them
+cargo xtask book                           check snapshots, copy figures, build book/book/index.html
+cargo xtask bench [CHAPTER..]              release build; frame times at 1280x720 into book/src/bench/
+";
+
+/// The workspace root (xtask lives one folder below it).
+fn root() -> PathBuf {
+    Path::new(env!("CARGO_MANIFEST_DIR")).parent().expect("xtask is inside the workspace").to_path_buf()
+}
+
+/// Runs cargo with `args` in the workspace root, echoing the command.
+fn cargo(args: &[&str]) -> anyhow::Result<()> {
+    println!("\n$ cargo {}", args.join(" "));
+    let status = Command::new(std::env::var("CARGO").unwrap_or_else(|_| "cargo".into()))
+        .args(args)
+        .current_dir(root())
+        .envs(quiet_env())
+        .status()
+        .context("cannot run cargo")?;
+    ensure!(status.success(), "`cargo {}` failed", args.join(" "));
+    Ok(())
+}
+
+/// Mesa's Vulkan driver warns when XDG_RUNTIME_DIR is unset (servers, CI).
+fn quiet_env() -> Vec<(String, String)> {
+    match std::env::var_os("XDG_RUNTIME_DIR") {
+        Some(_) => vec![],
+        None => vec![("XDG_RUNTIME_DIR".into(), std::env::temp_dir().display().to_string())],
+    }
+}
+
+fn test() -> anyhow::Result<()> {
+    let started = std::time::Instant::now();
+    prerequisites::ensure_adapter()?;
+    cargo(&["fmt", "--all", "--", "--check"])?;
+    cargo(&["clippy", "--workspace", "--all-targets", "--", "-D", "warnings"])?;
+    cargo(&["test", "--workspace"])?;
+    // `cargo test` has just compared every snapshot; the book only copies them.
+    book::build(false)?;
+    println!("\nxtask test: all checks passed in {:.0} s", started.elapsed().as_secs_f64());
+    Ok(())
+}
+
+fn snapshot(args: &[String]) -> anyhow::Result<()> {
+    prerequisites::ensure_adapter()?;
+    let mut cargo_args = vec!["run", "--quiet", "-p", "snapshots", "--"];
+    cargo_args.extend(args.iter().map(String::as_str));
+    cargo(&cargo_args)
+}
+
+/// Package names of `chapters/*`, in book order.
+fn chapter_names() -> anyhow::Result<Vec<String>> {
+    let mut dirs: Vec<PathBuf> = std::fs::read_dir(root().join("chapters"))?.map(|e| Ok(e?.path())).collect::<anyhow::Result<_>>()?;
+    dirs.sort();
+    dirs.iter()
+        .map(|dir| {
+            let manifest = std::fs::read_to_string(dir.join("Cargo.toml"))?;
+            let name = manifest.lines().find_map(|l| l.strip_prefix("name = ")).context("no package name")?;
+            Ok(name.trim_matches('"').to_string())
+        })
+        .collect()
+}
+
+fn bench(args: &[String]) -> anyhow::Result<()> {
+    prerequisites::ensure_adapter()?;
+    let all = chapter_names()?;
+    let chosen: Vec<String> = if args.is_empty() { all.clone() } else { args.to_vec() };
+    if let Some(bad) = chosen.iter().find(|c| !all.contains(c)) {
+        bail!("unknown chapter '{bad}'; the chapters are: {}", all.join(", "));
+    }
+    let mut build = vec!["build", "--release"];
+    for c in &chosen {
+        build.extend(["-p", c.as_str()]);
+    }
+    cargo(&build)?;
+    let cpu = std::fs::read_to_string("/proc/cpuinfo")
+        .ok()
+        .and_then(|info| info.lines().find_map(|l| l.strip_prefix("model name").map(|m| m.trim_start_matches([' ', '\t', ':']).to_string())))
+        .unwrap_or_else(|| "unknown CPU".into());
+    let cores = std::thread::available_parallelism().map_or(0, |n| n.get());
+    let out_dir = root().join("book/src/bench");
+    std::fs::create_dir_all(&out_dir)?;
+    for chapter in &chosen {
+        let binary = root().join("target/release").join(chapter);
+        let command = format!("{chapter} --bench --size 1280x720 --frames 100");
+        println!("\n$ {command}");
+        let output = Command::new(&binary)
+            .args(["--bench", "--size", "1280x720", "--frames", "100"])
+            .envs(quiet_env())
+            .output()
+            .with_context(|| format!("cannot run {}", binary.display()))?;
+        ensure!(output.status.success(), "{chapter} --bench failed: {}", String::from_utf8_lossy(&output.stderr));
+        let table = String::from_utf8(output.stdout)?;
+        print!("{table}");
+        let (heading, rows) = table.split_once('\n').unwrap_or((&table, ""));
+        let page = format!(
+            "Measured by `cargo xtask bench {chapter}` (release build, `{command}`): {heading}; \
+             CPU: {cpu}, {cores} threads.\n\n{rows}"
+        );
+        std::fs::write(out_dir.join(format!("{chapter}.md")), page)?;
+    }
+    println!("\nwrote {}", out_dir.display());
+    Ok(())
+}

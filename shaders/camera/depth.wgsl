@@ -1,0 +1,37 @@
+// Chapter 02: the depth buffer made visible.
+// A full-screen triangle reads the depth the scene pass left behind and
+// turns it into grey: black near the camera, white far away.
+
+struct DepthView {
+    near: f32,
+    far: f32,
+    // Distance shown as white in the linear view, in metres.
+    range: f32,
+    // 1: show the stored value itself, 0: convert it back to a distance.
+    raw: u32,
+};
+@group(0) @binding(0) var depth_buffer: texture_depth_2d;
+@group(0) @binding(1) var<uniform> params: DepthView;
+
+// Three vertices that cover the screen: (-1,-1), (3,-1), (-1,3).
+@vertex
+fn vs_fullscreen(@builtin(vertex_index) index: u32) -> @builtin(position) vec4<f32> {
+    let corner = vec2<f32>(f32((index << 1u) & 2u), f32(index & 2u));
+    return vec4<f32>(corner * 2.0 - 1.0, 0.0, 1.0);
+}
+
+// ANCHOR: linearize
+@fragment
+fn fs_depth(@builtin(position) pixel: vec4<f32>) -> @location(0) vec4<f32> {
+    let stored = textureLoad(depth_buffer, vec2<i32>(pixel.xy), 0);
+    var grey = stored;
+    if params.raw == 0u {
+        // Invert the projection: stored = far (d - near) / ((far - near) d).
+        let distance = params.near * params.far / (params.far - stored * (params.far - params.near));
+        grey = clamp(distance / params.range, 0.0, 1.0);
+    }
+    // The target sRGB-encodes what we write; decode first so the grey on
+    // screen is proportional to the value.
+    return vec4<f32>(vec3<f32>(pow(grey, 2.2)), 1.0);
+}
+// ANCHOR_END: linearize
