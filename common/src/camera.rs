@@ -38,6 +38,7 @@ impl Camera {
         }
     }
 
+    // ANCHOR: matrices
     /// Unit vector the camera looks along.
     pub fn forward(&self) -> Vec3 {
         let (sy, cy) = self.yaw.sin_cos();
@@ -66,6 +67,7 @@ impl Camera {
     pub fn view_projection(&self) -> Mat4 {
         self.projection() * self.view()
     }
+    // ANCHOR_END: matrices
 }
 
 /// Moves a [`Camera`] like a drone: WASD or arrows to move, Space/E to
@@ -98,6 +100,7 @@ impl FlyController {
         ("scroll", "move forward and back"),
     ];
 
+    // ANCHOR: fly
     pub fn update(&self, camera: &mut Camera, input: &Input, dt: f32) {
         let axis = |plus: &[KeyCode], minus: &[KeyCode]| {
             let on = |keys: &[KeyCode]| keys.iter().any(|&k| input.held(k)) as i32 as f32;
@@ -107,8 +110,7 @@ impl FlyController {
         let space = input.held(KeyCode::Space);
         let forward = axis(&[KeyCode::KeyW, KeyCode::ArrowUp], &[KeyCode::KeyS, KeyCode::ArrowDown]);
         let right = axis(&[KeyCode::KeyD, KeyCode::ArrowRight], &[KeyCode::KeyA, KeyCode::ArrowLeft]);
-        let up = axis(&[KeyCode::KeyE], &[KeyCode::KeyQ])
-            + if space { if shift { -1.0 } else { 1.0 } } else { 0.0 };
+        let up = axis(&[KeyCode::KeyE], &[KeyCode::KeyQ]) + if space { if shift { -1.0 } else { 1.0 } } else { 0.0 };
         let fast = input.held(KeyCode::ControlLeft) || input.held(KeyCode::ControlRight);
 
         let flat_forward = Vec3::new(camera.forward().x, 0.0, camera.forward().z).normalize_or_zero();
@@ -128,6 +130,7 @@ impl FlyController {
         let limit = 89f32.to_radians();
         camera.pitch = camera.pitch.clamp(-limit, limit);
     }
+    // ANCHOR_END: fly
 }
 
 #[cfg(test)]

@@ -117,11 +117,8 @@ pub fn run<C: Chapter>() -> ExitCode {
         }
         return ExitCode::SUCCESS;
     }
-    let result = if args.screenshot.is_some() || args.bench {
-        run_headless::<C>(&args)
-    } else {
-        crate::window::run::<C>(&args)
-    };
+    let result =
+        if args.screenshot.is_some() || args.bench { run_headless::<C>(&args) } else { crate::window::run::<C>(&args) };
     match result {
         Ok(()) => ExitCode::SUCCESS,
         Err(error) => {
@@ -164,7 +161,12 @@ fn run_headless<C: Chapter>(args: &Args) -> anyhow::Result<()> {
     if let Some(path) = &args.screenshot {
         check_writable(path)?;
     }
-    let gpu = Gpu::headless(C::gpu_needs())?;
+    let mut needs = C::gpu_needs();
+    if args.bench {
+        // GPU pass times, where the adapter can measure them.
+        needs.optional |= wgpu::Features::TIMESTAMP_QUERY;
+    }
+    let gpu = Gpu::headless(needs)?;
     check_size(&gpu, args.size)?;
     let time = args.time.unwrap_or(C::SNAPSHOT_TIME);
     let request = |view| RenderRequest { width: args.size.width, height: args.size.height, time, view };
@@ -180,7 +182,13 @@ fn run_headless<C: Chapter>(args: &Args) -> anyhow::Result<()> {
             None => (0..C::VIEWS.len()).collect(),
         };
         let frames = args.frames.unwrap_or(100);
-        println!("{} on {}, {}x{}, {frames} frames per view", C::NAME, gpu.describe(), args.size.width, args.size.height);
+        println!(
+            "{} on {}, {}x{}, {frames} frames per view",
+            C::NAME,
+            gpu.describe(),
+            args.size.width,
+            args.size.height
+        );
         println!("| view | what | min ms | median ms | p95 ms |");
         println!("|---|---|---:|---:|---:|");
         let row = |view: &str, what: &str, s: Stats| {

@@ -91,9 +91,7 @@ impl Gpu {
 
         let missing = needs.required - adapter.features();
         if !missing.is_empty() {
-            return Err(NoAdapter {
-                reason: format!("{} lacks the features {missing:?}", adapter.get_info().name),
-            });
+            return Err(NoAdapter { reason: format!("{} lacks the features {missing:?}", adapter.get_info().name) });
         }
         let features = needs.required | (needs.optional & adapter.features());
         let (device, queue) = adapter

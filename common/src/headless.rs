@@ -95,7 +95,14 @@ pub fn read_texture(gpu: &Gpu, texture: &wgpu::Texture) -> anyhow::Result<image:
 // ANCHOR_END: readback
 
 /// Records and submits one frame of `chapter` into `target`.
-pub fn draw_frame<C: Chapter>(gpu: &Gpu, chapter: &mut C, target: &wgpu::TextureView, time: f32, view: usize, timer: &PassTimer) {
+pub fn draw_frame<C: Chapter>(
+    gpu: &Gpu,
+    chapter: &mut C,
+    target: &wgpu::TextureView,
+    time: f32,
+    view: usize,
+    timer: &PassTimer,
+) {
     let mut encoder = gpu.device.create_command_encoder(&wgpu::CommandEncoderDescriptor { label: Some(C::NAME) });
     chapter.render(gpu, &mut Frame { encoder: &mut encoder, target, time, view, timer });
     timer.resolve(&mut encoder);
@@ -103,7 +110,13 @@ pub fn draw_frame<C: Chapter>(gpu: &Gpu, chapter: &mut C, target: &wgpu::Texture
 }
 
 /// Renders one picture of an existing chapter instance at its target size.
-pub fn capture<C: Chapter>(gpu: &Gpu, chapter: &mut C, target: Target, time: f32, view: usize) -> anyhow::Result<image::RgbaImage> {
+pub fn capture<C: Chapter>(
+    gpu: &Gpu,
+    chapter: &mut C,
+    target: Target,
+    time: f32,
+    view: usize,
+) -> anyhow::Result<image::RgbaImage> {
     let offscreen = Offscreen::new(&gpu.device, target);
     draw_frame(gpu, chapter, &offscreen.view, time, view, &PassTimer::off());
     read_texture(gpu, &offscreen.texture)

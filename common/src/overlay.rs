@@ -46,13 +46,14 @@ impl Overlay {
         ui: impl FnMut(&egui::Context),
     ) -> Vec<wgpu::CommandBuffer> {
         let raw = self.state.take_egui_input(window);
-        let output = self.ctx.run_pass(raw, ui);
+        let mut output = self.ctx.run_pass(raw, ui);
         self.state.handle_platform_output(window, output.platform_output);
         let jobs = self.ctx.tessellate(output.shapes, output.pixels_per_point);
-        // Every texture delta must be applied, or egui's glyphs go missing.
-        for (id, deltas) in &output.textures_delta.set {
-            for delta in deltas {
-                self.renderer.update_texture(&gpu.device, &gpu.queue, *id, delta);
+        // Every texture delta must be applied (and drained: egui asserts that
+        // none is dropped unapplied), or glyphs go missing.
+        for (id, deltas) in output.textures_delta.set.drain() {
+            for delta in &deltas {
+                self.renderer.update_texture(&gpu.device, &gpu.queue, id, delta);
             }
         }
         let size = window.inner_size();
@@ -76,8 +77,8 @@ impl Overlay {
                 .forget_lifetime();
             self.renderer.render(&mut pass, &jobs, &screen);
         }
-        for id in &output.textures_delta.free {
-            self.renderer.free_texture(id);
+        for id in output.textures_delta.free.drain() {
+            self.renderer.free_texture(&id);
         }
         extra
     }

@@ -1,7 +1,7 @@
 //! WGSL files: embedded at compile time, validated by naga with readable
 //! diagnostics, and re-read from disk while a window is open (hot reload).
 
-use std::path::{Path, PathBuf};
+use std::path::PathBuf;
 use std::sync::{Mutex, mpsc};
 
 /// The `shaders/` folder of the source tree this binary was built from.
@@ -77,8 +77,8 @@ impl ShaderFile {
 /// Parses and validates WGSL with naga, the same front end wgpu uses, and
 /// renders any error as a codespan diagnostic naming `path` and the line.
 pub fn validate(source: &str, path: &str) -> Result<naga::Module, ShaderError> {
-    let module = naga::front::wgsl::parse_str(source)
-        .map_err(|e| ShaderError(e.emit_to_string_with_path(source, path)))?;
+    let module =
+        naga::front::wgsl::parse_str(source).map_err(|e| ShaderError(e.emit_to_string_with_path(source, path)))?;
     naga::valid::Validator::new(naga::valid::ValidationFlags::all(), naga::valid::Capabilities::all())
         .validate(&module)
         .map_err(|e| ShaderError(e.emit_to_string_with_path(source, path)))?;
@@ -87,6 +87,8 @@ pub fn validate(source: &str, path: &str) -> Result<naga::Module, ShaderError> {
 
 /// Watches `shaders/` and reports when a `.wgsl` file changes.
 pub struct ShaderWatcher {
+    /// The folder being watched.
+    pub dir: PathBuf,
     _watcher: notify::RecommendedWatcher,
     changes: mpsc::Receiver<PathBuf>,
 }
@@ -96,10 +98,8 @@ impl ShaderWatcher {
     /// (a binary copied elsewhere): then the embedded shaders are all there is.
     pub fn start() -> Option<Self> {
         use notify::Watcher as _;
-        let dir = Path::new(SHADER_DIR);
-        if !dir.is_dir() {
-            return None;
-        }
+        // Canonical, so changed paths read `/…/shaders/x.wgsl`, not `common/../shaders`.
+        let dir = std::fs::canonicalize(SHADER_DIR).ok()?;
         let (sender, changes) = mpsc::channel();
         let mut watcher = notify::recommended_watcher(move |event: notify::Result<notify::Event>| {
             if let Ok(event) = event
@@ -113,8 +113,8 @@ impl ShaderWatcher {
             }
         })
         .ok()?;
-        watcher.watch(dir, notify::RecursiveMode::Recursive).ok()?;
-        Some(Self { _watcher: watcher, changes })
+        watcher.watch(&dir, notify::RecursiveMode::Recursive).ok()?;
+        Some(Self { dir, _watcher: watcher, changes })
     }
 
     /// The files changed since the last call (editors often write several

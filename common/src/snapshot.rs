@@ -56,11 +56,30 @@ impl fmt::Display for Comparison {
 #[derive(Debug)]
 pub enum SnapshotError {
     /// There is no reference image: a failure, never a silent pass.
-    Missing { reference: PathBuf, actual: PathBuf },
-    Unreadable { reference: PathBuf, reason: String },
-    WrongSize { reference: PathBuf, expected: (u32, u32), found: (u32, u32), actual: PathBuf },
-    TooDifferent { comparison: Comparison, tolerance: Tolerance, actual: PathBuf, diff: PathBuf },
-    CannotWrite { path: PathBuf, reason: String },
+    Missing {
+        reference: PathBuf,
+        actual: PathBuf,
+    },
+    Unreadable {
+        reference: PathBuf,
+        reason: String,
+    },
+    WrongSize {
+        reference: PathBuf,
+        expected: (u32, u32),
+        found: (u32, u32),
+        actual: PathBuf,
+    },
+    TooDifferent {
+        comparison: Comparison,
+        tolerance: Tolerance,
+        actual: PathBuf,
+        diff: PathBuf,
+    },
+    CannotWrite {
+        path: PathBuf,
+        reason: String,
+    },
 }
 
 impl fmt::Display for SnapshotError {
@@ -72,7 +91,9 @@ impl fmt::Display for SnapshotError {
                 reference.display(),
                 actual.display()
             ),
-            Self::Unreadable { reference, reason } => write!(f, "cannot read reference {}: {reason}", reference.display()),
+            Self::Unreadable { reference, reason } => {
+                write!(f, "cannot read reference {}: {reason}", reference.display())
+            }
             Self::WrongSize { reference, expected, found, actual } => write!(
                 f,
                 "{} is {}x{} but the render is {}x{} (written to {})",
@@ -163,7 +184,8 @@ pub fn check(actual: &image::RgbaImage, reference: &Path, tolerance: Tolerance) 
         Ok(comparison)
     } else {
         save(actual, &actual_path)?;
-        diff.save(&diff_path).map_err(|e| SnapshotError::CannotWrite { path: diff_path.clone(), reason: e.to_string() })?;
+        diff.save(&diff_path)
+            .map_err(|e| SnapshotError::CannotWrite { path: diff_path.clone(), reason: e.to_string() })?;
         Err(SnapshotError::TooDifferent { comparison, tolerance, actual: actual_path, diff: diff_path })
     }
 }

@@ -38,7 +38,13 @@ pub struct Texture {
 
 impl Texture {
     /// Uploads an RGBA8 image (one mip level) with a linear, repeating sampler.
-    pub fn from_image(device: &wgpu::Device, queue: &wgpu::Queue, image: &image::RgbaImage, space: ColorSpace, label: &str) -> Self {
+    pub fn from_image(
+        device: &wgpu::Device,
+        queue: &wgpu::Queue,
+        image: &image::RgbaImage,
+        space: ColorSpace,
+        label: &str,
+    ) -> Self {
         let format = match space {
             ColorSpace::Srgb => wgpu::TextureFormat::Rgba8UnormSrgb,
             ColorSpace::Linear => wgpu::TextureFormat::Rgba8Unorm,
@@ -73,7 +79,12 @@ impl Texture {
     }
 
     /// Loads an image file; see [`load_rgba`] for the errors.
-    pub fn from_file(device: &wgpu::Device, queue: &wgpu::Queue, path: &Path, space: ColorSpace) -> anyhow::Result<Self> {
+    pub fn from_file(
+        device: &wgpu::Device,
+        queue: &wgpu::Queue,
+        path: &Path,
+        space: ColorSpace,
+    ) -> anyhow::Result<Self> {
         let image = load_rgba(path)?;
         Ok(Self::from_image(device, queue, &image, space, &path.display().to_string()))
     }

@@ -190,7 +190,7 @@ impl<C: Chapter> Running<C> {
         let watcher = ShaderWatcher::start();
         shader::read_from(watcher.as_ref().map(|_| PathBuf::from(shader::SHADER_DIR)));
         let status = match &watcher {
-            Some(_) => format!("watching {} for edits", PathBuf::from(shader::SHADER_DIR).display()),
+            Some(watcher) => format!("watching {} for edits", watcher.dir.display()),
             None => "shaders are built in (no source tree to watch)".into(),
         };
         Ok(Self {
@@ -379,7 +379,10 @@ impl<C: Chapter> UiState<'_, C> {
             self.chapter.ui(ui);
             if let Some(error) = self.shader_error {
                 ui.separator();
-                ui.colored_label(egui::Color32::from_rgb(255, 110, 90), "Shader error — still drawing the last good version:");
+                ui.colored_label(
+                    egui::Color32::from_rgb(255, 110, 90),
+                    "Shader error — still drawing the last good version:",
+                );
                 ui.label(egui::RichText::new(error).monospace().size(11.0));
             }
             ui.separator();

@@ -2,7 +2,13 @@
 
 use common::{Gpu, GpuNeeds, headless};
 
-fn upload(gpu: &Gpu, format: common::wgpu::TextureFormat, width: u32, height: u32, bytes: &[u8]) -> common::wgpu::Texture {
+fn upload(
+    gpu: &Gpu,
+    format: common::wgpu::TextureFormat,
+    width: u32,
+    height: u32,
+    bytes: &[u8],
+) -> common::wgpu::Texture {
     use common::wgpu;
     let size = wgpu::Extent3d { width, height, depth_or_array_layers: 1 };
     let texture = gpu.device.create_texture(&wgpu::TextureDescriptor {

@@ -104,10 +104,8 @@ impl Entry {
 pub fn assert_chapter(name: &str) {
     let entry = find(name).unwrap_or_else(|| panic!("{name} is not in snapshots::chapters()"));
     let results = entry.check().unwrap_or_else(|e| panic!("{name}: {e:#}"));
-    let failures: Vec<String> = results
-        .iter()
-        .filter_map(|r| r.outcome.as_ref().err().map(|e| format!("  {name}/{}: {e}", r.view)))
-        .collect();
+    let failures: Vec<String> =
+        results.iter().filter_map(|r| r.outcome.as_ref().err().map(|e| format!("  {name}/{}: {e}", r.view))).collect();
     for r in &results {
         if let Ok(c) = &r.outcome {
             eprintln!("{name}/{}: {c}", r.view);

@@ -98,7 +98,8 @@ fn check_includes(src: &Path) -> anyhow::Result<Vec<String>> {
                 let opens = target.lines().any(|l| l.trim_end().ends_with(&format!("ANCHOR: {anchor}")));
                 let closes = target.lines().any(|l| l.trim_end().ends_with(&format!("ANCHOR_END: {anchor}")));
                 if !(opens && closes) {
-                    problems.push(format!("{where_}: {} has no ANCHOR/ANCHOR_END pair named '{anchor}'", path.display()));
+                    problems
+                        .push(format!("{where_}: {} has no ANCHOR/ANCHOR_END pair named '{anchor}'", path.display()));
                 }
             }
         }
@@ -133,7 +134,10 @@ fn check_links(html_root: &Path) -> anyhow::Result<Vec<String>> {
                     }
                     let resolved = path.parent().context("page folder")?.join(target);
                     if !resolved.exists() {
-                        broken.push(format!("{} links to {link}", path.strip_prefix(html_root).unwrap_or(&path).display()));
+                        broken.push(format!(
+                            "{} links to {link}",
+                            path.strip_prefix(html_root).unwrap_or(&path).display()
+                        ));
                     }
                 }
             }

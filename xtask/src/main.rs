@@ -1,10 +1,11 @@
 //! `cargo xtask <task>`: the project's maintenance commands.
 //!
-//! - `test`      everything CI runs: prerequisites, rustfmt, clippy, `cargo test`
-//!               (which includes the snapshot tests) and the book.
-//! - `snapshot [--bless] [CHAPTER...]`  compare with, or rewrite, the reference images.
-//! - `book`      check snapshots, copy them in as figures, check anchors, build HTML, check links.
-//! - `bench [CHAPTER...]`  release build, frame times per view, written into the book.
+//! - `test`: everything CI runs: prerequisites, rustfmt, clippy, `cargo test`
+//!   (which includes the snapshot tests), every chapter in a window under
+//!   Xvfb, and the book.
+//! - `snapshot [--bless] [CHAPTER...]`: compare with, or rewrite, the reference images.
+//! - `book`: check snapshots, copy them in as figures, check anchors, build HTML, check links.
+//! - `bench [CHAPTER...]`: release build, frame times per view, written into the book.
 
 use std::path::{Path, PathBuf};
 use std::process::{Command, ExitCode};
@@ -75,9 +76,41 @@ fn test() -> anyhow::Result<()> {
     cargo(&["fmt", "--all", "--", "--check"])?;
     cargo(&["clippy", "--workspace", "--all-targets", "--", "-D", "warnings"])?;
     cargo(&["test", "--workspace"])?;
+    window_test()?;
     // `cargo test` has just compared every snapshot; the book only copies them.
     book::build(false)?;
     println!("\nxtask test: all checks passed in {:.0} s", started.elapsed().as_secs_f64());
+    Ok(())
+}
+
+/// Opens every chapter in a real window on a virtual X server and lets it
+/// draw 30 frames with the overlay: the one path `cargo test` cannot reach.
+fn window_test() -> anyhow::Result<()> {
+    if !prerequisites::ensure_xvfb()? {
+        println!("\nwindow test skipped: no X server available on this system");
+        return Ok(());
+    }
+    cargo(&["build", "--workspace", "--bins"])?;
+    let (mut passed, mut failed) = (0, 0);
+    for chapter in chapter_names()? {
+        let binary = root().join("target/debug").join(&chapter);
+        let status = Command::new("xvfb-run")
+            .args(["-a", "-s", "-screen 0 1024x768x24"])
+            .arg(&binary)
+            .args(["--frames", "30", "--size", "640x360"])
+            .envs(quiet_env())
+            .status()
+            .context("cannot run xvfb-run")?;
+        if status.success() {
+            passed += 1;
+            println!("window: {chapter} drew 30 frames and closed");
+        } else {
+            failed += 1;
+            println!("window: {chapter} FAILED ({status})");
+        }
+    }
+    println!("window test: {passed} passed, {failed} failed");
+    ensure!(failed == 0, "the window test failed");
     Ok(())
 }
 
@@ -90,7 +123,8 @@ fn snapshot(args: &[String]) -> anyhow::Result<()> {
 
 /// Package names of `chapters/*`, in book order.
 fn chapter_names() -> anyhow::Result<Vec<String>> {
-    let mut dirs: Vec<PathBuf> = std::fs::read_dir(root().join("chapters"))?.map(|e| Ok(e?.path())).collect::<anyhow::Result<_>>()?;
+    let mut dirs: Vec<PathBuf> =
+        std::fs::read_dir(root().join("chapters"))?.map(|e| Ok(e?.path())).collect::<anyhow::Result<_>>()?;
     dirs.sort();
     dirs.iter()
         .map(|dir| {
@@ -115,7 +149,10 @@ fn bench(args: &[String]) -> anyhow::Result<()> {
     cargo(&build)?;
     let cpu = std::fs::read_to_string("/proc/cpuinfo")
         .ok()
-        .and_then(|info| info.lines().find_map(|l| l.strip_prefix("model name").map(|m| m.trim_start_matches([' ', '\t', ':']).to_string())))
+        .and_then(|info| {
+            info.lines()
+                .find_map(|l| l.strip_prefix("model name").map(|m| m.trim_start_matches([' ', '\t', ':']).to_string()))
+        })
         .unwrap_or_else(|| "unknown CPU".into());
     let cores = std::thread::available_parallelism().map_or(0, |n| n.get());
     let out_dir = root().join("book/src/bench");

@@ -1,37 +1,63 @@
-//! Making sure the tests can find a GPU adapter, or lavapipe in its place.
+//! Making sure the tests have what they need from the system: a Vulkan
+//! driver (lavapipe will do) and, for the window test, a virtual X server.
 
 use std::path::Path;
 use std::process::Command;
 
 use anyhow::{bail, ensure};
 
-const PACKAGES: [&str; 2] = ["mesa-vulkan-drivers", "libvulkan1"];
+const VULKAN: [&str; 2] = ["mesa-vulkan-drivers", "libvulkan1"];
+/// Xvfb, and the X libraries winit loads at run time.
+const WINDOW: [&str; 7] = ["xvfb", "xauth", "libx11-xcb1", "libxcursor1", "libxrandr2", "libxi6", "libxkbcommon-x11-0"];
 
 /// On Linux, wgpu needs the Vulkan loader and at least one driver (ICD);
-/// with no GPU, Mesa's lavapipe is that driver. Install it when we may
-/// (root on Debian or Ubuntu), otherwise say the one command to run.
+/// with no GPU, Mesa's lavapipe is that driver.
 pub fn ensure_adapter() -> anyhow::Result<()> {
     if !cfg!(target_os = "linux") || std::env::var_os("WGPU_BACKEND").is_some() || vulkan_present() {
         return Ok(());
     }
-    let install = format!("apt-get install -y --no-install-recommends {}", PACKAGES.join(" "));
-    let is_root = Command::new("id").arg("-u").output().is_ok_and(|o| o.stdout.starts_with(b"0\n"));
+    apt_install("no Vulkan driver found", &VULKAN)?;
+    ensure!(vulkan_present(), "installed {} but still no Vulkan driver", VULKAN.join(" "));
+    Ok(())
+}
+
+/// `xvfb-run` for the window test: true when it is there (installed now
+/// if we may), false on systems where we cannot provide it.
+pub fn ensure_xvfb() -> anyhow::Result<bool> {
+    if !cfg!(target_os = "linux") {
+        return Ok(false);
+    }
+    if !has_xvfb_run() {
+        apt_install("no xvfb-run for the window test", &WINDOW)?;
+    }
+    Ok(has_xvfb_run())
+}
+
+fn has_xvfb_run() -> bool {
+    Command::new("sh").args(["-c", "command -v xvfb-run"]).output().is_ok_and(|o| o.status.success())
+}
+
+/// Installs Debian packages when we may (root on Debian or Ubuntu);
+/// otherwise fails with the one command to run.
+fn apt_install(why: &str, packages: &[&str]) -> anyhow::Result<()> {
+    let install = format!("apt-get install -y --no-install-recommends {}", packages.join(" "));
     if !Path::new("/etc/debian_version").exists() {
-        bail!("no Vulkan driver found. Install your GPU's Vulkan driver, or Mesa's software one (lavapipe, package mesa-vulkan-drivers or mesa-vulkan-swrast)");
+        bail!("{why}: install the equivalent of these Debian packages: {}", packages.join(" "));
     }
+    let is_root = Command::new("id").arg("-u").output().is_ok_and(|o| o.stdout.starts_with(b"0\n"));
     if !is_root {
-        bail!("no Vulkan driver found. Run: sudo {install}");
+        bail!("{why}. Run: sudo {install}");
     }
-    println!("no Vulkan driver found: installing Mesa's software rasteriser (lavapipe)\n$ {install}");
+    println!("{why}: installing\n$ {install}");
     let quiet = [("DEBIAN_FRONTEND", "noninteractive")];
     let update = Command::new("apt-get").args(["update", "-qq"]).envs(quiet).status()?;
     ensure!(update.success(), "apt-get update failed; run: {install}");
     let status = Command::new("apt-get")
         .args(["install", "-y", "-qq", "--no-install-recommends"])
-        .args(PACKAGES)
+        .args(packages)
         .envs(quiet)
         .status()?;
-    ensure!(status.success() && vulkan_present(), "installing lavapipe failed; run: {install}");
+    ensure!(status.success(), "installing failed; run: {install}");
     Ok(())
 }
 

@@ -51,7 +51,8 @@ pub enum Shape {
 }
 
 impl Shape {
-    pub const ALL: [Shape; 6] = [Shape::Cube, Shape::Sphere, Shape::Cylinder, Shape::Cone, Shape::Torus, Shape::Pyramid];
+    pub const ALL: [Shape; 6] =
+        [Shape::Cube, Shape::Sphere, Shape::Cylinder, Shape::Cone, Shape::Torus, Shape::Pyramid];
 
     fn mesh(self) -> MeshData {
         match self {
@@ -106,7 +107,14 @@ pub fn scene() -> Vec<Placement> {
         let x = (i as f32 - 2.5) * 2.2;
         let color = palette[i];
         let upright = Quat::IDENTITY;
-        objects.push(Placement { shape, position: Vec3::new(x, 0.5, 2.0), rotation: upright, scale: Vec3::ONE, spin: 0.0, color });
+        objects.push(Placement {
+            shape,
+            position: Vec3::new(x, 0.5, 2.0),
+            rotation: upright,
+            scale: Vec3::ONE,
+            spin: 0.0,
+            color,
+        });
         objects.push(Placement {
             shape,
             position: Vec3::new(x, 0.9, -1.0),
@@ -201,7 +209,12 @@ fn uniform_layout(device: &wgpu::Device, label: &str, dynamic: bool, size: usize
     })
 }
 
-fn depth_group(gpu: &Gpu, layout: &wgpu::BindGroupLayout, depth: &wgpu::TextureView, params: &wgpu::Buffer) -> wgpu::BindGroup {
+fn depth_group(
+    gpu: &Gpu,
+    layout: &wgpu::BindGroupLayout,
+    depth: &wgpu::TextureView,
+    params: &wgpu::Buffer,
+) -> wgpu::BindGroup {
     gpu.device.create_bind_group(&wgpu::BindGroupDescriptor {
         label: Some("depth view"),
         layout,
@@ -252,11 +265,21 @@ fn scene_pipeline(
 }
 // ANCHOR_END: pipeline
 
-fn fullscreen_pipeline(device: &wgpu::Device, layout: &wgpu::PipelineLayout, module: &wgpu::ShaderModule, format: wgpu::TextureFormat) -> wgpu::RenderPipeline {
+fn fullscreen_pipeline(
+    device: &wgpu::Device,
+    layout: &wgpu::PipelineLayout,
+    module: &wgpu::ShaderModule,
+    format: wgpu::TextureFormat,
+) -> wgpu::RenderPipeline {
     device.create_render_pipeline(&wgpu::RenderPipelineDescriptor {
         label: Some("depth view"),
         layout: Some(layout),
-        vertex: wgpu::VertexState { module, entry_point: Some("vs_fullscreen"), buffers: &[], compilation_options: Default::default() },
+        vertex: wgpu::VertexState {
+            module,
+            entry_point: Some("vs_fullscreen"),
+            buffers: &[],
+            compilation_options: Default::default(),
+        },
         primitive: Default::default(),
         depth_stencil: None,
         multisample: Default::default(),
@@ -272,7 +295,11 @@ fn fullscreen_pipeline(device: &wgpu::Device, layout: &wgpu::PipelineLayout, mod
 }
 
 impl CameraChapter {
-    fn build_pipelines(gpu: &Gpu, layouts: &[wgpu::PipelineLayout; 2], format: wgpu::TextureFormat) -> Result<Pipelines, ShaderError> {
+    fn build_pipelines(
+        gpu: &Gpu,
+        layouts: &[wgpu::PipelineLayout; 2],
+        format: wgpu::TextureFormat,
+    ) -> Result<Pipelines, ShaderError> {
         let scene = shader!("camera/scene.wgsl").module(&gpu.device)?;
         let depth = shader!("camera/depth.wgsl").module(&gpu.device)?;
         gpu.catch_validation(|| Pipelines {
