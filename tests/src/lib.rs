@@ -69,6 +69,11 @@ impl Entry {
         (self.render)(gpu, &RenderRequest { width: WIDTH, height: HEIGHT, time: self.time, view })
     }
 
+    /// Renders one view at the snapshot size and time, on a fresh device.
+    pub fn render_view(&self, view: usize) -> anyhow::Result<image::RgbaImage> {
+        self.render(&self.gpu()?, view)
+    }
+
     /// Renders every view and compares each with its reference.
     pub fn check(&self) -> anyhow::Result<Vec<ViewResult>> {
         let gpu = self.gpu()?;
