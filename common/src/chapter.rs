@@ -88,6 +88,12 @@ pub trait Chapter: Sized + 'static {
     /// controls start in is the state snapshots are taken in.
     fn ui(&mut self, _ui: &mut egui::Ui) {}
 
+    /// One line of chapter-specific figures for `--bench` (chunks drawn,
+    /// draw calls…), read after the measured frames.
+    fn stats(&self) -> String {
+        String::new()
+    }
+
     /// A WGSL file under `shaders/` changed on disk: rebuild pipelines from
     /// it. On error keep the old pipelines; the runner shows the message.
     fn reload_shaders(&mut self, _gpu: &Gpu) -> Result<(), ShaderError> {

@@ -194,13 +194,17 @@ fn run_headless<C: Chapter>(args: &Args) -> anyhow::Result<()> {
         let row = |view: &str, what: &str, s: Stats| {
             println!("| {view} | {what} | {:.2} | {:.2} | {:.2} |", s.min, s.median, s.p95);
         };
+        let mut notes = Vec::new();
         for view in views {
             let report = headless::bench::<C>(&gpu, &request(view), frames)?;
             row(report.view, "frame (CPU+GPU)", report.frame);
             for (pass, stats) in &report.passes {
                 row(report.view, &format!("GPU: {pass} pass"), *stats);
             }
+            let extra = if report.stats.is_empty() { String::new() } else { format!("; {}", report.stats) };
+            notes.push(format!("- {}: setup (`Chapter::new`) {:.0} ms{extra}", report.view, report.setup_ms));
         }
+        println!("\n{}", notes.join("\n"));
     }
     Ok(())
 }

@@ -140,13 +140,19 @@ pub struct BenchReport {
     pub frame: Stats,
     /// GPU time per timed pass, when the adapter has timestamp queries.
     pub passes: Vec<(&'static str, Stats)>,
+    /// Time to create the chapter (`Chapter::new`), in milliseconds.
+    pub setup_ms: f64,
+    /// The chapter's own figures ([`Chapter::stats`]).
+    pub stats: String,
 }
 
 /// Renders `frames` frames offscreen (after a few warm-up frames) and
 /// measures each. The scene time stays fixed so every frame does the same work.
 pub fn bench<C: Chapter>(gpu: &Gpu, request: &RenderRequest, frames: u32) -> anyhow::Result<BenchReport> {
     let target = Target { format: OFFSCREEN_FORMAT, width: request.width, height: request.height };
+    let setup = Instant::now();
     let mut chapter = C::new(gpu, target)?;
+    let setup_ms = setup.elapsed().as_secs_f64() * 1e3;
     chapter.select_view(request.view);
     let offscreen = Offscreen::new(&gpu.device, target);
     let timer = PassTimer::new(&gpu.device, 16);
@@ -176,5 +182,7 @@ pub fn bench<C: Chapter>(gpu: &Gpu, request: &RenderRequest, frames: u32) -> any
         height: request.height,
         frame: Stats::of(&wall).context("no frames measured")?,
         passes: passes.into_iter().filter_map(|(l, s)| Some((l, Stats::of(&s)?))).collect(),
+        setup_ms,
+        stats: chapter.stats(),
     })
 }

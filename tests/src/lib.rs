@@ -38,7 +38,7 @@ fn entry<C: Chapter>() -> Entry {
 
 /// Every chapter, in book order. A new chapter adds one line here.
 pub fn chapters() -> Vec<Entry> {
-    vec![entry::<triangle::Triangle>(), entry::<camera::CameraChapter>()]
+    vec![entry::<triangle::Triangle>(), entry::<camera::CameraChapter>(), entry::<terrain::TerrainChapter>()]
 }
 
 pub fn find(name: &str) -> Option<Entry> {

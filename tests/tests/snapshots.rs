@@ -13,6 +13,11 @@ fn camera() {
     snapshots::assert_chapter("camera");
 }
 
+#[test]
+fn terrain() {
+    snapshots::assert_chapter("terrain");
+}
+
 /// A chapter crate missing from the registry would never be snapshot-tested.
 #[test]
 fn every_chapter_crate_is_registered() {
