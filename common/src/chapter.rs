@@ -53,6 +53,9 @@ pub trait Chapter: Sized + 'static {
     const VIEWS: &'static [View];
     /// Scene time at which snapshots and `--screenshot` are taken by default.
     const SNAPSHOT_TIME: f32 = 1.0;
+    /// Frames `--bench` measures per view unless `--frames` says otherwise:
+    /// fewer for chapters whose frames take a second on a software rasteriser.
+    const BENCH_FRAMES: u32 = 100;
     /// Chapter-specific keys for the F1 help, as (key, what it does).
     const KEYS: &'static [(&'static str, &'static str)] = &[];
 

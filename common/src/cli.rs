@@ -56,7 +56,7 @@ pub struct Args {
     #[arg(long)]
     pub list_views: bool,
 
-    /// With --bench: frames to measure (default 100). With a window: close after N frames.
+    /// With --bench: frames to measure (default: the chapter's, usually 100). With a window: close after N frames.
     #[arg(long, value_name = "N", value_parser = clap::value_parser!(u32).range(1..=1_000_000))]
     pub frames: Option<u32>,
 
@@ -181,7 +181,7 @@ fn run_headless<C: Chapter>(args: &Args) -> anyhow::Result<()> {
             Some(_) => vec![args.view_index::<C>()],
             None => (0..C::VIEWS.len()).collect(),
         };
-        let frames = args.frames.unwrap_or(100);
+        let frames = args.frames.unwrap_or(C::BENCH_FRAMES);
         println!(
             "{} on {}, {}x{}, {frames} frames per view",
             C::NAME,

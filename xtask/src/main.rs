@@ -159,10 +159,10 @@ fn bench(args: &[String]) -> anyhow::Result<()> {
     std::fs::create_dir_all(&out_dir)?;
     for chapter in &chosen {
         let binary = root().join("target/release").join(chapter);
-        let command = format!("{chapter} --bench --size 1280x720 --frames 100");
+        let command = format!("{chapter} --bench --size 1280x720");
         println!("\n$ {command}");
         let output = Command::new(&binary)
-            .args(["--bench", "--size", "1280x720", "--frames", "100"])
+            .args(["--bench", "--size", "1280x720"])
             .envs(quiet_env())
             .output()
             .with_context(|| format!("cannot run {}", binary.display()))?;

@@ -34,7 +34,7 @@ impl Default for TerrainSettings {
             spacing: 1.0,
             height: 140.0,
             feature_size: 900.0,
-            fbm: Fbm { octaves: 8, persistence: 0.5, lacunarity: 2.0 },
+            fbm: Fbm { octaves: 7, persistence: 0.5, lacunarity: 2.0 },
             seed: 7,
             cliff_height: 35.0,
         }

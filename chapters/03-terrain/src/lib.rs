@@ -287,6 +287,7 @@ impl Chapter for TerrainChapter {
     const TITLE: &'static str = "03 · Terrain from noise";
     const VIEWS: &'static [View] = VIEWS;
     const KEYS: &'static [(&'static str, &'static str)] = FlyController::KEYS;
+    const BENCH_FRAMES: u32 = 10;
 
     fn new(gpu: &Gpu, target: Target) -> anyhow::Result<Self> {
         let device = &gpu.device;
