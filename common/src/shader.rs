@@ -1,5 +1,6 @@
-//! WGSL files: embedded at compile time, validated by naga with readable
-//! diagnostics, and re-read from disk while a window is open (hot reload).
+//! WGSL files: embedded at compile time, composed from modules with
+//! naga_oil's `#import`, validated by naga with readable diagnostics, and
+//! re-read from disk while a window is open (hot reload).
 
 use std::path::PathBuf;
 use std::sync::{Mutex, mpsc};
@@ -13,16 +14,22 @@ pub struct ShaderFile {
     /// Path relative to `shaders/`, e.g. `"triangle/triangle.wgsl"`.
     pub path: &'static str,
     pub embedded: &'static str,
+    /// Modules this file `#import`s (files that start with
+    /// `#define_import_path`), in an order where each comes after its own imports.
+    pub imports: &'static [ShaderFile],
 }
 
 /// Names a WGSL file under `shaders/` and embeds it, so the binary runs from
-/// anywhere. For use in chapter crates (`chapters/NN-name/`).
+/// anywhere, with the modules it imports:
+/// `shader!("fog/fog.wgsl", imports: ["terrain/terrain.wgsl"])`.
+/// For use in chapter crates (`chapters/NN-name/`).
 #[macro_export]
 macro_rules! shader {
-    ($path:literal) => {
+    ($path:literal $(, imports: [$($import:literal),* $(,)?])? $(,)?) => {
         $crate::ShaderFile {
             path: $path,
             embedded: include_str!(concat!(env!("CARGO_MANIFEST_DIR"), "/../../shaders/", $path)),
+            imports: &[$($($crate::shader!($import)),*)?],
         }
     };
 }
@@ -63,26 +70,56 @@ impl ShaderFile {
         }
     }
 
-    /// Validates the current text and creates a shader module from it.
+    /// Composes the current text with its imports, validates it, and
+    /// creates a shader module from it.
     pub fn module(&self, device: &wgpu::Device) -> Result<wgpu::ShaderModule, ShaderError> {
-        let source = self.source()?;
-        validate(&source, self.path)?;
+        let mut imports = Vec::new();
+        for import in self.imports {
+            imports.push((import.path, import.source()?));
+        }
+        let module = compose(&self.source()?, self.path, &imports)?;
         Ok(device.create_shader_module(wgpu::ShaderModuleDescriptor {
             label: Some(self.path),
-            source: wgpu::ShaderSource::Wgsl(source.into()),
+            source: wgpu::ShaderSource::Naga(std::borrow::Cow::Owned(module)),
         }))
     }
 }
 
-/// Parses and validates WGSL with naga, the same front end wgpu uses, and
-/// renders any error as a codespan diagnostic naming `path` and the line.
+// ANCHOR: compose
+/// Composes WGSL `source` (at `path`) with the modules it `#import`s, each
+/// given as (path, text), and validates the result with naga, the same
+/// front end wgpu uses. Errors are codespan diagnostics naming the file and
+/// line where the problem is, in whichever module that is.
+pub fn compose(source: &str, path: &str, imports: &[(&str, String)]) -> Result<naga::Module, ShaderError> {
+    use naga_oil::compose::{ComposableModuleDescriptor, Composer, NagaModuleDescriptor};
+    let mut composer = Composer::default();
+    for (import_path, text) in imports {
+        let added = composer
+            .add_composable_module(ComposableModuleDescriptor {
+                source: text,
+                file_path: import_path,
+                ..Default::default()
+            })
+            .map(drop);
+        added.map_err(|e| ShaderError(e.emit_to_string(&composer)))?;
+    }
+    // A module can also be the top-level shader (the terrain chapter draws
+    // with terrain.wgsl itself). naga_oil rejects an import path there, so
+    // it is commented out, which keeps the line numbers.
+    let source: String = source
+        .lines()
+        .map(|line| if line.starts_with("#define_import_path") { "//" } else { line })
+        .collect::<Vec<_>>()
+        .join("\n");
+    composer
+        .make_naga_module(NagaModuleDescriptor { source: &source, file_path: path, ..Default::default() })
+        .map_err(|e| ShaderError(e.emit_to_string(&composer)))
+}
+// ANCHOR_END: compose
+
+/// Validates a self-contained WGSL file (no imports).
 pub fn validate(source: &str, path: &str) -> Result<naga::Module, ShaderError> {
-    let module =
-        naga::front::wgsl::parse_str(source).map_err(|e| ShaderError(e.emit_to_string_with_path(source, path)))?;
-    naga::valid::Validator::new(naga::valid::ValidationFlags::all(), naga::valid::Capabilities::all())
-        .validate(&module)
-        .map_err(|e| ShaderError(e.emit_to_string_with_path(source, path)))?;
-    Ok(module)
+    compose(source, path, &[])
 }
 
 /// Watches `shaders/` and reports when a `.wgsl` file changes.
@@ -136,6 +173,17 @@ mod tests {
         let broken = "@vertex\nfn vs() -> @builtin(position) vec4<f32> {\n    return vec4<f32>(1.0, 2.0);\n}\n";
         let ShaderError(message) = validate(broken, "camera/broken.wgsl").unwrap_err();
         assert!(message.contains("camera/broken.wgsl:3"), "{message}");
+    }
+
+    #[test]
+    fn imports_compose_and_their_errors_name_the_imported_file() {
+        let module = "#define_import_path shapes\n\nfn half(x: f32) -> f32 {\n    return x * 0.5;\n}\n".to_string();
+        let user =
+            "#import shapes::half\n\n@fragment\nfn fs() -> @location(0) vec4<f32> { return vec4<f32>(half(1.0)); }\n";
+        assert!(compose(user, "user.wgsl", &[("lib/shapes.wgsl", module.clone())]).is_ok());
+        let broken = module.replace("x * 0.5", "x * true");
+        let ShaderError(message) = compose(user, "user.wgsl", &[("lib/shapes.wgsl", broken)]).unwrap_err();
+        assert!(message.contains("lib/shapes.wgsl:") && message.contains("x * true"), "{message}");
     }
 
     #[test]

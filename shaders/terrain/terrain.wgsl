@@ -1,6 +1,8 @@
 // Chapter 03: a chunked height-map terrain.
 // Vertices carry only a height and a packed normal; x and z come from the
 // vertex's place in its chunk and the chunk's place in the world.
+// Later chapters `#import terrain::{...}` to draw the same ground.
+#define_import_path terrain
 
 struct Globals {
     view_proj: mat4x4<f32>,
@@ -35,6 +37,10 @@ fn vs_main(
     @location(0) height: f32,
     @location(1) normal: vec4<f32>,
 ) -> VertexOutput {
+    return terrain_vertex(vertex_index, chunk, height, normal);
+}
+
+fn terrain_vertex(vertex_index: u32, chunk: u32, height: f32, normal: vec4<f32>) -> VertexOutput {
     let side = globals.grid.y + 1u;
     // vertex_index counts from the chunk's base vertex, in whole chunks.
     let local = vertex_index % (side * side);

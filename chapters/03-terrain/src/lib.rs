@@ -9,11 +9,12 @@ pub mod noise;
 
 use std::time::Instant;
 
-use common::glam::{Mat4, Vec3};
+use common::glam::Vec3;
 use common::texture::{DEPTH_FORMAT, depth_view};
 use common::wgpu::util::DeviceExt as _;
 use common::{
-    Camera, Chapter, FlyController, Frame, Gpu, Input, ShaderError, Target, View, anyhow, egui, shader, wgpu,
+    Camera, Chapter, FlyController, Frame, Gpu, Input, ShaderError, ShaderFile, Target, View, anyhow, egui, shader,
+    wgpu,
 };
 
 use chunks::{Aabb, CHUNK_VERTICES, TerrainVertex, chunk_bounds, chunk_indices, chunk_vertices};
@@ -128,6 +129,15 @@ struct Globals {
     scale: [f32; 4],
 }
 
+/// How the terrain shader colours the ground (`globals.grid.z`).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Shading {
+    Shaded = 0,
+    Wireframe = 1,
+    Normals = 2,
+    Chunks = 3,
+}
+
 /// The camera views start from: on the plain south of the cliff, looking
 /// north at it, with hills behind.
 pub fn start_camera(field: &HeightField, aspect: f32) -> Camera {
@@ -166,29 +176,6 @@ fn overhead_camera(field: &HeightField, aspect: f32) -> Camera {
     }
 }
 
-pub struct TerrainChapter {
-    /// What the learner edits in the overlay; applied by regenerating.
-    pub settings: TerrainSettings,
-    pub field: HeightField,
-    pub mesh: TerrainMesh,
-    pub camera: Camera,
-    pub controller: FlyController,
-    globals: wgpu::Buffer,
-    chunk_flags: wgpu::Buffer,
-    bind_group_layout: wgpu::BindGroupLayout,
-    bind_group: wgpu::BindGroup,
-    layout: wgpu::PipelineLayout,
-    pipeline: wgpu::RenderPipeline,
-    depth: wgpu::TextureView,
-    target: Target,
-    /// Chunks drawn in the last frame.
-    pub drawn: usize,
-    /// How long the last generation took: (height field, meshes and upload), ms.
-    pub timings: (f64, f64),
-    /// The overlay changed `settings`; regenerate before the next frame.
-    regenerate_requested: bool,
-}
-
 /// Generates the height field and its meshes, timing each (ms).
 fn generate(device: &wgpu::Device, settings: TerrainSettings) -> (HeightField, TerrainMesh, (f64, f64)) {
     let start = Instant::now();
@@ -199,108 +186,33 @@ fn generate(device: &wgpu::Device, settings: TerrainSettings) -> (HeightField, T
     (field, mesh, (heights, start.elapsed().as_secs_f64() * 1e3))
 }
 
-fn build_pipeline(
-    gpu: &Gpu,
-    layout: &wgpu::PipelineLayout,
-    format: wgpu::TextureFormat,
-) -> Result<wgpu::RenderPipeline, ShaderError> {
-    let module = shader!("terrain/terrain.wgsl").module(&gpu.device)?;
-    gpu.catch_validation(|| {
-        gpu.device.create_render_pipeline(&wgpu::RenderPipelineDescriptor {
-            label: Some("terrain"),
-            layout: Some(layout),
-            vertex: wgpu::VertexState {
-                module: &module,
-                entry_point: Some("vs_main"),
-                buffers: &[Some(TERRAIN_VERTEX_LAYOUT)],
-                compilation_options: Default::default(),
-            },
-            primitive: wgpu::PrimitiveState { cull_mode: Some(wgpu::Face::Back), ..Default::default() },
-            depth_stencil: Some(wgpu::DepthStencilState {
-                format: DEPTH_FORMAT,
-                depth_write_enabled: Some(true),
-                depth_compare: Some(wgpu::CompareFunction::Less),
-                stencil: Default::default(),
-                bias: Default::default(),
-            }),
-            multisample: Default::default(),
-            fragment: Some(wgpu::FragmentState {
-                module: &module,
-                entry_point: Some("fs_main"),
-                targets: &[Some(format.into())],
-                compilation_options: Default::default(),
-            }),
-            multiview_mask: None,
-            cache: None,
-        })
-    })
-    .map_err(ShaderError)
+/// The terrain, ready to draw: height field, meshes, and the bind group
+/// (group 0) of `terrain.wgsl`. Later chapters draw the same ground with
+/// shaders of their own that `#import terrain`.
+pub struct TerrainRenderer {
+    /// What the learner edits in the overlay; applied by `regenerate`.
+    pub settings: TerrainSettings,
+    pub field: HeightField,
+    pub mesh: TerrainMesh,
+    /// How long the last generation took: (height field, meshes and upload), ms.
+    pub timings: (f64, f64),
+    globals: wgpu::Buffer,
+    chunk_flags: wgpu::Buffer,
+    pub bind_group_layout: wgpu::BindGroupLayout,
+    bind_group: wgpu::BindGroup,
 }
 
-fn bind_group(
-    gpu: &Gpu,
-    layout: &wgpu::BindGroupLayout,
-    globals: &wgpu::Buffer,
-    flags: &wgpu::Buffer,
-) -> wgpu::BindGroup {
-    gpu.device.create_bind_group(&wgpu::BindGroupDescriptor {
-        label: Some("terrain"),
-        layout,
-        entries: &[
-            wgpu::BindGroupEntry { binding: 0, resource: globals.as_entire_binding() },
-            wgpu::BindGroupEntry { binding: 1, resource: flags.as_entire_binding() },
-        ],
-    })
-}
-
-fn flags_buffer(device: &wgpu::Device, chunks: u32) -> wgpu::Buffer {
-    device.create_buffer(&wgpu::BufferDescriptor {
-        label: Some("chunk drawn flags"),
-        size: u64::from(chunks.max(1)) * 4,
-        usage: wgpu::BufferUsages::STORAGE | wgpu::BufferUsages::COPY_DST,
-        mapped_at_creation: false,
-    })
-}
-
-impl TerrainChapter {
-    /// Regenerates the height field and the mesh from `self.settings`.
-    pub fn regenerate(&mut self, gpu: &Gpu) {
-        (self.field, self.mesh, self.timings) = generate(&gpu.device, self.settings);
-        let chunks = self.mesh.bounds.len() as u32;
-        self.chunk_flags = flags_buffer(&gpu.device, chunks);
-        self.bind_group = bind_group(gpu, &self.bind_group_layout, &self.globals, &self.chunk_flags);
-    }
-
-    fn globals(&self, view_proj: Mat4, view: u32) -> Globals {
-        Globals {
-            view_proj: view_proj.to_cols_array_2d(),
-            eye: self.camera.position.extend(1.0).into(),
-            sun: SUN.normalize().extend(0.0).into(),
-            grid: [self.mesh.chunks_per_side, CHUNK_QUADS, view, 0],
-            scale: [self.field.settings.spacing, self.field.settings.height, 0.0, 0.0],
-        }
-    }
-}
-
-impl Chapter for TerrainChapter {
-    const NAME: &'static str = env!("CARGO_PKG_NAME");
-    const TITLE: &'static str = "03 · Terrain from noise";
-    const VIEWS: &'static [View] = VIEWS;
-    const KEYS: &'static [(&'static str, &'static str)] = FlyController::KEYS;
-    const BENCH_FRAMES: u32 = 10;
-
-    fn new(gpu: &Gpu, target: Target) -> anyhow::Result<Self> {
+impl TerrainRenderer {
+    pub fn new(gpu: &Gpu, settings: TerrainSettings) -> Self {
         let device = &gpu.device;
-        let settings = TerrainSettings::default();
         let (field, mesh, timings) = generate(device, settings);
-
         let globals = device.create_buffer(&wgpu::BufferDescriptor {
             label: Some("terrain globals"),
             size: std::mem::size_of::<Globals>() as u64,
             usage: wgpu::BufferUsages::UNIFORM | wgpu::BufferUsages::COPY_DST,
             mapped_at_creation: false,
         });
-        let chunk_flags = flags_buffer(device, mesh.bounds.len() as u32);
+        let chunk_flags = Self::flags_buffer(device, mesh.bounds.len() as u32);
         let bind_group_layout = device.create_bind_group_layout(&wgpu::BindGroupLayoutDescriptor {
             label: Some("terrain"),
             entries: &[
@@ -326,104 +238,110 @@ impl Chapter for TerrainChapter {
                 },
             ],
         });
-        let bind_group = bind_group(gpu, &bind_group_layout, &globals, &chunk_flags);
-        let layout = device.create_pipeline_layout(&wgpu::PipelineLayoutDescriptor {
-            label: Some("terrain"),
-            bind_group_layouts: &[Some(&bind_group_layout)],
-            immediate_size: 0,
-        });
-        let pipeline = build_pipeline(gpu, &layout, target.format)?;
-        Ok(Self {
-            camera: start_camera(&field, target.aspect()),
-            controller: FlyController { speed: 40.0, ..Default::default() },
-            settings,
-            field,
-            mesh,
-            globals,
-            chunk_flags,
-            bind_group_layout,
-            bind_group,
-            layout,
-            pipeline,
-            depth: depth_view(device, target.width, target.height),
-            target,
-            drawn: 0,
-            timings,
-            regenerate_requested: false,
+        let bind_group = Self::bind_group(device, &bind_group_layout, &globals, &chunk_flags);
+        Self { settings, field, mesh, timings, globals, chunk_flags, bind_group_layout, bind_group }
+    }
+
+    fn flags_buffer(device: &wgpu::Device, chunks: u32) -> wgpu::Buffer {
+        device.create_buffer(&wgpu::BufferDescriptor {
+            label: Some("chunk drawn flags"),
+            size: u64::from(chunks.max(1)) * 4,
+            usage: wgpu::BufferUsages::STORAGE | wgpu::BufferUsages::COPY_DST,
+            mapped_at_creation: false,
         })
     }
 
-    fn resize(&mut self, gpu: &Gpu, target: Target) {
-        self.target = target;
-        self.camera.aspect = target.aspect();
-        self.depth = depth_view(&gpu.device, target.width, target.height);
-    }
-
-    /// Each view starts from its own camera: the wireframe from close up.
-    fn select_view(&mut self, view: usize) {
-        let aspect = self.target.aspect();
-        self.camera = match VIEWS[view].name {
-            "wireframe" => close_up_camera(&self.field, aspect),
-            _ => start_camera(&self.field, aspect),
-        };
-    }
-
-    fn update(&mut self, input: &Input, dt: f32) {
-        self.controller.update(&mut self.camera, input, dt);
-    }
-
-    // ANCHOR: render
-    fn render(&mut self, gpu: &Gpu, frame: &mut Frame) {
-        if std::mem::take(&mut self.regenerate_requested) {
-            self.regenerate(gpu);
-        }
-        let view = VIEWS[frame.view].name;
-        // Culling always uses the flying camera; the `chunks` view looks at
-        // its result from high above.
-        let frustum = Frustum::from_view_projection(self.camera.view_projection());
-        let overhead = view == "chunks";
-        let eye = if overhead { overhead_camera(&self.field, self.target.aspect()) } else { self.camera };
-        gpu.queue.write_buffer(
-            &self.globals,
-            0,
-            bytemuck::bytes_of(&self.globals(eye.view_projection(), frame.view as u32)),
-        );
-        if overhead {
-            let flags: Vec<u32> = self.mesh.bounds.iter().map(|b| u32::from(frustum.intersects(b))).collect();
-            gpu.queue.write_buffer(&self.chunk_flags, 0, bytemuck::cast_slice(&flags));
-        }
-
-        let mut pass = frame.encoder.begin_render_pass(&wgpu::RenderPassDescriptor {
+    fn bind_group(
+        device: &wgpu::Device,
+        layout: &wgpu::BindGroupLayout,
+        globals: &wgpu::Buffer,
+        flags: &wgpu::Buffer,
+    ) -> wgpu::BindGroup {
+        device.create_bind_group(&wgpu::BindGroupDescriptor {
             label: Some("terrain"),
-            color_attachments: &[Some(wgpu::RenderPassColorAttachment {
-                view: frame.target,
-                depth_slice: None,
-                resolve_target: None,
-                ops: wgpu::Operations { load: wgpu::LoadOp::Clear(SKY), store: wgpu::StoreOp::Store },
-            })],
-            depth_stencil_attachment: Some(wgpu::RenderPassDepthStencilAttachment {
-                view: &self.depth,
-                depth_ops: Some(wgpu::Operations { load: wgpu::LoadOp::Clear(1.0), store: wgpu::StoreOp::Store }),
-                stencil_ops: None,
-            }),
-            timestamp_writes: frame.timer.pass("terrain"),
-            ..Default::default()
-        });
-        pass.set_pipeline(&self.pipeline);
-        pass.set_bind_group(0, &self.bind_group, &[]);
-        if overhead {
-            // Draw every chunk, so the culled ones can be seen as such.
-            let everything = Frustum::from_view_projection(eye.view_projection());
-            self.mesh.draw_visible(&mut pass, &everything);
-            self.drawn = self.mesh.bounds.iter().filter(|b| frustum.intersects(b)).count();
-        } else {
-            self.drawn = self.mesh.draw_visible(&mut pass, &frustum);
-        }
+            layout,
+            entries: &[
+                wgpu::BindGroupEntry { binding: 0, resource: globals.as_entire_binding() },
+                wgpu::BindGroupEntry { binding: 1, resource: flags.as_entire_binding() },
+            ],
+        })
     }
-    // ANCHOR_END: render
 
-    fn ui(&mut self, ui: &mut egui::Ui) {
-        ui.label(format!("chunks drawn: {} / {}", self.drawn, self.mesh.bounds.len()));
+    /// Regenerates the height field and the mesh from `self.settings`.
+    pub fn regenerate(&mut self, gpu: &Gpu) {
+        (self.field, self.mesh, self.timings) = generate(&gpu.device, self.settings);
+        self.chunk_flags = Self::flags_buffer(&gpu.device, self.mesh.bounds.len() as u32);
+        self.bind_group = Self::bind_group(&gpu.device, &self.bind_group_layout, &self.globals, &self.chunk_flags);
+    }
+
+    /// A pipeline that draws the terrain mesh with `shader`'s `vs_main` and
+    /// `fs_main`; `layout` starts with this renderer's bind group layout.
+    pub fn pipeline(
+        &self,
+        gpu: &Gpu,
+        shader: &ShaderFile,
+        layout: &wgpu::PipelineLayout,
+        format: wgpu::TextureFormat,
+    ) -> Result<wgpu::RenderPipeline, ShaderError> {
+        let module = shader.module(&gpu.device)?;
+        gpu.catch_validation(|| {
+            gpu.device.create_render_pipeline(&wgpu::RenderPipelineDescriptor {
+                label: Some(shader.path),
+                layout: Some(layout),
+                vertex: wgpu::VertexState {
+                    module: &module,
+                    entry_point: Some("vs_main"),
+                    buffers: &[Some(TERRAIN_VERTEX_LAYOUT)],
+                    compilation_options: Default::default(),
+                },
+                primitive: wgpu::PrimitiveState { cull_mode: Some(wgpu::Face::Back), ..Default::default() },
+                depth_stencil: Some(wgpu::DepthStencilState {
+                    format: DEPTH_FORMAT,
+                    depth_write_enabled: Some(true),
+                    depth_compare: Some(wgpu::CompareFunction::Less),
+                    stencil: Default::default(),
+                    bias: Default::default(),
+                }),
+                multisample: Default::default(),
+                fragment: Some(wgpu::FragmentState {
+                    module: &module,
+                    entry_point: Some("fs_main"),
+                    targets: &[Some(format.into())],
+                    compilation_options: Default::default(),
+                }),
+                multiview_mask: None,
+                cache: None,
+            })
+        })
+        .map_err(ShaderError)
+    }
+
+    /// Writes the frame's uniforms: `eye` is the camera drawn from.
+    pub fn write_globals(&self, queue: &wgpu::Queue, eye: &Camera, shading: Shading) {
+        let globals = Globals {
+            view_proj: eye.view_projection().to_cols_array_2d(),
+            eye: eye.position.extend(1.0).into(),
+            sun: SUN.normalize().extend(0.0).into(),
+            grid: [self.mesh.chunks_per_side, CHUNK_QUADS, shading as u32, 0],
+            scale: [self.field.settings.spacing, self.field.settings.height, 0.0, 0.0],
+        };
+        queue.write_buffer(&self.globals, 0, bytemuck::bytes_of(&globals));
+    }
+
+    /// Marks which chunks `frustum` keeps, for `Shading::Chunks`.
+    pub fn write_chunk_flags(&self, queue: &wgpu::Queue, frustum: &Frustum) {
+        let flags: Vec<u32> = self.mesh.bounds.iter().map(|b| u32::from(frustum.intersects(b))).collect();
+        queue.write_buffer(&self.chunk_flags, 0, bytemuck::cast_slice(&flags));
+    }
+
+    /// Binds group 0 and draws the chunks `frustum` keeps; returns how many.
+    pub fn draw(&self, pass: &mut wgpu::RenderPass<'_>, frustum: &Frustum) -> usize {
+        pass.set_bind_group(0, &self.bind_group, &[]);
+        self.mesh.draw_visible(pass, frustum)
+    }
+
+    /// Sliders for the generator; true when the terrain should be regenerated.
+    pub fn settings_ui(&mut self, ui: &mut egui::Ui) -> bool {
         let size = self.field.size;
         ui.label(format!(
             "{size} × {size} samples, {} bytes per vertex; heights {:.0} ms, meshes {:.0} ms",
@@ -445,25 +363,146 @@ impl Chapter for TerrainChapter {
         slider(ui, egui::Slider::new(&mut s.height, 0.0..=300.0).text("height (m)"));
         slider(ui, egui::Slider::new(&mut s.cliff_height, 0.0..=120.0).text("cliff (m)"));
         slider(ui, egui::Slider::new(&mut s.seed, 0..=100).text("seed"));
-        ui.add(egui::Slider::new(&mut self.controller.speed, 5.0..=400.0).logarithmic(true).text("speed (m/s)"));
-        self.regenerate_requested |= changed;
+        changed
     }
 
-    fn stats(&self) -> String {
+    /// The chapter's figures for `--bench`.
+    pub fn stats(&self, drawn: usize) -> String {
         let size = self.field.size;
         format!(
-            "{size}×{size} heights in {:.0} ms, chunk meshes built and uploaded in {:.0} ms; {} bytes per vertex, {:.0} MB of vertices; {} of {} chunks drawn",
+            "{size}×{size} heights in {:.0} ms, chunk meshes built and uploaded in {:.0} ms; {} bytes per vertex, {:.0} MB of vertices; {drawn} of {} chunks drawn",
             self.timings.0,
             self.timings.1,
             std::mem::size_of::<TerrainVertex>(),
             self.mesh.vertex_buffer.size() as f64 / 1e6,
-            self.drawn,
             self.mesh.bounds.len()
         )
     }
+}
+
+pub struct TerrainChapter {
+    pub terrain: TerrainRenderer,
+    pub camera: Camera,
+    pub controller: FlyController,
+    layout: wgpu::PipelineLayout,
+    pipeline: wgpu::RenderPipeline,
+    depth: wgpu::TextureView,
+    target: Target,
+    /// Chunks drawn in the last frame.
+    pub drawn: usize,
+    /// The overlay changed the settings; regenerate before the next frame.
+    regenerate_requested: bool,
+}
+
+fn terrain_shader() -> ShaderFile {
+    shader!("terrain/terrain.wgsl")
+}
+
+impl Chapter for TerrainChapter {
+    const NAME: &'static str = env!("CARGO_PKG_NAME");
+    const TITLE: &'static str = "03 · Terrain from noise";
+    const VIEWS: &'static [View] = VIEWS;
+    const KEYS: &'static [(&'static str, &'static str)] = FlyController::KEYS;
+    const BENCH_FRAMES: u32 = 10;
+
+    fn new(gpu: &Gpu, target: Target) -> anyhow::Result<Self> {
+        let terrain = TerrainRenderer::new(gpu, TerrainSettings::default());
+        let layout = gpu.device.create_pipeline_layout(&wgpu::PipelineLayoutDescriptor {
+            label: Some("terrain"),
+            bind_group_layouts: &[Some(&terrain.bind_group_layout)],
+            immediate_size: 0,
+        });
+        let pipeline = terrain.pipeline(gpu, &terrain_shader(), &layout, target.format)?;
+        Ok(Self {
+            camera: start_camera(&terrain.field, target.aspect()),
+            controller: FlyController { speed: 40.0, ..Default::default() },
+            terrain,
+            layout,
+            pipeline,
+            depth: depth_view(&gpu.device, target.width, target.height),
+            target,
+            drawn: 0,
+            regenerate_requested: false,
+        })
+    }
+
+    fn resize(&mut self, gpu: &Gpu, target: Target) {
+        self.target = target;
+        self.camera.aspect = target.aspect();
+        self.depth = depth_view(&gpu.device, target.width, target.height);
+    }
+
+    /// Each view starts from its own camera: the wireframe from close up.
+    fn select_view(&mut self, view: usize) {
+        let aspect = self.target.aspect();
+        self.camera = match VIEWS[view].name {
+            "wireframe" => close_up_camera(&self.terrain.field, aspect),
+            _ => start_camera(&self.terrain.field, aspect),
+        };
+    }
+
+    fn update(&mut self, input: &Input, dt: f32) {
+        self.controller.update(&mut self.camera, input, dt);
+    }
+
+    // ANCHOR: render
+    fn render(&mut self, gpu: &Gpu, frame: &mut Frame) {
+        if std::mem::take(&mut self.regenerate_requested) {
+            self.terrain.regenerate(gpu);
+        }
+        // Culling always uses the flying camera; the `chunks` view looks at
+        // its result from high above.
+        let frustum = Frustum::from_view_projection(self.camera.view_projection());
+        let (eye, shading) = match VIEWS[frame.view].name {
+            "wireframe" => (self.camera, Shading::Wireframe),
+            "normals" => (self.camera, Shading::Normals),
+            "chunks" => (overhead_camera(&self.terrain.field, self.target.aspect()), Shading::Chunks),
+            _ => (self.camera, Shading::Shaded),
+        };
+        self.terrain.write_globals(&gpu.queue, &eye, shading);
+        if shading == Shading::Chunks {
+            self.terrain.write_chunk_flags(&gpu.queue, &frustum);
+        }
+
+        let mut pass = frame.encoder.begin_render_pass(&wgpu::RenderPassDescriptor {
+            label: Some("terrain"),
+            color_attachments: &[Some(wgpu::RenderPassColorAttachment {
+                view: frame.target,
+                depth_slice: None,
+                resolve_target: None,
+                ops: wgpu::Operations { load: wgpu::LoadOp::Clear(SKY), store: wgpu::StoreOp::Store },
+            })],
+            depth_stencil_attachment: Some(wgpu::RenderPassDepthStencilAttachment {
+                view: &self.depth,
+                depth_ops: Some(wgpu::Operations { load: wgpu::LoadOp::Clear(1.0), store: wgpu::StoreOp::Store }),
+                stencil_ops: None,
+            }),
+            timestamp_writes: frame.timer.pass("terrain"),
+            ..Default::default()
+        });
+        pass.set_pipeline(&self.pipeline);
+        if shading == Shading::Chunks {
+            // Draw every chunk, so the culled ones can be seen as such.
+            self.terrain.draw(&mut pass, &Frustum::from_view_projection(eye.view_projection()));
+            self.drawn = self.terrain.mesh.bounds.iter().filter(|b| frustum.intersects(b)).count();
+        } else {
+            self.drawn = self.terrain.draw(&mut pass, &frustum);
+        }
+    }
+    // ANCHOR_END: render
+
+    fn ui(&mut self, ui: &mut egui::Ui) {
+        ui.label(format!("chunks drawn: {} / {}", self.drawn, self.terrain.mesh.bounds.len()));
+        self.regenerate_requested |= self.terrain.settings_ui(ui);
+        ui.add(egui::Slider::new(&mut self.controller.speed, 5.0..=400.0).logarithmic(true).text("speed (m/s)"));
+    }
+
+    fn stats(&self) -> String {
+        self.terrain.stats(self.drawn)
+    }
 
     fn reload_shaders(&mut self, gpu: &Gpu) -> Result<(), ShaderError> {
-        self.pipeline = build_pipeline(gpu, &self.layout, self.target.format)?;
+        self.pipeline = self.terrain.pipeline(gpu, &terrain_shader(), &self.layout, self.target.format)?;
         Ok(())
     }
 }
