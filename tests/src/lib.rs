@@ -38,7 +38,12 @@ fn entry<C: Chapter>() -> Entry {
 
 /// Every chapter, in book order. A new chapter adds one line here.
 pub fn chapters() -> Vec<Entry> {
-    vec![entry::<triangle::Triangle>(), entry::<camera::CameraChapter>(), entry::<terrain::TerrainChapter>()]
+    vec![
+        entry::<triangle::Triangle>(),
+        entry::<camera::CameraChapter>(),
+        entry::<terrain::TerrainChapter>(),
+        entry::<fog::FogChapter>(),
+    ]
 }
 
 pub fn find(name: &str) -> Option<Entry> {

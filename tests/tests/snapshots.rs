@@ -18,6 +18,11 @@ fn terrain() {
     snapshots::assert_chapter("terrain");
 }
 
+#[test]
+fn fog() {
+    snapshots::assert_chapter("fog");
+}
+
 /// A chapter crate missing from the registry would never be snapshot-tested.
 #[test]
 fn every_chapter_crate_is_registered() {

@@ -1,0 +1,44 @@
+// Chapter 04: exponential distance fog over chapter 03's terrain.
+// The terrain module provides the vertices and the ground's colour; this
+// file only decides how much of that colour survives the distance.
+#import terrain::{globals, VertexOutput, terrain_vertex, ground_colour, lit}
+
+// ANCHOR: uniform
+struct Fog {
+    // Linear RGB: the sky's colour, which is also the clear colour.
+    colour: vec4<f32>,
+    // Per metre: how quickly the air thickens.
+    density: f32,
+    // The exponent: 1 is plain exponential fog, higher keeps the near
+    // distance clearer and closes in faster further out.
+    gradient: f32,
+};
+@group(1) @binding(0) var<uniform> fog: Fog;
+// ANCHOR_END: uniform
+
+@vertex
+fn vs_main(
+    @builtin(vertex_index) vertex_index: u32,
+    @builtin(instance_index) chunk: u32,
+    @location(0) height: f32,
+    @location(1) normal: vec4<f32>,
+) -> VertexOutput {
+    return terrain_vertex(vertex_index, chunk, height, normal);
+}
+
+// ANCHOR: fog
+// How much of a surface `distance` metres away still shows through the air:
+// 1 at the eye, falling towards 0.
+fn visibility(distance: f32) -> f32 {
+    return exp(-pow(distance * fog.density, fog.gradient));
+}
+
+@fragment
+fn fs_main(in: VertexOutput) -> @location(0) vec4<f32> {
+    let n = normalize(in.normal);
+    let surface = lit(ground_colour(in.world_position.y, n), n);
+    // Distance per fragment, not per vertex: see the chapter's text.
+    let distance = length(in.world_position - globals.eye.xyz);
+    return vec4<f32>(mix(fog.colour.rgb, surface, visibility(distance)), 1.0);
+}
+// ANCHOR_END: fog
