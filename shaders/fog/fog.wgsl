@@ -1,6 +1,8 @@
 // Chapter 04: exponential distance fog over chapter 03's terrain.
 // The terrain module provides the vertices and the ground's colour; this
 // file only decides how much of that colour survives the distance.
+// Chapter 05's rocks `#import fog::{fog, visibility}` to stand in the same air.
+#define_import_path fog
 #import terrain::{globals, VertexOutput, terrain_vertex, ground_colour, lit}
 
 // ANCHOR: uniform

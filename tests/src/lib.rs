@@ -43,6 +43,7 @@ pub fn chapters() -> Vec<Entry> {
         entry::<camera::CameraChapter>(),
         entry::<terrain::TerrainChapter>(),
         entry::<fog::FogChapter>(),
+        entry::<instancing::InstancingChapter>(),
     ]
 }
 

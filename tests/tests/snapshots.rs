@@ -23,6 +23,11 @@ fn fog() {
     snapshots::assert_chapter("fog");
 }
 
+#[test]
+fn instancing() {
+    snapshots::assert_chapter("instancing");
+}
+
 /// A chapter crate missing from the registry would never be snapshot-tested.
 #[test]
 fn every_chapter_crate_is_registered() {

@@ -334,9 +334,15 @@ impl TerrainRenderer {
         queue.write_buffer(&self.chunk_flags, 0, bytemuck::cast_slice(&flags));
     }
 
+    /// Binds group 0 (camera, sun, grid), which other shaders that import
+    /// the terrain module read too.
+    pub fn bind(&self, pass: &mut wgpu::RenderPass<'_>) {
+        pass.set_bind_group(0, &self.bind_group, &[]);
+    }
+
     /// Binds group 0 and draws the chunks `frustum` keeps; returns how many.
     pub fn draw(&self, pass: &mut wgpu::RenderPass<'_>, frustum: &Frustum) -> usize {
-        pass.set_bind_group(0, &self.bind_group, &[]);
+        self.bind(pass);
         self.mesh.draw_visible(pass, frustum)
     }
 

@@ -57,10 +57,59 @@ struct FogUniform {
 }
 
 /// The farthest the camera ever draws, fog or not.
-const MAX_FAR: f32 = 3000.0;
+pub const MAX_FAR: f32 = 3000.0;
 
-fn fog_shader() -> ShaderFile {
+/// The terrain shader with fog (`fog.wgsl`, importing `terrain.wgsl`).
+pub fn fog_shader() -> ShaderFile {
     shader!("fog/fog.wgsl", imports: ["terrain/terrain.wgsl"])
+}
+
+/// The fog uniform and its bind group (group 1 of fog.wgsl), for this
+/// chapter and for later ones whose objects stand in the same air.
+pub struct FogBinding {
+    pub layout: wgpu::BindGroupLayout,
+    buffer: wgpu::Buffer,
+    pub group: wgpu::BindGroup,
+}
+
+impl FogBinding {
+    pub fn new(device: &wgpu::Device) -> Self {
+        let layout = device.create_bind_group_layout(&wgpu::BindGroupLayoutDescriptor {
+            label: Some("fog"),
+            entries: &[wgpu::BindGroupLayoutEntry {
+                binding: 0,
+                visibility: wgpu::ShaderStages::FRAGMENT,
+                ty: wgpu::BindingType::Buffer {
+                    ty: wgpu::BufferBindingType::Uniform,
+                    has_dynamic_offset: false,
+                    min_binding_size: wgpu::BufferSize::new(std::mem::size_of::<FogUniform>() as u64),
+                },
+                count: None,
+            }],
+        });
+        let buffer = device.create_buffer_init(&wgpu::util::BufferInitDescriptor {
+            label: Some("fog"),
+            contents: &[0; std::mem::size_of::<FogUniform>()],
+            usage: wgpu::BufferUsages::UNIFORM | wgpu::BufferUsages::COPY_DST,
+        });
+        let group = device.create_bind_group(&wgpu::BindGroupDescriptor {
+            label: Some("fog"),
+            layout: &layout,
+            entries: &[wgpu::BindGroupEntry { binding: 0, resource: buffer.as_entire_binding() }],
+        });
+        Self { layout, buffer, group }
+    }
+
+    /// Writes `settings`, with the sky as the fog colour.
+    pub fn write(&self, queue: &wgpu::Queue, settings: FogSettings) {
+        let fog = FogUniform {
+            colour: [SKY.r as f32, SKY.g as f32, SKY.b as f32, 1.0],
+            density: settings.density,
+            gradient: settings.gradient,
+            _padding: [0.0; 2],
+        };
+        queue.write_buffer(&self.buffer, 0, bytemuck::bytes_of(&fog));
+    }
 }
 
 pub struct FogChapter {
@@ -68,8 +117,7 @@ pub struct FogChapter {
     pub fog: FogSettings,
     pub camera: Camera,
     pub controller: FlyController,
-    fog_buffer: wgpu::Buffer,
-    fog_group: wgpu::BindGroup,
+    fog_binding: FogBinding,
     layout: wgpu::PipelineLayout,
     pipeline: wgpu::RenderPipeline,
     depth: wgpu::TextureView,
@@ -88,32 +136,10 @@ impl Chapter for FogChapter {
     fn new(gpu: &Gpu, target: Target) -> anyhow::Result<Self> {
         let device = &gpu.device;
         let terrain = TerrainRenderer::new(gpu, TerrainSettings::default());
-        let fog_layout = device.create_bind_group_layout(&wgpu::BindGroupLayoutDescriptor {
-            label: Some("fog"),
-            entries: &[wgpu::BindGroupLayoutEntry {
-                binding: 0,
-                visibility: wgpu::ShaderStages::FRAGMENT,
-                ty: wgpu::BindingType::Buffer {
-                    ty: wgpu::BufferBindingType::Uniform,
-                    has_dynamic_offset: false,
-                    min_binding_size: wgpu::BufferSize::new(std::mem::size_of::<FogUniform>() as u64),
-                },
-                count: None,
-            }],
-        });
-        let fog_buffer = device.create_buffer_init(&wgpu::util::BufferInitDescriptor {
-            label: Some("fog"),
-            contents: &[0; std::mem::size_of::<FogUniform>()],
-            usage: wgpu::BufferUsages::UNIFORM | wgpu::BufferUsages::COPY_DST,
-        });
-        let fog_group = device.create_bind_group(&wgpu::BindGroupDescriptor {
-            label: Some("fog"),
-            layout: &fog_layout,
-            entries: &[wgpu::BindGroupEntry { binding: 0, resource: fog_buffer.as_entire_binding() }],
-        });
+        let fog_binding = FogBinding::new(device);
         let layout = device.create_pipeline_layout(&wgpu::PipelineLayoutDescriptor {
             label: Some("fog"),
-            bind_group_layouts: &[Some(&terrain.bind_group_layout), Some(&fog_layout)],
+            bind_group_layouts: &[Some(&terrain.bind_group_layout), Some(&fog_binding.layout)],
             immediate_size: 0,
         });
         let pipeline = terrain.pipeline(gpu, &fog_shader(), &layout, target.format)?;
@@ -122,8 +148,7 @@ impl Chapter for FogChapter {
             controller: FlyController { speed: 40.0, ..Default::default() },
             fog: FogSettings::HAZE,
             terrain,
-            fog_buffer,
-            fog_group,
+            fog_binding,
             layout,
             pipeline,
             depth: depth_view(device, target.width, target.height),
@@ -158,13 +183,7 @@ impl Chapter for FogChapter {
         }
         // Nothing past the opaque distance can be seen: stop drawing there.
         self.camera.far = self.fog.opaque_distance().min(MAX_FAR);
-        let fog = FogUniform {
-            colour: [SKY.r as f32, SKY.g as f32, SKY.b as f32, 1.0],
-            density: self.fog.density,
-            gradient: self.fog.gradient,
-            _padding: [0.0; 2],
-        };
-        gpu.queue.write_buffer(&self.fog_buffer, 0, bytemuck::bytes_of(&fog));
+        self.fog_binding.write(&gpu.queue, self.fog);
         self.terrain.write_globals(&gpu.queue, &self.camera, Shading::Shaded);
 
         let mut pass = frame.encoder.begin_render_pass(&wgpu::RenderPassDescriptor {
@@ -186,7 +205,7 @@ impl Chapter for FogChapter {
             ..Default::default()
         });
         pass.set_pipeline(&self.pipeline);
-        pass.set_bind_group(1, &self.fog_group, &[]);
+        pass.set_bind_group(1, &self.fog_binding.group, &[]);
         self.drawn = self.terrain.draw(&mut pass, &Frustum::from_view_projection(self.camera.view_projection()));
     }
     // ANCHOR_END: render

@@ -1,0 +1,81 @@
+// Chapter 05: very many rocks from one mesh.
+// Every rock is the same 60 vertices; what makes each one itself is 32
+// bytes of instance data: where it stands, which way it faces, how it is
+// stretched, and how light its stone is.
+#import terrain::{globals, lit}
+#import fog::{fog, visibility}
+
+// ANCHOR: rock
+struct Rock {
+    // xyz: where it stands (world), w: yaw in radians.
+    position_yaw: vec4<f32>,
+    // xyz: scale along its own axes, w: shade, 0 dark to 1 light.
+    scale_shade: vec4<f32>,
+};
+
+struct RockOutput {
+    @builtin(position) clip_position: vec4<f32>,
+    @location(0) world_position: vec3<f32>,
+    @location(1) normal: vec3<f32>,
+    @location(2) shade: f32,
+};
+
+fn turn(v: vec3<f32>, yaw: f32) -> vec3<f32> {
+    let s = sin(yaw);
+    let c = cos(yaw);
+    return vec3<f32>(c * v.x + s * v.z, v.y, -s * v.x + c * v.z);
+}
+
+// The model matrix, never built: scale, turn about y, move.
+fn rock_vertex(rock: Rock, position: vec3<f32>, normal: vec3<f32>) -> RockOutput {
+    let yaw = rock.position_yaw.w;
+    let world = turn(position * rock.scale_shade.xyz, yaw) + rock.position_yaw.xyz;
+    var out: RockOutput;
+    out.clip_position = globals.view_proj * vec4<f32>(world, 1.0);
+    out.world_position = world;
+    // The inverse transpose of (turn · scale) is (turn · 1/scale): chapter 02's
+    // normal matrix, worked out by hand.
+    out.normal = turn(normal / rock.scale_shade.xyz, yaw);
+    out.shade = rock.scale_shade.w;
+    return out;
+}
+// ANCHOR_END: rock
+
+// ANCHOR: vs_instanced
+// One draw call for all rocks: locations 3 and 4 step once per instance,
+// not once per vertex, so each instance reads its own Rock.
+@vertex
+fn vs_instanced(
+    @location(0) position: vec3<f32>,
+    @location(1) normal: vec3<f32>,
+    @location(3) position_yaw: vec4<f32>,
+    @location(4) scale_shade: vec4<f32>,
+) -> RockOutput {
+    return rock_vertex(Rock(position_yaw, scale_shade), position, normal);
+}
+// ANCHOR_END: vs_instanced
+
+// ANCHOR: vs_single
+// The comparison: one draw call per rock, each reading its Rock from a
+// uniform at a dynamic offset, as chapter 02 placed its primitives.
+@group(2) @binding(0) var<uniform> single: Rock;
+
+@vertex
+fn vs_single(@location(0) position: vec3<f32>, @location(1) normal: vec3<f32>) -> RockOutput {
+    return rock_vertex(single, position, normal);
+}
+// ANCHOR_END: vs_single
+
+@fragment
+fn fs_main(in: RockOutput) -> @location(0) vec4<f32> {
+    let basalt = vec3<f32>(0.16, 0.09, 0.06) * (0.6 + 0.9 * in.shade);
+    let surface = lit(basalt, normalize(in.normal));
+    let distance = length(in.world_position - globals.eye.xyz);
+    return vec4<f32>(mix(fog.colour.rgb, surface, visibility(distance)), 1.0);
+}
+
+// The floor of the cost: the same vertices, no lighting, no fog.
+@fragment
+fn fs_flat(in: RockOutput) -> @location(0) vec4<f32> {
+    return vec4<f32>(0.2, 0.1, 0.07, 1.0);
+}
