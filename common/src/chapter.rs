@@ -43,6 +43,35 @@ pub struct Frame<'a> {
     pub timer: &'a PassTimer,
 }
 
+impl Frame<'_> {
+    /// Begins the pass that starts most 3D frames: clear the target to
+    /// `clear` and `depth` to the far plane (1.0), time it as `label`.
+    /// Chapter 02 writes this pass out in full; later chapters call this.
+    pub fn scene_pass(
+        &mut self,
+        label: &'static str,
+        clear: wgpu::Color,
+        depth: &wgpu::TextureView,
+    ) -> wgpu::RenderPass<'_> {
+        self.encoder.begin_render_pass(&wgpu::RenderPassDescriptor {
+            label: Some(label),
+            color_attachments: &[Some(wgpu::RenderPassColorAttachment {
+                view: self.target,
+                depth_slice: None,
+                resolve_target: None,
+                ops: wgpu::Operations { load: wgpu::LoadOp::Clear(clear), store: wgpu::StoreOp::Store },
+            })],
+            depth_stencil_attachment: Some(wgpu::RenderPassDepthStencilAttachment {
+                view: depth,
+                depth_ops: Some(wgpu::Operations { load: wgpu::LoadOp::Clear(1.0), store: wgpu::StoreOp::Store }),
+                stencil_ops: None,
+            }),
+            timestamp_writes: self.timer.pass(label),
+            ..Default::default()
+        })
+    }
+}
+
 /// One technique of the book, runnable in a window or headless.
 pub trait Chapter: Sized + 'static {
     /// The package name, used for the window title, files and `--help`.

@@ -90,6 +90,18 @@ impl Texture {
     }
 }
 
+/// The usual depth test: keep a fragment nearer than what is stored, and
+/// store its depth (chapter 02 explains it).
+pub fn depth_test() -> Option<wgpu::DepthStencilState> {
+    Some(wgpu::DepthStencilState {
+        format: DEPTH_FORMAT,
+        depth_write_enabled: Some(true),
+        depth_compare: Some(wgpu::CompareFunction::Less),
+        stencil: Default::default(),
+        bias: Default::default(),
+    })
+}
+
 /// A depth buffer the size of the colour target.
 pub fn depth_view(device: &wgpu::Device, width: u32, height: u32) -> wgpu::TextureView {
     device

@@ -10,7 +10,7 @@ pub mod noise;
 use std::time::Instant;
 
 use common::glam::Vec3;
-use common::texture::{DEPTH_FORMAT, depth_view};
+use common::texture::{depth_test, depth_view};
 use common::wgpu::util::DeviceExt as _;
 use common::{
     Camera, Chapter, FlyController, Frame, Gpu, Input, ShaderError, ShaderFile, Target, View, anyhow, egui, shader,
@@ -295,13 +295,7 @@ impl TerrainRenderer {
                     compilation_options: Default::default(),
                 },
                 primitive: wgpu::PrimitiveState { cull_mode: Some(wgpu::Face::Back), ..Default::default() },
-                depth_stencil: Some(wgpu::DepthStencilState {
-                    format: DEPTH_FORMAT,
-                    depth_write_enabled: Some(true),
-                    depth_compare: Some(wgpu::CompareFunction::Less),
-                    stencil: Default::default(),
-                    bias: Default::default(),
-                }),
+                depth_stencil: depth_test(),
                 multisample: Default::default(),
                 fragment: Some(wgpu::FragmentState {
                     module: &module,
@@ -470,22 +464,7 @@ impl Chapter for TerrainChapter {
             self.terrain.write_chunk_flags(&gpu.queue, &frustum);
         }
 
-        let mut pass = frame.encoder.begin_render_pass(&wgpu::RenderPassDescriptor {
-            label: Some("terrain"),
-            color_attachments: &[Some(wgpu::RenderPassColorAttachment {
-                view: frame.target,
-                depth_slice: None,
-                resolve_target: None,
-                ops: wgpu::Operations { load: wgpu::LoadOp::Clear(SKY), store: wgpu::StoreOp::Store },
-            })],
-            depth_stencil_attachment: Some(wgpu::RenderPassDepthStencilAttachment {
-                view: &self.depth,
-                depth_ops: Some(wgpu::Operations { load: wgpu::LoadOp::Clear(1.0), store: wgpu::StoreOp::Store }),
-                stencil_ops: None,
-            }),
-            timestamp_writes: frame.timer.pass("terrain"),
-            ..Default::default()
-        });
+        let mut pass = frame.scene_pass("terrain", SKY, &self.depth);
         pass.set_pipeline(&self.pipeline);
         if shading == Shading::Chunks {
             // Draw every chunk, so the culled ones can be seen as such.

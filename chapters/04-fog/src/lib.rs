@@ -186,24 +186,9 @@ impl Chapter for FogChapter {
         self.fog_binding.write(&gpu.queue, self.fog);
         self.terrain.write_globals(&gpu.queue, &self.camera, Shading::Shaded);
 
-        let mut pass = frame.encoder.begin_render_pass(&wgpu::RenderPassDescriptor {
-            label: Some("terrain in fog"),
-            color_attachments: &[Some(wgpu::RenderPassColorAttachment {
-                view: frame.target,
-                depth_slice: None,
-                resolve_target: None,
-                // The clear colour is the fog colour: where there is no
-                // ground, the fog's "infinitely far" is what shows.
-                ops: wgpu::Operations { load: wgpu::LoadOp::Clear(SKY), store: wgpu::StoreOp::Store },
-            })],
-            depth_stencil_attachment: Some(wgpu::RenderPassDepthStencilAttachment {
-                view: &self.depth,
-                depth_ops: Some(wgpu::Operations { load: wgpu::LoadOp::Clear(1.0), store: wgpu::StoreOp::Store }),
-                stencil_ops: None,
-            }),
-            timestamp_writes: frame.timer.pass("terrain"),
-            ..Default::default()
-        });
+        // Clear to the fog colour: where there is no ground, the fog's
+        // "infinitely far" is what shows.
+        let mut pass = frame.scene_pass("terrain", SKY, &self.depth);
         pass.set_pipeline(&self.pipeline);
         pass.set_bind_group(1, &self.fog_binding.group, &[]);
         self.drawn = self.terrain.draw(&mut pass, &Frustum::from_view_projection(self.camera.view_projection()));

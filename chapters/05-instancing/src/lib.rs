@@ -3,7 +3,7 @@
 //! The scene is the Mars plain so far: terrain, fog and rocks.
 
 use common::glam::Vec3;
-use common::texture::{DEPTH_FORMAT, depth_view};
+use common::texture::{depth_test, depth_view};
 use common::wgpu::util::DeviceExt as _;
 use common::{
     Camera, Chapter, FlyController, Frame, Gpu, Input, Mesh, MeshData, ShaderError, ShaderFile, Target, Vertex, View,
@@ -252,13 +252,7 @@ fn rock_pipeline(
             compilation_options: Default::default(),
         },
         primitive: wgpu::PrimitiveState { cull_mode: Some(wgpu::Face::Back), ..Default::default() },
-        depth_stencil: Some(wgpu::DepthStencilState {
-            format: DEPTH_FORMAT,
-            depth_write_enabled: Some(true),
-            depth_compare: Some(wgpu::CompareFunction::Less),
-            stencil: Default::default(),
-            bias: Default::default(),
-        }),
+        depth_stencil: depth_test(),
         multisample: Default::default(),
         fragment: Some(wgpu::FragmentState {
             module,
@@ -466,22 +460,7 @@ impl Chapter for InstancingChapter {
         self.fog_binding.write(&gpu.queue, self.fog);
         self.terrain.write_globals(&gpu.queue, &self.camera, Shading::Shaded);
 
-        let mut pass = frame.encoder.begin_render_pass(&wgpu::RenderPassDescriptor {
-            label: Some("mars plain"),
-            color_attachments: &[Some(wgpu::RenderPassColorAttachment {
-                view: frame.target,
-                depth_slice: None,
-                resolve_target: None,
-                ops: wgpu::Operations { load: wgpu::LoadOp::Clear(SKY), store: wgpu::StoreOp::Store },
-            })],
-            depth_stencil_attachment: Some(wgpu::RenderPassDepthStencilAttachment {
-                view: &self.depth,
-                depth_ops: Some(wgpu::Operations { load: wgpu::LoadOp::Clear(1.0), store: wgpu::StoreOp::Store }),
-                stencil_ops: None,
-            }),
-            timestamp_writes: frame.timer.pass("terrain and rocks"),
-            ..Default::default()
-        });
+        let mut pass = frame.scene_pass("terrain and rocks", SKY, &self.depth);
         // Group 0 (camera, sun) and group 1 (fog) serve the terrain and the rocks alike.
         pass.set_bind_group(1, &self.fog_binding.group, &[]);
         self.terrain.bind(&mut pass);
