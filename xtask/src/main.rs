@@ -6,12 +6,14 @@
 //! - `snapshot [--bless] [CHAPTER...]`: compare with, or rewrite, the reference images.
 //! - `book`: check snapshots, copy them in as figures, check anchors, build HTML, check links.
 //! - `bench [CHAPTER...]`: release build, frame times per view, written into the book.
+//! - `assets`: paint every texture under `assets/` from code (deterministic).
 
 use std::path::{Path, PathBuf};
 use std::process::{Command, ExitCode};
 
 use anyhow::{Context as _, bail, ensure};
 
+mod assets;
 mod book;
 mod prerequisites;
 
@@ -22,11 +24,14 @@ fn main() -> ExitCode {
         Some("snapshot") => snapshot(&args[1..]),
         Some("book") => book::build(true),
         Some("bench") => bench(&args[1..]),
+        Some("assets") => assets::generate(),
         Some("help" | "--help" | "-h") | None => {
             print!("{}", USAGE);
             return ExitCode::SUCCESS;
         }
-        Some(other) => Err(anyhow::anyhow!("unknown task '{other}'; the tasks are: test, snapshot, book, bench")),
+        Some(other) => {
+            Err(anyhow::anyhow!("unknown task '{other}'; the tasks are: test, snapshot, book, bench, assets"))
+        }
     };
     match result {
         Ok(()) => ExitCode::SUCCESS,
@@ -42,6 +47,7 @@ cargo xtask test                           everything CI runs (prerequisites, fm
 cargo xtask snapshot [--bless] [CHAPTER..] compare every view with its reference; --bless rewrites them
 cargo xtask book                           check snapshots, copy figures, build book/book/index.html
 cargo xtask bench [CHAPTER..]              release build; frame times at 1280x720 into book/src/bench/
+cargo xtask assets                         paint every texture under assets/ from code
 ";
 
 /// The workspace root (xtask lives one folder below it).

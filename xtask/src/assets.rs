@@ -1,0 +1,156 @@
+//! `cargo xtask assets`: paints every texture the book uses, from code.
+//! Deterministic (no clock, fixed hashes), so running it again rewrites the
+//! same bytes; the files are committed under `assets/` with this provenance.
+
+use std::path::Path;
+
+use anyhow::Context as _;
+
+/// Cube face order as WebGPU expects it, with the direction through pixel
+/// (u, v) of each face, u and v in −1..1 (v down the image).
+const FACES: [(&str, fn(f32, f32) -> [f32; 3]); 6] = [
+    ("px", |u, v| [1.0, -v, -u]),
+    ("nx", |u, v| [-1.0, -v, u]),
+    ("py", |u, v| [u, 1.0, v]),
+    ("ny", |u, v| [u, -1.0, -v]),
+    ("pz", |u, v| [u, -v, 1.0]),
+    ("nz", |u, v| [-u, -v, -1.0]),
+];
+
+/// Face size in pixels: about a third of a degree per pixel.
+const FACE_SIZE: u32 = 256;
+
+/// Where the sun is painted in the day sky (sky space): on the eastern
+/// horizon, a little south. The skybox chapter turns the sky about z, which
+/// carries this point over the sky and below the ground through the day.
+pub const SUN_IN_SKY: [f32; 3] = [0.957_826_3, 0.0, 0.287_347_9]; // normalize(1, 0, 0.3)
+
+fn normalize(d: [f32; 3]) -> [f32; 3] {
+    let l = (d[0] * d[0] + d[1] * d[1] + d[2] * d[2]).sqrt();
+    [d[0] / l, d[1] / l, d[2] / l]
+}
+
+fn dot(a: [f32; 3], b: [f32; 3]) -> f32 {
+    a[0] * b[0] + a[1] * b[1] + a[2] * b[2]
+}
+
+fn mix(a: [f32; 3], b: [f32; 3], t: f32) -> [f32; 3] {
+    [a[0] + (b[0] - a[0]) * t, a[1] + (b[1] - a[1]) * t, a[2] + (b[2] - a[2]) * t]
+}
+
+fn smoothstep(e0: f32, e1: f32, x: f32) -> f32 {
+    let t = ((x - e0) / (e1 - e0)).clamp(0.0, 1.0);
+    t * t * (3.0 - 2.0 * t)
+}
+
+/// A fixed integer hash to [0, 1): the same on every machine.
+fn hash(mut x: u32) -> f32 {
+    x ^= x >> 16;
+    x = x.wrapping_mul(0x7feb_352d);
+    x ^= x >> 15;
+    x = x.wrapping_mul(0x846c_a68b);
+    x ^= x >> 16;
+    (x >> 8) as f32 / (1u32 << 24) as f32
+}
+
+/// Smooth value noise on a 3D lattice, for faint dust in the day sky.
+fn value_noise(p: [f32; 3]) -> f32 {
+    let cell = p.map(f32::floor);
+    let f = [p[0] - cell[0], p[1] - cell[1], p[2] - cell[2]].map(|t| t * t * (3.0 - 2.0 * t));
+    let corner = |dx: i32, dy: i32, dz: i32| {
+        let (x, y, z) = (cell[0] as i32 + dx, cell[1] as i32 + dy, cell[2] as i32 + dz);
+        hash(
+            (x as u32).wrapping_mul(73_856_093)
+                ^ (y as u32).wrapping_mul(19_349_663)
+                ^ (z as u32).wrapping_mul(83_492_791),
+        )
+    };
+    let lerp = |a: f32, b: f32, t: f32| a + (b - a) * t;
+    let x00 = lerp(corner(0, 0, 0), corner(1, 0, 0), f[0]);
+    let x10 = lerp(corner(0, 1, 0), corner(1, 1, 0), f[0]);
+    let x01 = lerp(corner(0, 0, 1), corner(1, 0, 1), f[0]);
+    let x11 = lerp(corner(0, 1, 1), corner(1, 1, 1), f[0]);
+    lerp(lerp(x00, x10, f[1]), lerp(x01, x11, f[1]), f[2])
+}
+
+/// The Martian day sky in sRGB 0..1: butterscotch, darker towards the
+/// zenith, dusty, with a small white sun in a blue halo (Martian dust
+/// scatters blue light forward, around the sun, the opposite of Earth).
+fn day_sky(d: [f32; 3]) -> [f32; 3] {
+    let horizon = [0.80, 0.60, 0.44];
+    let zenith = [0.56, 0.40, 0.30];
+    let ground = [0.42, 0.30, 0.22];
+    let up = d[1];
+    let mut colour = if up >= 0.0 {
+        mix(horizon, zenith, smoothstep(0.0, 0.9, up))
+    } else {
+        mix(horizon, ground, smoothstep(0.0, 0.3, -up))
+    };
+    let dust = value_noise([d[0] * 5.0 + 11.0, d[1] * 9.0, d[2] * 5.0]) * 0.5
+        + value_noise([d[0] * 13.0, d[1] * 21.0 + 3.0, d[2] * 13.0]) * 0.5;
+    colour = mix(colour, [0.86, 0.68, 0.52], 0.25 * dust * smoothstep(0.0, 0.3, up));
+    let to_sun = dot(d, SUN_IN_SKY).max(0.0);
+    colour = mix(colour, [0.55, 0.66, 0.80], 0.75 * to_sun.powf(40.0));
+    let disc = smoothstep((0.9f32).to_radians().cos(), (0.6f32).to_radians().cos(), to_sun);
+    mix(colour, [1.0, 0.98, 0.94], disc)
+}
+
+/// The night sky: near black, a little lighter at the horizon, with stars
+/// scattered by a hash of the pixel (about one pixel in 300).
+fn night_sky(d: [f32; 3], pixel_id: u32) -> [f32; 3] {
+    let up = d[1];
+    let mut colour = mix([0.06, 0.05, 0.07], [0.012, 0.012, 0.03], smoothstep(0.0, 0.6, up.max(0.0)));
+    if up > -0.05 {
+        let h = hash(pixel_id);
+        if h > 0.9967 {
+            let brightness = 0.35 + 0.65 * hash(pixel_id ^ 0x5bd1_e995).powi(3);
+            let tint = hash(pixel_id.wrapping_mul(31));
+            let star = mix([0.85, 0.88, 1.0], [1.0, 0.86, 0.7], tint);
+            colour = mix(colour, star, brightness);
+        }
+    }
+    colour
+}
+
+fn paint_cubemap(dir: &Path, paint: impl Fn([f32; 3], u32) -> [f32; 3]) -> anyhow::Result<()> {
+    std::fs::create_dir_all(dir)?;
+    for (face_index, (name, direction)) in FACES.iter().enumerate() {
+        let image = image::RgbImage::from_fn(FACE_SIZE, FACE_SIZE, |x, y| {
+            let u = 2.0 * (x as f32 + 0.5) / FACE_SIZE as f32 - 1.0;
+            let v = 2.0 * (y as f32 + 0.5) / FACE_SIZE as f32 - 1.0;
+            let id = (face_index as u32 * FACE_SIZE + y) * FACE_SIZE + x;
+            let c = paint(normalize(direction(u, v)), id.wrapping_mul(2_654_435_761));
+            image::Rgb(c.map(|t| (t.clamp(0.0, 1.0) * 255.0).round() as u8))
+        });
+        let path = dir.join(format!("{name}.png"));
+        image.save(&path).with_context(|| format!("cannot write {}", path.display()))?;
+        println!("wrote {}", path.display());
+    }
+    Ok(())
+}
+
+const PROVENANCE: &str = "\
+# Assets
+
+Every file here is painted by code in this repository, `xtask/src/assets.rs`,
+run by `cargo xtask assets`. Nothing is downloaded or copied from elsewhere.
+The generator uses fixed hashes and no clock, so running it again writes the
+same bytes.
+
+| files | what | how |
+|---|---|---|
+| `skybox/day/{px,nx,py,ny,pz,nz}.png` | Martian day sky, 6 × 256² cube faces | horizon-to-zenith butterscotch gradient, faint value-noise dust, a sun at normalize(1, 0, 0.3) with a blue forward-scattering halo |
+| `skybox/night/{px,nx,py,ny,pz,nz}.png` | night sky, 6 × 256² cube faces | near-black gradient, stars where a per-pixel hash exceeds 0.9967 |
+
+Faces are in WebGPU's order (+x, −x, +y, −y, +z, −z); the direction
+through pixel (u, v) of each face is in `FACES` in the generator.
+";
+
+pub fn generate() -> anyhow::Result<()> {
+    let root = crate::root().join("assets");
+    paint_cubemap(&root.join("skybox/day"), |d, _| day_sky(d))?;
+    paint_cubemap(&root.join("skybox/night"), night_sky)?;
+    std::fs::write(root.join("README.md"), PROVENANCE)?;
+    println!("wrote {}", root.join("README.md").display());
+    Ok(())
+}
