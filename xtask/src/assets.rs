@@ -8,7 +8,9 @@ use anyhow::Context as _;
 
 /// Cube face order as WebGPU expects it, with the direction through pixel
 /// (u, v) of each face, u and v in −1..1 (v down the image).
-const FACES: [(&str, fn(f32, f32) -> [f32; 3]); 6] = [
+type FaceDirection = fn(f32, f32) -> [f32; 3];
+
+const FACES: [(&str, FaceDirection); 6] = [
     ("px", |u, v| [1.0, -v, -u]),
     ("nx", |u, v| [-1.0, -v, u]),
     ("py", |u, v| [u, 1.0, v]),
