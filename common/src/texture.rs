@@ -90,6 +90,63 @@ impl Texture {
     }
 }
 
+/// A cube map from six square faces in WebGPU's order (+x, −x, +y, −y, +z,
+/// −z), each given as (file name for errors, encoded PNG or JPEG bytes).
+/// Sampled with a direction instead of coordinates, as skies are.
+pub fn cubemap(
+    device: &wgpu::Device,
+    queue: &wgpu::Queue,
+    faces: &[(&str, &[u8]); 6],
+    space: ColorSpace,
+) -> anyhow::Result<Texture> {
+    let images = faces
+        .iter()
+        .map(|(name, bytes)| decode_rgba(bytes).with_context(|| format!("{name} is not a readable PNG or JPEG")))
+        .collect::<anyhow::Result<Vec<_>>>()?;
+    let size = images[0].width();
+    if let Some(((name, _), image)) = faces.iter().zip(&images).find(|(_, i)| i.dimensions() != (size, size)) {
+        anyhow::bail!("{name} is {}x{}, but cube faces must all be {size}x{size}", image.width(), image.height());
+    }
+    let format = match space {
+        ColorSpace::Srgb => wgpu::TextureFormat::Rgba8UnormSrgb,
+        ColorSpace::Linear => wgpu::TextureFormat::Rgba8Unorm,
+    };
+    let texture = device.create_texture(&wgpu::TextureDescriptor {
+        label: Some(faces[0].0),
+        size: wgpu::Extent3d { width: size, height: size, depth_or_array_layers: 6 },
+        mip_level_count: 1,
+        sample_count: 1,
+        dimension: wgpu::TextureDimension::D2,
+        format,
+        usage: wgpu::TextureUsages::TEXTURE_BINDING | wgpu::TextureUsages::COPY_DST,
+        view_formats: &[],
+    });
+    for (layer, image) in images.iter().enumerate() {
+        queue.write_texture(
+            wgpu::TexelCopyTextureInfo {
+                texture: &texture,
+                mip_level: 0,
+                origin: wgpu::Origin3d { x: 0, y: 0, z: layer as u32 },
+                aspect: wgpu::TextureAspect::All,
+            },
+            image.as_raw(),
+            wgpu::TexelCopyBufferLayout { offset: 0, bytes_per_row: Some(4 * size), rows_per_image: None },
+            wgpu::Extent3d { width: size, height: size, depth_or_array_layers: 1 },
+        );
+    }
+    let view = texture.create_view(&wgpu::TextureViewDescriptor {
+        dimension: Some(wgpu::TextureViewDimension::Cube),
+        ..Default::default()
+    });
+    let sampler = device.create_sampler(&wgpu::SamplerDescriptor {
+        label: Some("cubemap"),
+        mag_filter: wgpu::FilterMode::Linear,
+        min_filter: wgpu::FilterMode::Linear,
+        ..Default::default()
+    });
+    Ok(Texture { texture, view, sampler })
+}
+
 /// The usual depth test: keep a fragment nearer than what is stored, and
 /// store its depth (chapter 02 explains it).
 pub fn depth_test() -> Option<wgpu::DepthStencilState> {

@@ -7,7 +7,7 @@
 struct Globals {
     view_proj: mat4x4<f32>,
     eye: vec4<f32>,
-    // xyz: unit vector towards the sun.
+    // xyz: unit vector towards the sun; w: its strength, 1 by day, 0 at night.
     sun: vec4<f32>,
     // x: chunks per side, y: quads per chunk side, z: view (0 shaded,
     // 1 wireframe, 2 normals, 3 chunks).
@@ -74,8 +74,12 @@ fn ground_colour(height: f32, normal: vec3<f32>) -> vec3<f32> {
 }
 // ANCHOR_END: colour
 
+// Lambert's cosine law for the sun, plus ambient light from the sky, both
+// fading as the sun sets (some ambient stays: starlight).
 fn lit(colour: vec3<f32>, normal: vec3<f32>) -> vec3<f32> {
-    return colour * (0.2 + 0.9 * max(dot(normal, globals.sun.xyz), 0.0));
+    let strength = globals.sun.w;
+    let ambient = 0.05 + 0.15 * strength;
+    return colour * (ambient + 0.9 * strength * max(dot(normal, globals.sun.xyz), 0.0));
 }
 
 // Lines along the grid and the quads' diagonals, a pixel wide at any

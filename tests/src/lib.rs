@@ -44,6 +44,7 @@ pub fn chapters() -> Vec<Entry> {
         entry::<terrain::TerrainChapter>(),
         entry::<fog::FogChapter>(),
         entry::<instancing::InstancingChapter>(),
+        entry::<skybox::SkyboxChapter>(),
     ]
 }
 

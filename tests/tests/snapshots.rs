@@ -28,6 +28,11 @@ fn instancing() {
     snapshots::assert_chapter("instancing");
 }
 
+#[test]
+fn skybox() {
+    snapshots::assert_chapter("skybox");
+}
+
 /// A chapter crate missing from the registry would never be snapshot-tested.
 #[test]
 fn every_chapter_crate_is_registered() {

@@ -22,18 +22,9 @@ const FACES: [(&str, FaceDirection); 6] = [
 /// Face size in pixels: about a third of a degree per pixel.
 const FACE_SIZE: u32 = 256;
 
-/// Where the sun is painted in the day sky (sky space): on the eastern
-/// horizon, a little south. The skybox chapter turns the sky about z, which
-/// carries this point over the sky and below the ground through the day.
-pub const SUN_IN_SKY: [f32; 3] = [0.957_826_3, 0.0, 0.287_347_9]; // normalize(1, 0, 0.3)
-
 fn normalize(d: [f32; 3]) -> [f32; 3] {
     let l = (d[0] * d[0] + d[1] * d[1] + d[2] * d[2]).sqrt();
     [d[0] / l, d[1] / l, d[2] / l]
-}
-
-fn dot(a: [f32; 3], b: [f32; 3]) -> f32 {
-    a[0] * b[0] + a[1] * b[1] + a[2] * b[2]
 }
 
 fn mix(a: [f32; 3], b: [f32; 3], t: f32) -> [f32; 3] {
@@ -75,43 +66,35 @@ fn value_noise(p: [f32; 3]) -> f32 {
     lerp(lerp(x00, x10, f[1]), lerp(x01, x11, f[1]), f[2])
 }
 
-/// The Martian day sky in sRGB 0..1: butterscotch, darker towards the
-/// zenith, dusty, with a small white sun in a blue halo (Martian dust
-/// scatters blue light forward, around the sun, the opposite of Earth).
+/// The Martian day atmosphere in sRGB 0..1: butterscotch, darker towards
+/// the zenith, with faint dust. No sun: the sky shader draws it where the
+/// light comes from, so that the two cannot disagree.
 fn day_sky(d: [f32; 3]) -> [f32; 3] {
     let horizon = [0.80, 0.60, 0.44];
     let zenith = [0.56, 0.40, 0.30];
     let ground = [0.42, 0.30, 0.22];
     let up = d[1];
-    let mut colour = if up >= 0.0 {
+    let colour = if up >= 0.0 {
         mix(horizon, zenith, smoothstep(0.0, 0.9, up))
     } else {
         mix(horizon, ground, smoothstep(0.0, 0.3, -up))
     };
     let dust = value_noise([d[0] * 5.0 + 11.0, d[1] * 9.0, d[2] * 5.0]) * 0.5
         + value_noise([d[0] * 13.0, d[1] * 21.0 + 3.0, d[2] * 13.0]) * 0.5;
-    colour = mix(colour, [0.86, 0.68, 0.52], 0.25 * dust * smoothstep(0.0, 0.3, up));
-    let to_sun = dot(d, SUN_IN_SKY).max(0.0);
-    colour = mix(colour, [0.55, 0.66, 0.80], 0.75 * to_sun.powf(40.0));
-    let disc = smoothstep((0.9f32).to_radians().cos(), (0.6f32).to_radians().cos(), to_sun);
-    mix(colour, [1.0, 0.98, 0.94], disc)
+    mix(colour, [0.86, 0.68, 0.52], 0.25 * dust * smoothstep(0.0, 0.3, up))
 }
 
-/// The night sky: near black, a little lighter at the horizon, with stars
-/// scattered by a hash of the pixel (about one pixel in 300).
-fn night_sky(d: [f32; 3], pixel_id: u32) -> [f32; 3] {
-    let up = d[1];
-    let mut colour = mix([0.06, 0.05, 0.07], [0.012, 0.012, 0.03], smoothstep(0.0, 0.6, up.max(0.0)));
-    if up > -0.05 {
-        let h = hash(pixel_id);
-        if h > 0.9967 {
-            let brightness = 0.35 + 0.65 * hash(pixel_id ^ 0x5bd1_e995).powi(3);
-            let tint = hash(pixel_id.wrapping_mul(31));
-            let star = mix([0.85, 0.88, 1.0], [1.0, 0.86, 0.7], tint);
-            colour = mix(colour, star, brightness);
-        }
+/// The night sky: stars on near black, all the way round, since the sky
+/// turns and any part of it may rise. Stars are scattered by a hash of the
+/// pixel (about one pixel in 300).
+fn night_sky(_: [f32; 3], pixel_id: u32) -> [f32; 3] {
+    let background = [0.03, 0.03, 0.05];
+    if hash(pixel_id) <= 0.9967 {
+        return background;
     }
-    colour
+    let brightness = 0.35 + 0.65 * hash(pixel_id ^ 0x5bd1_e995).powi(3);
+    let tint = hash(pixel_id.wrapping_mul(31));
+    mix(background, mix([0.85, 0.88, 1.0], [1.0, 0.86, 0.7], tint), brightness)
 }
 
 fn paint_cubemap(dir: &Path, paint: impl Fn([f32; 3], u32) -> [f32; 3]) -> anyhow::Result<()> {
@@ -141,8 +124,8 @@ same bytes.
 
 | files | what | how |
 |---|---|---|
-| `skybox/day/{px,nx,py,ny,pz,nz}.png` | Martian day sky, 6 × 256² cube faces | horizon-to-zenith butterscotch gradient, faint value-noise dust, a sun at normalize(1, 0, 0.3) with a blue forward-scattering halo |
-| `skybox/night/{px,nx,py,ny,pz,nz}.png` | night sky, 6 × 256² cube faces | near-black gradient, stars where a per-pixel hash exceeds 0.9967 |
+| `skybox/day/{px,nx,py,ny,pz,nz}.png` | Martian day atmosphere, 6 × 256² cube faces | horizon-to-zenith butterscotch gradient, darker below the horizon, faint value-noise dust; no sun (the sky shader draws it where the light is) |
+| `skybox/night/{px,nx,py,ny,pz,nz}.png` | star field, 6 × 256² cube faces | near black, stars where a per-pixel hash exceeds 0.9967, all the way round |
 
 Faces are in WebGPU's order (+x, −x, +y, −y, +z, −z); the direction
 through pixel (u, v) of each face is in `FACES` in the generator.

@@ -31,8 +31,18 @@ pub const VIEWS: &[View] = &[
 /// Pale butterscotch: the Martian sky, and the clear colour.
 pub const SKY: wgpu::Color = wgpu::Color { r: 0.62, g: 0.42, b: 0.28, a: 1.0 };
 
-/// Towards the sun: low in the south-east, so slopes show as light and shade.
-pub const SUN: Vec3 = Vec3::new(0.75, 0.35, 0.35);
+/// The light: a direction towards the sun, and how strong it is (1 by day,
+/// 0 when it is below the horizon). Chapter 06 moves it with the sky.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Sun {
+    pub direction: Vec3,
+    pub strength: f32,
+}
+
+impl Sun {
+    /// Low in the south-east, so slopes show as light and shade.
+    pub const AFTERNOON: Self = Self { direction: Vec3::new(0.75, 0.35, 0.35), strength: 1.0 };
+}
 
 // ANCHOR: terrain_mesh
 /// The whole terrain on the GPU: every chunk's vertices in one buffer, one
@@ -311,11 +321,11 @@ impl TerrainRenderer {
     }
 
     /// Writes the frame's uniforms: `eye` is the camera drawn from.
-    pub fn write_globals(&self, queue: &wgpu::Queue, eye: &Camera, shading: Shading) {
+    pub fn write_globals(&self, queue: &wgpu::Queue, eye: &Camera, sun: Sun, shading: Shading) {
         let globals = Globals {
             view_proj: eye.view_projection().to_cols_array_2d(),
             eye: eye.position.extend(1.0).into(),
-            sun: SUN.normalize().extend(0.0).into(),
+            sun: sun.direction.normalize().extend(sun.strength).into(),
             grid: [self.mesh.chunks_per_side, CHUNK_QUADS, shading as u32, 0],
             scale: [self.field.settings.spacing, self.field.settings.height, 0.0, 0.0],
         };
@@ -459,7 +469,7 @@ impl Chapter for TerrainChapter {
             "chunks" => (overhead_camera(&self.terrain.field, self.target.aspect()), Shading::Chunks),
             _ => (self.camera, Shading::Shaded),
         };
-        self.terrain.write_globals(&gpu.queue, &eye, shading);
+        self.terrain.write_globals(&gpu.queue, &eye, Sun::AFTERNOON, shading);
         if shading == Shading::Chunks {
             self.terrain.write_chunk_flags(&gpu.queue, &frustum);
         }

@@ -10,7 +10,7 @@ use common::{
 };
 use terrain::culling::Frustum;
 use terrain::heightfield::TerrainSettings;
-use terrain::{SKY, Shading, TerrainRenderer, start_camera};
+use terrain::{SKY, Shading, Sun, TerrainRenderer, start_camera};
 
 pub const VIEWS: &[View] = &[
     View { name: "default", about: "the terrain in a light haze, fading into the sky" },
@@ -100,10 +100,15 @@ impl FogBinding {
         Self { layout, buffer, group }
     }
 
-    /// Writes `settings`, with the sky as the fog colour.
+    /// Writes `settings`, with the clear colour `SKY` as the fog colour.
     pub fn write(&self, queue: &wgpu::Queue, settings: FogSettings) {
+        self.write_with_colour(queue, settings, [SKY.r as f32, SKY.g as f32, SKY.b as f32]);
+    }
+
+    /// Writes `settings` with fog of `colour` (linear RGB), for skies that change.
+    pub fn write_with_colour(&self, queue: &wgpu::Queue, settings: FogSettings, colour: [f32; 3]) {
         let fog = FogUniform {
-            colour: [SKY.r as f32, SKY.g as f32, SKY.b as f32, 1.0],
+            colour: [colour[0], colour[1], colour[2], 1.0],
             density: settings.density,
             gradient: settings.gradient,
             _padding: [0.0; 2],
@@ -184,7 +189,7 @@ impl Chapter for FogChapter {
         // Nothing past the opaque distance can be seen: stop drawing there.
         self.camera.far = self.fog.opaque_distance().min(MAX_FAR);
         self.fog_binding.write(&gpu.queue, self.fog);
-        self.terrain.write_globals(&gpu.queue, &self.camera, Shading::Shaded);
+        self.terrain.write_globals(&gpu.queue, &self.camera, Sun::AFTERNOON, Shading::Shaded);
 
         // Clear to the fog colour: where there is no ground, the fog's
         // "infinitely far" is what shows.

@@ -12,7 +12,7 @@ use common::{
 use fog::{FogBinding, FogSettings, MAX_FAR, fog_shader};
 use terrain::culling::Frustum;
 use terrain::heightfield::{HeightField, TerrainSettings};
-use terrain::{SKY, Shading, TerrainRenderer};
+use terrain::{SKY, Shading, Sun, TerrainRenderer};
 
 // ANCHOR: rng
 /// SplitMix64: a tiny, fast, seedable random number generator. Same seed,
@@ -268,6 +268,10 @@ fn rock_pipeline(
 pub struct InstancingChapter {
     pub terrain: TerrainRenderer,
     pub fog: FogSettings,
+    /// The light, and the fog's colour (linear RGB); chapter 06 moves both
+    /// with the time of day.
+    pub sun: Sun,
+    pub fog_colour: [f32; 3],
     pub setup: Setup,
     pub camera: Camera,
     pub controller: FlyController,
@@ -337,6 +341,11 @@ impl InstancingChapter {
                 }),
             }],
         })
+    }
+
+    /// The depth buffer of the last frame, for passes drawn after it (the sky).
+    pub fn depth(&self) -> &wgpu::TextureView {
+        &self.depth
     }
 
     // ANCHOR: draw_rocks
@@ -415,6 +424,8 @@ impl Chapter for InstancingChapter {
             camera: plain_camera(&terrain.field, target.aspect()),
             controller: FlyController { speed: 20.0, ..Default::default() },
             fog: FogSettings::HAZE,
+            sun: Sun::AFTERNOON,
+            fog_colour: [SKY.r as f32, SKY.g as f32, SKY.b as f32],
             setup: setup_for("default"),
             terrain,
             fog_binding,
@@ -457,8 +468,8 @@ impl Chapter for InstancingChapter {
             self.singles_group = Self::singles_group(&gpu.device, &layout, &self.singles);
         }
         self.camera.far = self.fog.opaque_distance().min(MAX_FAR);
-        self.fog_binding.write(&gpu.queue, self.fog);
-        self.terrain.write_globals(&gpu.queue, &self.camera, Shading::Shaded);
+        self.fog_binding.write_with_colour(&gpu.queue, self.fog, self.fog_colour);
+        self.terrain.write_globals(&gpu.queue, &self.camera, self.sun, Shading::Shaded);
 
         let mut pass = frame.scene_pass("terrain and rocks", SKY, &self.depth);
         // Group 0 (camera, sun) and group 1 (fog) serve the terrain and the rocks alike.
