@@ -97,6 +97,57 @@ fn night_sky(_: [f32; 3], pixel_id: u32) -> [f32; 3] {
     mix(background, mix([0.85, 0.88, 1.0], [1.0, 0.86, 0.7], tint), brightness)
 }
 
+/// Value noise that tiles: the lattice wraps every `period` cells, so the
+/// texture's right edge meets its left and its bottom its top.
+fn tileable_noise(x: f32, y: f32, period: i32, salt: u32) -> f32 {
+    let (cx, cy) = (x.floor() as i32, y.floor() as i32);
+    let (fx, fy) = (x - cx as f32, y - cy as f32);
+    let (sx, sy) = (fx * fx * (3.0 - 2.0 * fx), fy * fy * (3.0 - 2.0 * fy));
+    let corner = |dx: i32, dy: i32| {
+        let (ix, iy) = ((cx + dx).rem_euclid(period) as u32, (cy + dy).rem_euclid(period) as u32);
+        hash(ix.wrapping_mul(73_856_093) ^ iy.wrapping_mul(19_349_663) ^ salt.wrapping_mul(83_492_791))
+    };
+    let top = corner(0, 0) + (corner(1, 0) - corner(0, 0)) * sx;
+    let bottom = corner(0, 1) + (corner(1, 1) - corner(0, 1)) * sx;
+    top + (bottom - top) * sy
+}
+
+/// Three octaves of tileable noise at `u, v` in 0..1, in about 0..1.
+fn tileable_fbm(u: f32, v: f32, salt: u32) -> f32 {
+    [(4, 0.55), (8, 0.3), (16, 0.15)]
+        .iter()
+        .map(|&(period, weight)| weight * tileable_noise(u * period as f32, v * period as f32, period, salt))
+        .sum()
+}
+
+/// The water's textures, 256² and tileable, from one noise height field h:
+/// the DuDv map stores a distortion (du, dv) in red and green around 0.5;
+/// the normal map stores the surface normal of h with x in red, z in green
+/// and up in blue, each mapped from −1..1 to 0..1.
+fn paint_water(dir: &Path) -> anyhow::Result<()> {
+    const SIZE: u32 = 256;
+    std::fs::create_dir_all(dir)?;
+    let at = |x: u32, y: u32, salt| tileable_fbm(x as f32 / SIZE as f32, y as f32 / SIZE as f32, salt);
+    let dudv = image::RgbImage::from_fn(SIZE, SIZE, |x, y| {
+        let (du, dv) = (at(x, y, 1), at(x, y, 2));
+        image::Rgb([(du * 255.0).round() as u8, (dv * 255.0).round() as u8, 0])
+    });
+    let height = |x: u32, y: u32| at(x % SIZE, y % SIZE, 3);
+    let normal = image::RgbImage::from_fn(SIZE, SIZE, |x, y| {
+        // Central differences, wrapping at the edges like the texture does.
+        let dx = height(x + 1, y) - height(x + SIZE - 1, y);
+        let dz = height(x, y + 1) - height(x, y + SIZE - 1);
+        let n = normalize([-dx * 12.0, 1.0, -dz * 12.0]);
+        image::Rgb([n[0], n[2], n[1]].map(|c| ((c * 0.5 + 0.5) * 255.0).round() as u8))
+    });
+    for (name, image) in [("dudv.png", dudv), ("normal.png", normal)] {
+        let path = dir.join(name);
+        image.save(&path).with_context(|| format!("cannot write {}", path.display()))?;
+        println!("wrote {}", path.display());
+    }
+    Ok(())
+}
+
 fn paint_cubemap(dir: &Path, paint: impl Fn([f32; 3], u32) -> [f32; 3]) -> anyhow::Result<()> {
     std::fs::create_dir_all(dir)?;
     for (face_index, (name, direction)) in FACES.iter().enumerate() {
@@ -126,16 +177,60 @@ same bytes.
 |---|---|---|
 | `skybox/day/{px,nx,py,ny,pz,nz}.png` | Martian day atmosphere, 6 × 256² cube faces | horizon-to-zenith butterscotch gradient, darker below the horizon, faint value-noise dust; no sun (the sky shader draws it where the light is) |
 | `skybox/night/{px,nx,py,ny,pz,nz}.png` | star field, 6 × 256² cube faces | near black, stars where a per-pixel hash exceeds 0.9967, all the way round |
+| `water/dudv.png` | DuDv distortion map, 256², tileable | two independent tileable value-noise fields (3 octaves, periods 4, 8, 16) in red and green, 0.5 meaning no distortion |
+| `water/normal.png` | water normal map, 256², tileable | normals of a third tileable noise field by wrapped central differences; red = x, green = z, blue = up |
 
 Faces are in WebGPU's order (+x, −x, +y, −y, +z, −z); the direction
 through pixel (u, v) of each face is in `FACES` in the generator.
 ";
 
 pub fn generate() -> anyhow::Result<()> {
-    let root = crate::root().join("assets");
+    paint_all(&crate::root().join("assets"))
+}
+
+/// Paints every asset under `root` (a folder laid out like `assets/`).
+fn paint_all(root: &Path) -> anyhow::Result<()> {
     paint_cubemap(&root.join("skybox/day"), |d, _| day_sky(d))?;
     paint_cubemap(&root.join("skybox/night"), night_sky)?;
+    paint_water(&root.join("water"))?;
     std::fs::write(root.join("README.md"), PROVENANCE)?;
     println!("wrote {}", root.join("README.md").display());
     Ok(())
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// The committed assets are exactly what the generator paints: nobody
+    /// edited a texture by hand, and nobody changed the generator without
+    /// running it.
+    #[test]
+    fn committed_assets_match_the_generator() {
+        let fresh = std::env::temp_dir().join(format!("assets-{}", std::process::id()));
+        paint_all(&fresh).unwrap();
+        let committed = crate::root().join("assets");
+        let mut checked = 0;
+        let mut stack = vec![fresh.clone()];
+        while let Some(dir) = stack.pop() {
+            for entry in std::fs::read_dir(&dir).unwrap() {
+                let path = entry.unwrap().path();
+                if path.is_dir() {
+                    stack.push(path);
+                    continue;
+                }
+                let relative = path.strip_prefix(&fresh).unwrap();
+                let on_disk = std::fs::read(committed.join(relative))
+                    .unwrap_or_else(|e| panic!("assets/{}: {e}; run `cargo xtask assets`", relative.display()));
+                assert!(
+                    on_disk == std::fs::read(&path).unwrap(),
+                    "assets/{} differs from the generator's; run `cargo xtask assets`",
+                    relative.display()
+                );
+                checked += 1;
+            }
+        }
+        std::fs::remove_dir_all(fresh).unwrap();
+        assert_eq!(checked, 15, "12 cube faces, 2 water maps and the README");
+    }
 }
