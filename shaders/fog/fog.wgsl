@@ -3,7 +3,7 @@
 // file only decides how much of that colour survives the distance.
 // Chapter 05's rocks `#import fog::{fog, visibility}` to stand in the same air.
 #define_import_path fog
-#import terrain::{globals, VertexOutput, terrain_vertex, ground_colour, lit}
+#import terrain::{globals, VertexOutput, terrain_vertex, ground_colour, lit, clipped}
 
 // ANCHOR: uniform
 struct Fog {
@@ -37,6 +37,9 @@ fn visibility(distance: f32) -> f32 {
 
 @fragment
 fn fs_main(in: VertexOutput) -> @location(0) vec4<f32> {
+    if clipped(in.world_position) {
+        discard;
+    }
     let n = normalize(in.normal);
     let surface = lit(ground_colour(in.world_position.y, n), n);
     // Distance per fragment, not per vertex: see the chapter's text.

@@ -2,7 +2,7 @@
 // Every rock is the same 60 vertices; what makes each one itself is 32
 // bytes of instance data: where it stands, which way it faces, how it is
 // stretched, and how light its stone is.
-#import terrain::{globals, lit}
+#import terrain::{globals, lit, clipped}
 #import fog::{fog, visibility}
 
 // ANCHOR: rock
@@ -68,6 +68,9 @@ fn vs_single(@location(0) position: vec3<f32>, @location(1) normal: vec3<f32>) -
 
 @fragment
 fn fs_main(in: RockOutput) -> @location(0) vec4<f32> {
+    if clipped(in.world_position) {
+        discard;
+    }
     let basalt = vec3<f32>(0.16, 0.09, 0.06) * (0.6 + 0.9 * in.shade);
     let surface = lit(basalt, normalize(in.normal));
     let distance = length(in.world_position - globals.eye.xyz);

@@ -14,6 +14,9 @@ struct Globals {
     grid: vec4<u32>,
     // x: metres between samples, y: the terrain's height scale.
     scale: vec4<f32>,
+    // A clip plane (n, d): fragments where n · p + d < 0 are thrown away.
+    // (0, 0, 0, 1) keeps everything; chapter 07's water uses it.
+    clip: vec4<f32>,
 };
 @group(0) @binding(0) var<uniform> globals: Globals;
 // One flag per chunk for the `chunks` view: 1 if culling kept it.
@@ -101,8 +104,16 @@ fn chunk_colour(chunk: u32) -> vec3<f32> {
     return 0.25 + 0.6 * vec3<f32>(f32(x & 255u), f32((x >> 8u) & 255u), f32((x >> 16u) & 255u)) / 255.0;
 }
 
+// True where the clip plane cuts this point away.
+fn clipped(world_position: vec3<f32>) -> bool {
+    return dot(world_position, globals.clip.xyz) + globals.clip.w < 0.0;
+}
+
 @fragment
 fn fs_main(in: VertexOutput) -> @location(0) vec4<f32> {
+    if clipped(in.world_position) {
+        discard;
+    }
     let n = normalize(in.normal);
     let shaded = lit(ground_colour(in.world_position.y, n), n);
     switch globals.grid.z {

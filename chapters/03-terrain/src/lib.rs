@@ -9,7 +9,7 @@ pub mod noise;
 
 use std::time::Instant;
 
-use common::glam::Vec3;
+use common::glam::{Vec3, Vec4};
 use common::texture::{depth_test, depth_view};
 use common::wgpu::util::DeviceExt as _;
 use common::{
@@ -137,7 +137,12 @@ struct Globals {
     sun: [f32; 4],
     grid: [u32; 4],
     scale: [f32; 4],
+    clip: [f32; 4],
 }
+
+/// A clip plane (n, d): fragments with n · p + d < 0 are discarded. `KEEP_ALL`
+/// clips nothing; chapter 07 keeps what is above or below the water.
+pub const KEEP_ALL: Vec4 = Vec4::new(0.0, 0.0, 0.0, 1.0);
 
 /// How the terrain shader colours the ground (`globals.grid.z`).
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -322,12 +327,18 @@ impl TerrainRenderer {
 
     /// Writes the frame's uniforms: `eye` is the camera drawn from.
     pub fn write_globals(&self, queue: &wgpu::Queue, eye: &Camera, sun: Sun, shading: Shading) {
+        self.write_globals_clipped(queue, eye, sun, shading, KEEP_ALL);
+    }
+
+    /// `write_globals` with a clip plane (see [`KEEP_ALL`]).
+    pub fn write_globals_clipped(&self, queue: &wgpu::Queue, eye: &Camera, sun: Sun, shading: Shading, clip: Vec4) {
         let globals = Globals {
             view_proj: eye.view_projection().to_cols_array_2d(),
             eye: eye.position.extend(1.0).into(),
             sun: sun.direction.normalize().extend(sun.strength).into(),
             grid: [self.mesh.chunks_per_side, CHUNK_QUADS, shading as u32, 0],
             scale: [self.field.settings.spacing, self.field.settings.height, 0.0, 0.0],
+            clip: clip.into(),
         };
         queue.write_buffer(&self.globals, 0, bytemuck::bytes_of(&globals));
     }

@@ -2,7 +2,7 @@
 //! call; and the same rocks drawn one call at a time, to see why it matters.
 //! The scene is the Mars plain so far: terrain, fog and rocks.
 
-use common::glam::Vec3;
+use common::glam::{Vec3, Vec4};
 use common::texture::{depth_test, depth_view};
 use common::wgpu::util::DeviceExt as _;
 use common::{
@@ -12,7 +12,7 @@ use common::{
 use fog::{FogBinding, FogSettings, MAX_FAR, fog_shader};
 use terrain::culling::Frustum;
 use terrain::heightfield::{HeightField, TerrainSettings};
-use terrain::{SKY, Shading, Sun, TerrainRenderer};
+use terrain::{KEEP_ALL, SKY, Shading, Sun, TerrainRenderer};
 
 // ANCHOR: rng
 /// SplitMix64: a tiny, fast, seedable random number generator. Same seed,
@@ -291,6 +291,8 @@ pub struct InstancingChapter {
     /// Draw calls in the last frame.
     pub draw_calls: u32,
     regenerate_requested: bool,
+    /// The frustum of the last `prepare`, for culling chunks in `draw`.
+    frustum: Frustum,
 }
 
 impl InstancingChapter {
@@ -343,9 +345,40 @@ impl InstancingChapter {
         })
     }
 
-    /// The depth buffer of the last frame, for passes drawn after it (the sky).
-    pub fn depth(&self) -> &wgpu::TextureView {
-        &self.depth
+    /// The depth buffer the main pass draws with (a cheap handle: wgpu views
+    /// are reference-counted).
+    pub fn depth(&self) -> wgpu::TextureView {
+        self.depth.clone()
+    }
+
+    /// Writes the uniforms for drawing the plain from `camera`, keeping
+    /// what `clip` keeps (`KEEP_ALL` for everything). Later chapters draw the
+    /// plain several times a frame, from several cameras, through this.
+    pub fn prepare(&mut self, gpu: &Gpu, camera: &Camera, clip: Vec4) {
+        if std::mem::take(&mut self.regenerate_requested) {
+            self.terrain.regenerate(gpu);
+            // The rocks must follow the new ground.
+            (self.instances, self.singles) = Self::upload_rocks(&gpu.device, &self.terrain.field, self.single_stride);
+            let layout = self.rock_pipelines.one_per_draw.get_bind_group_layout(2);
+            self.singles_group = Self::singles_group(&gpu.device, &layout, &self.singles);
+        }
+        self.camera.far = self.fog.opaque_distance().min(MAX_FAR);
+        let camera = Camera { far: self.camera.far, ..*camera };
+        self.fog_binding.write_with_colour(&gpu.queue, self.fog, self.fog_colour);
+        self.terrain.write_globals_clipped(&gpu.queue, &camera, self.sun, Shading::Shaded, clip);
+        self.frustum = Frustum::from_view_projection(camera.view_projection());
+    }
+
+    /// Draws the terrain and the rocks as prepared into `pass`.
+    pub fn draw(&mut self, pass: &mut wgpu::RenderPass<'_>) {
+        // Group 0 (camera, sun) and group 1 (fog) serve the terrain and the rocks alike.
+        pass.set_bind_group(1, &self.fog_binding.group, &[]);
+        self.terrain.bind(pass);
+        if self.setup.terrain {
+            pass.set_pipeline(&self.terrain_pipeline);
+            self.terrain.draw(pass, &self.frustum);
+        }
+        self.draw_calls = self.draw_rocks(pass) + u32::from(self.setup.terrain);
     }
 
     // ANCHOR: draw_rocks
@@ -441,6 +474,7 @@ impl Chapter for InstancingChapter {
             target,
             draw_calls: 0,
             regenerate_requested: false,
+            frustum: Frustum::from_view_projection(Camera::looking_at(Vec3::ZERO, Vec3::NEG_Z, 1.0).view_projection()),
         })
     }
 
@@ -460,26 +494,10 @@ impl Chapter for InstancingChapter {
 
     // ANCHOR: render
     fn render(&mut self, gpu: &Gpu, frame: &mut Frame) {
-        if std::mem::take(&mut self.regenerate_requested) {
-            self.terrain.regenerate(gpu);
-            // The rocks must follow the new ground.
-            (self.instances, self.singles) = Self::upload_rocks(&gpu.device, &self.terrain.field, self.single_stride);
-            let layout = self.rock_pipelines.one_per_draw.get_bind_group_layout(2);
-            self.singles_group = Self::singles_group(&gpu.device, &layout, &self.singles);
-        }
-        self.camera.far = self.fog.opaque_distance().min(MAX_FAR);
-        self.fog_binding.write_with_colour(&gpu.queue, self.fog, self.fog_colour);
-        self.terrain.write_globals(&gpu.queue, &self.camera, self.sun, Shading::Shaded);
-
+        let camera = self.camera;
+        self.prepare(gpu, &camera, KEEP_ALL);
         let mut pass = frame.scene_pass("terrain and rocks", SKY, &self.depth);
-        // Group 0 (camera, sun) and group 1 (fog) serve the terrain and the rocks alike.
-        pass.set_bind_group(1, &self.fog_binding.group, &[]);
-        self.terrain.bind(&mut pass);
-        if self.setup.terrain {
-            pass.set_pipeline(&self.terrain_pipeline);
-            self.terrain.draw(&mut pass, &Frustum::from_view_projection(self.camera.view_projection()));
-        }
-        self.draw_calls = self.draw_rocks(&mut pass) + u32::from(self.setup.terrain);
+        self.draw(&mut pass);
     }
     // ANCHOR_END: render
 

@@ -5,12 +5,12 @@
 
 use std::f32::consts::TAU;
 
-use common::glam::{Mat4, Quat, Vec3};
+use common::glam::{Mat4, Quat, Vec3, Vec4};
 use common::texture::{ColorSpace, Texture, cubemap, decode_rgba};
 use common::wgpu::util::DeviceExt as _;
-use common::{Chapter, Frame, Gpu, Input, ShaderError, ShaderFile, Target, View, anyhow, egui, shader, wgpu};
+use common::{Camera, Chapter, Frame, Gpu, Input, ShaderError, ShaderFile, Target, View, anyhow, egui, shader, wgpu};
 use instancing::InstancingChapter;
-use terrain::Sun;
+use terrain::{KEEP_ALL, Sun};
 
 // ANCHOR: faces
 /// One face of a sky under `assets/skybox/`: its name, for errors, and its
@@ -150,6 +150,48 @@ pub struct SkyboxChapter {
     pipeline: wgpu::RenderPipeline,
     format: wgpu::TextureFormat,
     phase: f32,
+}
+
+/// The clear colour under the sky: never seen, since the sky covers it.
+fn instancing_clear() -> wgpu::Color {
+    terrain::SKY
+}
+
+impl SkyboxChapter {
+    // ANCHOR: time_of_day
+    /// Sets the time of day from scene time: the sun, the light on the
+    /// ground, and the fog colour between the night and day horizons.
+    pub fn set_time(&mut self, time: f32) {
+        self.phase = (self.start_phase + time / self.day_seconds).rem_euclid(1.0);
+        let sun = sun_at(self.phase);
+        let blend = day_blend(sun);
+        let [day, night] = self.horizons;
+        self.plain.sun = sun;
+        self.plain.fog_colour = [0, 1, 2].map(|c| night[c] + (day[c] - night[c]) * blend);
+    }
+    // ANCHOR_END: time_of_day
+
+    /// Writes the uniforms for drawing the plain and the sky from `camera`.
+    pub fn prepare(&mut self, gpu: &Gpu, camera: &Camera, clip: Vec4) {
+        self.plain.prepare(gpu, camera, clip);
+        let turn_only = Mat4::look_to_rh(Vec3::ZERO, camera.forward(), Vec3::Y);
+        let sun = self.plain.sun;
+        let uniform = SkyUniform {
+            clip_to_world: (camera.projection() * turn_only).inverse().to_cols_array_2d(),
+            world_to_day: Mat4::from_quat(dust_drift(self.phase).inverse()).to_cols_array_2d(),
+            world_to_stars: Mat4::from_quat(celestial_turn(self.phase).inverse()).to_cols_array_2d(),
+            sun: sun.direction.normalize().extend(day_blend(sun)).into(),
+        };
+        gpu.queue.write_buffer(&self.uniform, 0, bytemuck::bytes_of(&uniform));
+    }
+
+    /// Draws the plain, then the sky wherever the plain left the depth at 1.
+    pub fn draw(&mut self, pass: &mut wgpu::RenderPass<'_>) {
+        self.plain.draw(pass);
+        pass.set_pipeline(&self.pipeline);
+        pass.set_bind_group(0, &self.bind_group, &[]);
+        pass.draw(0..3, 0..1);
+    }
 }
 
 // ANCHOR: pipeline
@@ -298,44 +340,12 @@ impl Chapter for SkyboxChapter {
 
     // ANCHOR: render
     fn render(&mut self, gpu: &Gpu, frame: &mut Frame) {
-        self.phase = (self.start_phase + frame.time / self.day_seconds).rem_euclid(1.0);
-        let sun = sun_at(self.phase);
-        let blend = day_blend(sun);
-        let [day, night] = self.horizons;
-        self.plain.sun = sun;
-        self.plain.fog_colour = [0, 1, 2].map(|c| night[c] + (day[c] - night[c]) * blend);
-        // The ground and the rocks, lit by this sun, in this fog.
-        self.plain.render(gpu, frame);
-
-        // Then the sky, wherever they left the depth buffer at 1.
+        self.set_time(frame.time);
         let camera = self.plain.camera;
-        let turn_only = Mat4::look_to_rh(Vec3::ZERO, camera.forward(), Vec3::Y);
-        let uniform = SkyUniform {
-            clip_to_world: (camera.projection() * turn_only).inverse().to_cols_array_2d(),
-            world_to_day: Mat4::from_quat(dust_drift(self.phase).inverse()).to_cols_array_2d(),
-            world_to_stars: Mat4::from_quat(celestial_turn(self.phase).inverse()).to_cols_array_2d(),
-            sun: sun.direction.normalize().extend(blend).into(),
-        };
-        gpu.queue.write_buffer(&self.uniform, 0, bytemuck::bytes_of(&uniform));
-        let mut pass = frame.encoder.begin_render_pass(&wgpu::RenderPassDescriptor {
-            label: Some("sky"),
-            color_attachments: &[Some(wgpu::RenderPassColorAttachment {
-                view: frame.target,
-                depth_slice: None,
-                resolve_target: None,
-                ops: wgpu::Operations { load: wgpu::LoadOp::Load, store: wgpu::StoreOp::Store },
-            })],
-            depth_stencil_attachment: Some(wgpu::RenderPassDepthStencilAttachment {
-                view: self.plain.depth(),
-                depth_ops: Some(wgpu::Operations { load: wgpu::LoadOp::Load, store: wgpu::StoreOp::Store }),
-                stencil_ops: None,
-            }),
-            timestamp_writes: frame.timer.pass("sky"),
-            ..Default::default()
-        });
-        pass.set_pipeline(&self.pipeline);
-        pass.set_bind_group(0, &self.bind_group, &[]);
-        pass.draw(0..3, 0..1);
+        self.prepare(gpu, &camera, KEEP_ALL);
+        let depth = self.plain.depth();
+        let mut pass = frame.scene_pass("plain and sky", instancing_clear(), &depth);
+        self.draw(&mut pass);
     }
     // ANCHOR_END: render
 
