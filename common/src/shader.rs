@@ -71,13 +71,17 @@ impl ShaderFile {
     }
 
     /// Composes the current text with its imports, validates it, and
-    /// creates a shader module from it.
+    /// creates a shader module from it. On a device with WebGPU's
+    /// `clip_distances` feature, `CLIP_DISTANCES` is defined for
+    /// `#ifdef`s in the WGSL (chapter 07 clips with it).
     pub fn module(&self, device: &wgpu::Device) -> Result<wgpu::ShaderModule, ShaderError> {
         let mut imports = Vec::new();
         for import in self.imports {
             imports.push((import.path, import.source()?));
         }
-        let module = compose(&self.source()?, self.path, &imports)?;
+        let clip_distances = device.features().contains(wgpu::Features::CLIP_DISTANCES);
+        let defs: &[&str] = if clip_distances { &["CLIP_DISTANCES"] } else { &[] };
+        let module = compose_with(&self.source()?, self.path, &imports, defs)?;
         Ok(device.create_shader_module(wgpu::ShaderModuleDescriptor {
             label: Some(self.path),
             source: wgpu::ShaderSource::Naga(std::borrow::Cow::Owned(module)),
@@ -91,13 +95,27 @@ impl ShaderFile {
 /// front end wgpu uses. Errors are codespan diagnostics naming the file and
 /// line where the problem is, in whichever module that is.
 pub fn compose(source: &str, path: &str, imports: &[(&str, String)]) -> Result<naga::Module, ShaderError> {
-    use naga_oil::compose::{ComposableModuleDescriptor, Composer, NagaModuleDescriptor};
-    let mut composer = Composer::default();
+    compose_with(source, path, imports, &[])
+}
+
+/// `compose`, with `defs` defined for the shaders' `#ifdef`s.
+pub fn compose_with(
+    source: &str,
+    path: &str,
+    imports: &[(&str, String)],
+    defs: &[&str],
+) -> Result<naga::Module, ShaderError> {
+    use naga_oil::compose::{ComposableModuleDescriptor, Composer, NagaModuleDescriptor, ShaderDefValue};
+    let shader_defs: std::collections::HashMap<String, ShaderDefValue> =
+        defs.iter().map(|d| (d.to_string(), ShaderDefValue::Bool(true))).collect();
+    // Validate what the GPU may run: clip distances are an optional feature.
+    let mut composer = Composer::default().with_capabilities(naga::valid::Capabilities::CLIP_DISTANCES);
     for (import_path, text) in imports {
         let added = composer
             .add_composable_module(ComposableModuleDescriptor {
                 source: text,
                 file_path: import_path,
+                shader_defs: shader_defs.clone(),
                 ..Default::default()
             })
             .map(drop);
@@ -112,7 +130,7 @@ pub fn compose(source: &str, path: &str, imports: &[(&str, String)]) -> Result<n
         .collect::<Vec<_>>()
         .join("\n");
     composer
-        .make_naga_module(NagaModuleDescriptor { source: &source, file_path: path, ..Default::default() })
+        .make_naga_module(NagaModuleDescriptor { source: &source, file_path: path, shader_defs, ..Default::default() })
         .map_err(|e| ShaderError(e.emit_to_string(&composer)))
 }
 // ANCHOR_END: compose

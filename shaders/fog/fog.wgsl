@@ -1,9 +1,13 @@
+// Lets a vertex shader write @builtin(clip_distances); only used under
+// #ifdef CLIP_DISTANCES, which is defined when the device has the feature.
+enable clip_distances;
+
 // Chapter 04: exponential distance fog over chapter 03's terrain.
 // The terrain module provides the vertices and the ground's colour; this
 // file only decides how much of that colour survives the distance.
 // Chapter 05's rocks `#import fog::{fog, visibility}` to stand in the same air.
 #define_import_path fog
-#import terrain::{globals, VertexOutput, terrain_vertex, ground_colour, lit, clipped}
+#import terrain::{globals, VertexOutput, FragmentInput, terrain_vertex, ground_colour, lit, clipped}
 
 // ANCHOR: uniform
 struct Fog {
@@ -36,7 +40,7 @@ fn visibility(distance: f32) -> f32 {
 }
 
 @fragment
-fn fs_main(in: VertexOutput) -> @location(0) vec4<f32> {
+fn fs_main(in: FragmentInput) -> @location(0) vec4<f32> {
     if clipped(in.world_position) {
         discard;
     }

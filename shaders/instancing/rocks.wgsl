@@ -1,8 +1,12 @@
+// Lets a vertex shader write @builtin(clip_distances); only used under
+// #ifdef CLIP_DISTANCES, which is defined when the device has the feature.
+enable clip_distances;
+
 // Chapter 05: very many rocks from one mesh.
 // Every rock is the same 60 vertices; what makes each one itself is 32
 // bytes of instance data: where it stands, which way it faces, how it is
 // stretched, and how light its stone is.
-#import terrain::{globals, lit, clipped}
+#import terrain::{globals, lit, clipped, plane_distance}
 #import fog::{fog, visibility}
 
 // ANCHOR: rock
@@ -14,6 +18,17 @@ struct Rock {
 };
 
 struct RockOutput {
+    @builtin(position) clip_position: vec4<f32>,
+#ifdef CLIP_DISTANCES
+    @builtin(clip_distances) clip_distances: array<f32, 1>,
+#endif
+    @location(0) world_position: vec3<f32>,
+    @location(1) normal: vec3<f32>,
+    @location(2) shade: f32,
+};
+
+// What the fragment shader reads (clip distances are for vertex shaders only).
+struct RockInput {
     @builtin(position) clip_position: vec4<f32>,
     @location(0) world_position: vec3<f32>,
     @location(1) normal: vec3<f32>,
@@ -37,6 +52,9 @@ fn rock_vertex(rock: Rock, position: vec3<f32>, normal: vec3<f32>) -> RockOutput
     // normal matrix, worked out by hand.
     out.normal = turn(normal / rock.scale_shade.xyz, yaw);
     out.shade = rock.scale_shade.w;
+#ifdef CLIP_DISTANCES
+    out.clip_distances[0] = plane_distance(world);
+#endif
     return out;
 }
 // ANCHOR_END: rock
@@ -67,7 +85,7 @@ fn vs_single(@location(0) position: vec3<f32>, @location(1) normal: vec3<f32>) -
 // ANCHOR_END: vs_single
 
 @fragment
-fn fs_main(in: RockOutput) -> @location(0) vec4<f32> {
+fn fs_main(in: RockInput) -> @location(0) vec4<f32> {
     if clipped(in.world_position) {
         discard;
     }
@@ -79,6 +97,6 @@ fn fs_main(in: RockOutput) -> @location(0) vec4<f32> {
 
 // The floor of the cost: the same vertices, no lighting, no fog.
 @fragment
-fn fs_flat(in: RockOutput) -> @location(0) vec4<f32> {
+fn fs_flat(in: RockInput) -> @location(0) vec4<f32> {
     return vec4<f32>(0.2, 0.1, 0.07, 1.0);
 }

@@ -1,3 +1,7 @@
+// Lets a vertex shader write @builtin(clip_distances); only used under
+// #ifdef CLIP_DISTANCES, which is defined when the device has the feature.
+enable clip_distances;
+
 // Chapter 03: a chunked height-map terrain.
 // Vertices carry only a height and a packed normal; x and z come from the
 // vertex's place in its chunk and the chunk's place in the world.
@@ -24,9 +28,23 @@ struct Globals {
 
 struct VertexOutput {
     @builtin(position) clip_position: vec4<f32>,
+#ifdef CLIP_DISTANCES
+    // Where the GPU has the feature, it clips against the plane itself.
+    @builtin(clip_distances) clip_distances: array<f32, 1>,
+#endif
     @location(0) world_position: vec3<f32>,
     @location(1) normal: vec3<f32>,
     // Grid coordinates in samples, for the wireframe.
+    @location(2) grid: vec2<f32>,
+    @location(3) @interpolate(flat) chunk: u32,
+};
+
+// What the fragment shader reads: the same locations, without the clip
+// distances, which only a vertex shader may write.
+struct FragmentInput {
+    @builtin(position) clip_position: vec4<f32>,
+    @location(0) world_position: vec3<f32>,
+    @location(1) normal: vec3<f32>,
     @location(2) grid: vec2<f32>,
     @location(3) @interpolate(flat) chunk: u32,
 };
@@ -57,6 +75,9 @@ fn terrain_vertex(vertex_index: u32, chunk: u32, height: f32, normal: vec4<f32>)
     out.normal = normal.xyz;
     out.grid = vec2<f32>(grid);
     out.chunk = chunk;
+#ifdef CLIP_DISTANCES
+    out.clip_distances[0] = plane_distance(world);
+#endif
     return out;
 }
 // ANCHOR_END: vs_main
@@ -104,13 +125,25 @@ fn chunk_colour(chunk: u32) -> vec3<f32> {
     return 0.25 + 0.6 * vec3<f32>(f32(x & 255u), f32((x >> 8u) & 255u), f32((x >> 16u) & 255u)) / 255.0;
 }
 
-// True where the clip plane cuts this point away.
-fn clipped(world_position: vec3<f32>) -> bool {
-    return dot(world_position, globals.clip.xyz) + globals.clip.w < 0.0;
+// ANCHOR: clip
+// How far a point is on the kept side of the clip plane (negative: cut).
+fn plane_distance(world_position: vec3<f32>) -> f32 {
+    return dot(world_position, globals.clip.xyz) + globals.clip.w;
 }
 
+// True where the clip plane cuts this fragment away and the fragment shader
+// must discard it. With clip distances the rasteriser has already done it.
+fn clipped(world_position: vec3<f32>) -> bool {
+#ifdef CLIP_DISTANCES
+    return false;
+#else
+    return plane_distance(world_position) < 0.0;
+#endif
+}
+// ANCHOR_END: clip
+
 @fragment
-fn fs_main(in: VertexOutput) -> @location(0) vec4<f32> {
+fn fs_main(in: FragmentInput) -> @location(0) vec4<f32> {
     if clipped(in.world_position) {
         discard;
     }

@@ -45,6 +45,7 @@ pub fn chapters() -> Vec<Entry> {
         entry::<fog::FogChapter>(),
         entry::<instancing::InstancingChapter>(),
         entry::<skybox::SkyboxChapter>(),
+        entry::<water::WaterChapter>(),
     ]
 }
 

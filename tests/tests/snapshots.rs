@@ -33,6 +33,11 @@ fn skybox() {
     snapshots::assert_chapter("skybox");
 }
 
+#[test]
+fn water() {
+    snapshots::assert_chapter("water");
+}
+
 /// A chapter crate missing from the registry would never be snapshot-tested.
 #[test]
 fn every_chapter_crate_is_registered() {

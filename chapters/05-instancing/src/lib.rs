@@ -275,7 +275,7 @@ pub struct InstancingChapter {
     pub setup: Setup,
     pub camera: Camera,
     pub controller: FlyController,
-    fog_binding: FogBinding,
+    pub fog_binding: FogBinding,
     rock: Mesh,
     instances: wgpu::Buffer,
     /// The first `MAX_ONE_PER_DRAW` rocks again, one per 256-byte slot, for

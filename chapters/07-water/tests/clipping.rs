@@ -1,0 +1,24 @@
+//! The two ways of clipping give the same picture: WebGPU clip distances
+//! (where the adapter has them) and a discard in the fragment shader.
+
+use common::headless::{RenderRequest, render_image};
+use common::snapshot::{Tolerance, compare};
+use common::{Chapter, Gpu, GpuNeeds, chapter::view_index, wgpu};
+use water::WaterChapter;
+
+#[test]
+fn clip_distances_and_discard_agree() {
+    let with = Gpu::headless(GpuNeeds { required: wgpu::Features::CLIP_DISTANCES, optional: wgpu::Features::empty() })
+        .expect("lavapipe has clip distances");
+    let without = Gpu::headless(GpuNeeds::default()).unwrap();
+    assert!(!without.device.features().contains(wgpu::Features::CLIP_DISTANCES));
+    // The refraction picture is all clipping: everything above the water is cut away.
+    let view = view_index::<WaterChapter>("refraction").unwrap();
+    let request = RenderRequest { width: 320, height: 180, time: WaterChapter::SNAPSHOT_TIME, view };
+    let (a, b) = (
+        render_image::<WaterChapter>(&with, &request).unwrap(),
+        render_image::<WaterChapter>(&without, &request).unwrap(),
+    );
+    let (comparison, _) = compare(&a, &b);
+    assert!(comparison.passes(Tolerance::DEFAULT), "{comparison}");
+}

@@ -1,0 +1,131 @@
+// Lets a vertex shader write @builtin(clip_distances); only used under
+// #ifdef CLIP_DISTANCES, which is defined when the device has the feature.
+enable clip_distances;
+
+// Chapter 07: a lake. The surface is a grid moved by eight sine waves in
+// the vertex shader; its colour comes from two pictures of the scene,
+// one reflected in the water and one seen through it, mixed by Fresnel.
+#import terrain::globals
+#import fog::{fog, visibility}
+
+// ANCHOR: uniforms
+struct Water {
+    // x: the water's mean level (m), y: scene time (s), z: wave strength
+    // (0 flat), w: 1 to mix by Fresnel, 0 for a fixed half-and-half.
+    level_time: vec4<f32>,
+    // x: DuDv distortion strength, y: metres per ripple-texture repeat,
+    // z, w: the main camera's near and far planes.
+    ripples: vec4<f32>,
+    // Eight waves: xy direction, z amplitude (m), w wavelength (m)…
+    waves: array<vec4<f32>, 8>,
+    // …and their speeds (m/s), four to a vec4.
+    speeds: array<vec4<f32>, 2>,
+};
+@group(2) @binding(0) var<uniform> water: Water;
+@group(2) @binding(1) var reflection_texture: texture_2d<f32>;
+@group(2) @binding(2) var refraction_texture: texture_2d<f32>;
+@group(2) @binding(3) var refraction_depth: texture_depth_2d;
+@group(2) @binding(4) var dudv_map: texture_2d<f32>;
+@group(2) @binding(5) var normal_map: texture_2d<f32>;
+@group(2) @binding(6) var repeat_sampler: sampler;
+@group(2) @binding(7) var clamp_sampler: sampler;
+// ANCHOR_END: uniforms
+
+struct WaterOutput {
+    @builtin(position) clip_position: vec4<f32>,
+    @location(0) world_position: vec3<f32>,
+    @location(1) normal: vec3<f32>,
+    // The clip position again, interpolated: the projective texture coordinates.
+    @location(2) clip: vec4<f32>,
+};
+
+// ANCHOR: waves
+// h = Σ A sin(k (d · p − c t)); its slope, for the normal, is
+// Σ A k d cos(k (d · p − c t)). The same sums as waves.rs on the CPU.
+@vertex
+fn vs_water(@location(0) position: vec3<f32>) -> WaterOutput {
+    let p = position.xz;
+    var height = 0.0;
+    var slope = vec2<f32>(0.0);
+    for (var i = 0u; i < 8u; i++) {
+        let wave = water.waves[i];
+        let speed = water.speeds[i / 4u][i % 4u];
+        let k = 6.2831853 / wave.w;
+        let phase = k * (dot(wave.xy, p) - speed * water.level_time.y);
+        height += wave.z * sin(phase);
+        slope += wave.z * k * cos(phase) * wave.xy;
+    }
+    let strength = water.level_time.z;
+    let world = vec3<f32>(p.x, water.level_time.x + strength * height, p.y);
+    var out: WaterOutput;
+    out.clip_position = globals.view_proj * vec4<f32>(world, 1.0);
+    out.world_position = world;
+    out.normal = normalize(vec3<f32>(-strength * slope.x, 1.0, -strength * slope.y));
+    out.clip = out.clip_position;
+    return out;
+}
+// ANCHOR_END: waves
+
+// Distance from the camera along its view, from a depth-buffer value.
+fn linear_depth(depth: f32) -> f32 {
+    let near = water.ripples.z;
+    let far = water.ripples.w;
+    return near * far / (far - depth * (far - near));
+}
+
+// ANCHOR: fs_water
+@fragment
+fn fs_water(in: WaterOutput) -> @location(0) vec4<f32> {
+    // Projective texturing: where this fragment lands on screen is where to
+    // read the refraction picture; the reflection picture was taken by a
+    // camera below the water, upside down, so its v runs the other way.
+    let ndc = in.clip.xy / in.clip.w;
+    var refraction_uv = vec2<f32>(0.5 + 0.5 * ndc.x, 0.5 - 0.5 * ndc.y);
+    var reflection_uv = vec2<f32>(0.5 + 0.5 * ndc.x, 0.5 + 0.5 * ndc.y);
+
+    // How deep the water is here: the refraction's depth buffer holds the
+    // lake bed, the fragment's own depth the surface.
+    let size = vec2<f32>(textureDimensions(refraction_depth));
+    let bed = textureLoad(refraction_depth, vec2<i32>(refraction_uv * (size - 1.0)), 0);
+    let depth = linear_depth(bed) - linear_depth(in.clip_position.z);
+    let shallow = clamp(depth / 1.5, 0.0, 1.0);
+
+    // Ripples: the DuDv map, read twice, scrolling two ways, bends both
+    // pictures, less so near the shore.
+    let t = water.level_time.y;
+    let tile = in.world_position.xz / water.ripples.y;
+    let dudv = textureSample(dudv_map, repeat_sampler, tile + vec2<f32>(0.02 * t, 0.0)).rg * 2.0 - 1.0
+        + textureSample(dudv_map, repeat_sampler, tile * 0.7 + vec2<f32>(-0.013 * t, 0.017 * t)).rg * 2.0 - 1.0;
+    let distortion = dudv * water.ripples.x * shallow;
+    refraction_uv = clamp(refraction_uv + distortion, vec2<f32>(0.001), vec2<f32>(0.999));
+    reflection_uv = clamp(reflection_uv + distortion, vec2<f32>(0.001), vec2<f32>(0.999));
+    var refraction = textureSample(refraction_texture, clamp_sampler, refraction_uv).rgb;
+    let reflection = textureSample(reflection_texture, clamp_sampler, reflection_uv).rgb;
+    // Deeper water is murkier.
+    refraction = mix(refraction, vec3<f32>(0.04, 0.09, 0.10), clamp(depth / 12.0, 0.0, 0.75));
+
+    // Small ripples from the normal map (red x, green z, blue up), on top
+    // of the waves' own normal.
+    let ripple = textureSample(normal_map, repeat_sampler, tile * 2.0 + distortion * 4.0).rgb * 2.0 - 1.0;
+    let n = normalize(in.normal + vec3<f32>(ripple.x, 0.0, ripple.y) * 0.35);
+    let to_eye = normalize(globals.eye.xyz - in.world_position);
+
+    // Fresnel (Schlick's approximation): water reflects 2 % looking
+    // straight down and nearly everything at a grazing angle.
+    var fresnel = 0.5;
+    if water.level_time.w > 0.5 {
+        fresnel = 0.02 + 0.98 * pow(1.0 - max(dot(to_eye, n), 0.0), 5.0);
+    }
+    var colour = mix(refraction, reflection, fresnel);
+
+    // The sun's highlight, fading with the sun itself at dusk.
+    let mirrored = reflect(-globals.sun.xyz, n);
+    let highlight = pow(max(dot(mirrored, to_eye), 0.0), 160.0) * globals.sun.w;
+    colour += vec3<f32>(1.0, 0.95, 0.85) * highlight * shallow;
+
+    // Fog like everything else, and soft edges where the water is shallow.
+    let distance = length(globals.eye.xyz - in.world_position);
+    colour = mix(fog.colour.rgb, colour, visibility(distance));
+    return vec4<f32>(colour, shallow);
+}
+// ANCHOR_END: fs_water
