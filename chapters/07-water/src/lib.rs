@@ -561,7 +561,11 @@ impl Chapter for WaterChapter {
     fn ui(&mut self, ui: &mut egui::Ui) {
         let s = &mut self.settings;
         ui.add(egui::Slider::new(&mut s.resolution, 0.25..=1.0).text("reflection/refraction resolution"));
-        ui.add(egui::Slider::new(&mut s.wave_strength, 0.0..=4.0).text("wave strength (0 = flat)"));
+        let mut waves_on = s.wave_strength > 0.0;
+        if ui.checkbox(&mut waves_on, "waves (off: the flat surface, textures only)").changed() {
+            s.wave_strength = if waves_on { 1.0 } else { 0.0 };
+        }
+        ui.add(egui::Slider::new(&mut s.wave_strength, 0.0..=4.0).text("wave strength"));
         ui.add(egui::Slider::new(&mut s.ripples, 0.0..=0.05).text("ripple distortion"));
         ui.checkbox(&mut s.fresnel, "Fresnel");
         ui.label(format!(
