@@ -55,6 +55,15 @@ fn root() -> PathBuf {
     Path::new(env!("CARGO_MANIFEST_DIR")).parent().expect("xtask is inside the workspace").to_path_buf()
 }
 
+/// Where cargo puts its builds: `CARGO_TARGET_DIR` if set (relative to the
+/// workspace root, where xtask runs cargo), else `target/`.
+fn target_dir() -> PathBuf {
+    match std::env::var_os("CARGO_TARGET_DIR") {
+        Some(dir) => root().join(dir),
+        None => root().join("target"),
+    }
+}
+
 /// Runs cargo with `args` in the workspace root, echoing the command.
 fn cargo(args: &[&str]) -> anyhow::Result<()> {
     println!("\n$ cargo {}", args.join(" "));
@@ -99,7 +108,7 @@ fn window_test() -> anyhow::Result<()> {
     cargo(&["build", "--workspace", "--bins"])?;
     let (mut passed, mut failed) = (0, 0);
     for chapter in chapter_names()? {
-        let binary = root().join("target/debug").join(&chapter);
+        let binary = target_dir().join("debug").join(&chapter);
         let status = Command::new("xvfb-run")
             .args(["-a", "-s", "-screen 0 1024x768x24"])
             .arg(&binary)
@@ -166,7 +175,7 @@ fn bench(args: &[String]) -> anyhow::Result<()> {
     let out_dir = root().join("book/src/bench");
     std::fs::create_dir_all(&out_dir)?;
     for chapter in &chosen {
-        let binary = root().join("target/release").join(chapter);
+        let binary = target_dir().join("release").join(chapter);
         let command = format!("{chapter} --bench --size 1280x720");
         println!("\n$ {command}");
         let output = Command::new(&binary)
