@@ -53,22 +53,50 @@ impl Frame<'_> {
         clear: wgpu::Color,
         depth: &wgpu::TextureView,
     ) -> wgpu::RenderPass<'_> {
-        self.encoder.begin_render_pass(&wgpu::RenderPassDescriptor {
-            label: Some(label),
-            color_attachments: &[Some(wgpu::RenderPassColorAttachment {
-                view: self.target,
-                depth_slice: None,
-                resolve_target: None,
-                ops: wgpu::Operations { load: wgpu::LoadOp::Clear(clear), store: wgpu::StoreOp::Store },
-            })],
-            depth_stencil_attachment: Some(wgpu::RenderPassDepthStencilAttachment {
-                view: depth,
-                depth_ops: Some(wgpu::Operations { load: wgpu::LoadOp::Clear(1.0), store: wgpu::StoreOp::Store }),
-                stencil_ops: None,
-            }),
-            timestamp_writes: self.timer.pass(label),
-            ..Default::default()
-        })
+        scene_pass(self.encoder, self.timer, label, self.target, clear, depth)
+    }
+}
+
+/// [`Frame::scene_pass`] into any target, for pictures a chapter renders
+/// besides the frame itself (chapter 07's reflection and refraction).
+pub fn scene_pass<'e>(
+    encoder: &'e mut wgpu::CommandEncoder,
+    timer: &PassTimer,
+    label: &'static str,
+    target: &wgpu::TextureView,
+    clear: wgpu::Color,
+    depth: &wgpu::TextureView,
+) -> wgpu::RenderPass<'e> {
+    encoder.begin_render_pass(&wgpu::RenderPassDescriptor {
+        label: Some(label),
+        color_attachments: &[Some(wgpu::RenderPassColorAttachment {
+            view: target,
+            depth_slice: None,
+            resolve_target: None,
+            ops: wgpu::Operations { load: wgpu::LoadOp::Clear(clear), store: wgpu::StoreOp::Store },
+        })],
+        depth_stencil_attachment: Some(wgpu::RenderPassDepthStencilAttachment {
+            view: depth,
+            depth_ops: Some(wgpu::Operations { load: wgpu::LoadOp::Clear(1.0), store: wgpu::StoreOp::Store }),
+            stencil_ops: None,
+        }),
+        timestamp_writes: timer.pass(label),
+        ..Default::default()
+    })
+}
+
+/// A bind-group layout entry for a uniform buffer of `size` bytes (chapter 02
+/// spells these out; later chapters call this).
+pub fn uniform_entry(binding: u32, visibility: wgpu::ShaderStages, size: usize) -> wgpu::BindGroupLayoutEntry {
+    wgpu::BindGroupLayoutEntry {
+        binding,
+        visibility,
+        ty: wgpu::BindingType::Buffer {
+            ty: wgpu::BufferBindingType::Uniform,
+            has_dynamic_offset: false,
+            min_binding_size: wgpu::BufferSize::new(size as u64),
+        },
+        count: None,
     }
 }
 

@@ -2,6 +2,7 @@
 //! through air that thickens with distance and fades into the sky, which
 //! also lets the far plane come in and the distant chunks go.
 
+use common::chapter::uniform_entry;
 use common::texture::depth_view;
 use common::wgpu::util::DeviceExt as _;
 use common::{
@@ -76,16 +77,7 @@ impl FogBinding {
     pub fn new(device: &wgpu::Device) -> Self {
         let layout = device.create_bind_group_layout(&wgpu::BindGroupLayoutDescriptor {
             label: Some("fog"),
-            entries: &[wgpu::BindGroupLayoutEntry {
-                binding: 0,
-                visibility: wgpu::ShaderStages::FRAGMENT,
-                ty: wgpu::BindingType::Buffer {
-                    ty: wgpu::BufferBindingType::Uniform,
-                    has_dynamic_offset: false,
-                    min_binding_size: wgpu::BufferSize::new(std::mem::size_of::<FogUniform>() as u64),
-                },
-                count: None,
-            }],
+            entries: &[uniform_entry(0, wgpu::ShaderStages::FRAGMENT, std::mem::size_of::<FogUniform>())],
         });
         let buffer = device.create_buffer_init(&wgpu::util::BufferInitDescriptor {
             label: Some("fog"),

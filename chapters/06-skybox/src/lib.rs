@@ -5,6 +5,7 @@
 
 use std::f32::consts::TAU;
 
+use common::chapter::uniform_entry;
 use common::glam::{Mat4, Quat, Vec3, Vec4};
 use common::texture::{ColorSpace, Texture, cubemap, decode_rgba};
 use common::wgpu::util::DeviceExt as _;
@@ -269,16 +270,7 @@ impl Chapter for SkyboxChapter {
         let bind_group_layout = device.create_bind_group_layout(&wgpu::BindGroupLayoutDescriptor {
             label: Some("sky"),
             entries: &[
-                wgpu::BindGroupLayoutEntry {
-                    binding: 0,
-                    visibility: wgpu::ShaderStages::FRAGMENT,
-                    ty: wgpu::BindingType::Buffer {
-                        ty: wgpu::BufferBindingType::Uniform,
-                        has_dynamic_offset: false,
-                        min_binding_size: wgpu::BufferSize::new(std::mem::size_of::<SkyUniform>() as u64),
-                    },
-                    count: None,
-                },
+                uniform_entry(0, wgpu::ShaderStages::FRAGMENT, std::mem::size_of::<SkyUniform>()),
                 cube(1),
                 cube(2),
                 wgpu::BindGroupLayoutEntry {

@@ -5,6 +5,7 @@
 
 pub mod waves;
 
+use common::chapter::{scene_pass, uniform_entry};
 use common::glam::{Vec2, Vec4};
 use common::texture::{ColorSpace, Texture, decode_rgba, depth_test, depth_view};
 use common::wgpu::util::DeviceExt as _;
@@ -216,22 +217,7 @@ impl WaterChapter {
         };
         let mut encoder = gpu.device.create_command_encoder(&wgpu::CommandEncoderDescriptor { label: Some(which) });
         {
-            let mut pass = encoder.begin_render_pass(&wgpu::RenderPassDescriptor {
-                label: Some(which),
-                color_attachments: &[Some(wgpu::RenderPassColorAttachment {
-                    view: &colour,
-                    depth_slice: None,
-                    resolve_target: None,
-                    ops: wgpu::Operations { load: wgpu::LoadOp::Clear(SKY), store: wgpu::StoreOp::Store },
-                })],
-                depth_stencil_attachment: Some(wgpu::RenderPassDepthStencilAttachment {
-                    view: &depth,
-                    depth_ops: Some(wgpu::Operations { load: wgpu::LoadOp::Clear(1.0), store: wgpu::StoreOp::Store }),
-                    stencil_ops: None,
-                }),
-                timestamp_writes: frame.timer.pass(which),
-                ..Default::default()
-            });
+            let mut pass = scene_pass(&mut encoder, frame.timer, which, &colour, SKY, &depth);
             self.sky.draw(&mut pass);
         }
         gpu.queue.submit([encoder.finish()]);
@@ -395,16 +381,7 @@ impl Chapter for WaterChapter {
         let water_layout = device.create_bind_group_layout(&wgpu::BindGroupLayoutDescriptor {
             label: Some("water"),
             entries: &[
-                wgpu::BindGroupLayoutEntry {
-                    binding: 0,
-                    visibility: wgpu::ShaderStages::VERTEX_FRAGMENT,
-                    ty: wgpu::BindingType::Buffer {
-                        ty: wgpu::BufferBindingType::Uniform,
-                        has_dynamic_offset: false,
-                        min_binding_size: wgpu::BufferSize::new(std::mem::size_of::<WaterUniform>() as u64),
-                    },
-                    count: None,
-                },
+                uniform_entry(0, wgpu::ShaderStages::VERTEX_FRAGMENT, std::mem::size_of::<WaterUniform>()),
                 texture_entry(1, float),
                 texture_entry(2, float),
                 texture_entry(3, wgpu::TextureSampleType::Depth),
