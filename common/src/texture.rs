@@ -20,7 +20,13 @@ pub enum ColorSpace {
 /// Reads a PNG or JPEG into RGBA8. Errors name the file and the reason.
 pub fn load_rgba(path: &Path) -> anyhow::Result<image::RgbaImage> {
     let bytes = std::fs::read(path).with_context(|| format!("cannot read {}", path.display()))?;
-    decode_rgba(&bytes).with_context(|| format!("{} is not a readable PNG or JPEG", path.display()))
+    decode_named(&path.display().to_string(), &bytes)
+}
+
+/// Decodes `bytes`, reporting a failure as "`name` is not a readable PNG or
+/// JPEG" with the decoder's reason: how every asset error reads.
+pub fn decode_named(name: &str, bytes: &[u8]) -> anyhow::Result<image::RgbaImage> {
+    decode_rgba(bytes).with_context(|| format!("{name} is not a readable PNG or JPEG"))
 }
 
 /// Decodes an encoded image already in memory (for assets embedded with
@@ -78,6 +84,17 @@ impl Texture {
         Self { texture, view, sampler }
     }
 
+    /// Decodes an embedded image (`include_bytes!`), named for errors.
+    pub fn from_bytes(
+        device: &wgpu::Device,
+        queue: &wgpu::Queue,
+        name: &str,
+        bytes: &[u8],
+        space: ColorSpace,
+    ) -> anyhow::Result<Self> {
+        Ok(Self::from_image(device, queue, &decode_named(name, bytes)?, space, name))
+    }
+
     /// Loads an image file; see [`load_rgba`] for the errors.
     pub fn from_file(
         device: &wgpu::Device,
@@ -90,6 +107,17 @@ impl Texture {
     }
 }
 
+/// Decodes six cube faces, each given as (file name for errors, encoded
+/// PNG or JPEG bytes), and checks that they are square and the same size.
+pub fn decode_faces(faces: &[(&str, &[u8]); 6]) -> anyhow::Result<[image::RgbaImage; 6]> {
+    let images = faces.iter().map(|(name, bytes)| decode_named(name, bytes)).collect::<anyhow::Result<Vec<_>>>()?;
+    let size = images[0].width();
+    if let Some(((name, _), image)) = faces.iter().zip(&images).find(|(_, i)| i.dimensions() != (size, size)) {
+        anyhow::bail!("{name} is {}x{}, but cube faces must all be {size}x{size}", image.width(), image.height());
+    }
+    Ok(images.try_into().expect("six faces in, six images out"))
+}
+
 /// A cube map from six square faces in WebGPU's order (+x, −x, +y, −y, +z,
 /// −z), each given as (file name for errors, encoded PNG or JPEG bytes).
 /// Sampled with a direction instead of coordinates, as skies are.
@@ -99,20 +127,24 @@ pub fn cubemap(
     faces: &[(&str, &[u8]); 6],
     space: ColorSpace,
 ) -> anyhow::Result<Texture> {
-    let images = faces
-        .iter()
-        .map(|(name, bytes)| decode_rgba(bytes).with_context(|| format!("{name} is not a readable PNG or JPEG")))
-        .collect::<anyhow::Result<Vec<_>>>()?;
+    Ok(cubemap_from_images(device, queue, &decode_faces(faces)?, space, faces[0].0))
+}
+
+/// A cube map from six faces already decoded (see [`decode_faces`]).
+pub fn cubemap_from_images(
+    device: &wgpu::Device,
+    queue: &wgpu::Queue,
+    images: &[image::RgbaImage; 6],
+    space: ColorSpace,
+    label: &str,
+) -> Texture {
     let size = images[0].width();
-    if let Some(((name, _), image)) = faces.iter().zip(&images).find(|(_, i)| i.dimensions() != (size, size)) {
-        anyhow::bail!("{name} is {}x{}, but cube faces must all be {size}x{size}", image.width(), image.height());
-    }
     let format = match space {
         ColorSpace::Srgb => wgpu::TextureFormat::Rgba8UnormSrgb,
         ColorSpace::Linear => wgpu::TextureFormat::Rgba8Unorm,
     };
     let texture = device.create_texture(&wgpu::TextureDescriptor {
-        label: Some(faces[0].0),
+        label: Some(label),
         size: wgpu::Extent3d { width: size, height: size, depth_or_array_layers: 6 },
         mip_level_count: 1,
         sample_count: 1,
@@ -144,7 +176,7 @@ pub fn cubemap(
         min_filter: wgpu::FilterMode::Linear,
         ..Default::default()
     });
-    Ok(Texture { texture, view, sampler })
+    Texture { texture, view, sampler }
 }
 
 /// The usual depth test: keep a fragment nearer than what is stored, and

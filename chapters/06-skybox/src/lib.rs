@@ -7,9 +7,11 @@ use std::f32::consts::TAU;
 
 use common::chapter::uniform_entry;
 use common::glam::{Mat4, Quat, Vec3, Vec4};
-use common::texture::{ColorSpace, Texture, cubemap, decode_rgba};
+use common::texture::{ColorSpace, cubemap_from_images, decode_faces};
 use common::wgpu::util::DeviceExt as _;
-use common::{Camera, Chapter, Frame, Gpu, Input, ShaderError, ShaderFile, Target, View, anyhow, egui, shader, wgpu};
+use common::{
+    Camera, Chapter, Frame, Gpu, Input, ShaderError, ShaderFile, Target, View, anyhow, egui, image, shader, wgpu,
+};
 use instancing::InstancingChapter;
 use terrain::{KEEP_ALL, Sun};
 
@@ -79,11 +81,10 @@ fn smoothstep(edge0: f32, edge1: f32, x: f32) -> f32 {
 /// The average colour of a sky's horizon (the middle rows of its four side
 /// faces), in linear RGB: what the fog must fade to, measured from the
 /// pictures themselves so that the two cannot drift apart.
-pub fn horizon_colour(faces: &[(&str, &[u8]); 6]) -> anyhow::Result<[f32; 3]> {
+pub fn horizon_colour(faces: &[image::RgbaImage; 6]) -> [f32; 3] {
     let mut sum = [0.0f64; 3];
     let mut count = 0.0;
-    for (name, bytes) in [faces[0], faces[1], faces[4], faces[5]] {
-        let image = decode_rgba(bytes).map_err(|e| anyhow::anyhow!("{name}: {e}"))?;
+    for image in [&faces[0], &faces[1], &faces[4], &faces[5]] {
         let middle = image.height() / 2;
         for y in middle - 2..middle + 2 {
             for x in 0..image.width() {
@@ -95,7 +96,7 @@ pub fn horizon_colour(faces: &[(&str, &[u8]); 6]) -> anyhow::Result<[f32; 3]> {
             }
         }
     }
-    Ok(sum.map(|s| (s / count) as f32))
+    sum.map(|s| (s / count) as f32)
 }
 
 fn srgb_to_linear(byte: u8) -> f32 {
@@ -151,11 +152,6 @@ pub struct SkyboxChapter {
     pipeline: wgpu::RenderPipeline,
     format: wgpu::TextureFormat,
     phase: f32,
-}
-
-/// The clear colour under the sky: never seen, since the sky covers it.
-fn instancing_clear() -> wgpu::Color {
-    terrain::SKY
 }
 
 impl SkyboxChapter {
@@ -248,9 +244,11 @@ impl Chapter for SkyboxChapter {
     fn new(gpu: &Gpu, target: Target) -> anyhow::Result<Self> {
         let device = &gpu.device;
         let plain = InstancingChapter::new(gpu, target)?;
-        let day: Texture = cubemap(device, &gpu.queue, &DAY, ColorSpace::Srgb)?;
-        let night: Texture = cubemap(device, &gpu.queue, &NIGHT, ColorSpace::Srgb)?;
-        let horizons = [horizon_colour(&DAY)?, horizon_colour(&NIGHT)?];
+        // Decoded once: for the cube maps and to measure their horizons.
+        let (day_faces, night_faces) = (decode_faces(&DAY)?, decode_faces(&NIGHT)?);
+        let day = cubemap_from_images(device, &gpu.queue, &day_faces, ColorSpace::Srgb, "day sky");
+        let night = cubemap_from_images(device, &gpu.queue, &night_faces, ColorSpace::Srgb, "night sky");
+        let horizons = [horizon_colour(&day_faces), horizon_colour(&night_faces)];
 
         let uniform = device.create_buffer_init(&wgpu::util::BufferInitDescriptor {
             label: Some("sky"),
@@ -336,7 +334,8 @@ impl Chapter for SkyboxChapter {
         let camera = self.plain.camera;
         self.prepare(gpu, &camera, KEEP_ALL);
         let depth = self.plain.depth();
-        let mut pass = frame.scene_pass("plain and sky", instancing_clear(), &depth);
+        // The clear colour is never seen: the sky covers whatever the plain leaves.
+        let mut pass = frame.scene_pass("plain and sky", terrain::SKY, &depth);
         self.draw(&mut pass);
     }
     // ANCHOR_END: render
@@ -380,8 +379,8 @@ mod tests {
 
     #[test]
     fn horizons_are_butterscotch_by_day_and_dark_by_night() {
-        let day = horizon_colour(&DAY).unwrap();
-        let night = horizon_colour(&NIGHT).unwrap();
+        let day = horizon_colour(&decode_faces(&DAY).unwrap());
+        let night = horizon_colour(&decode_faces(&NIGHT).unwrap());
         assert!(day[0] > day[1] && day[1] > day[2] && day[0] > 0.4, "{day:?}");
         assert!(night.iter().all(|&c| c < 0.01), "{night:?}");
     }

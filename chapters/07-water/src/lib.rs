@@ -7,7 +7,7 @@ pub mod waves;
 
 use common::chapter::{scene_pass, uniform_entry};
 use common::glam::{Vec2, Vec4};
-use common::texture::{ColorSpace, Texture, decode_rgba, depth_test, depth_view};
+use common::texture::{ColorSpace, Texture, depth_test, depth_view};
 use common::wgpu::util::DeviceExt as _;
 use common::{
     Camera, Chapter, Frame, Gpu, Input, Mesh, MeshData, ShaderError, ShaderFile, Target, View, anyhow, egui,
@@ -80,7 +80,9 @@ pub fn mirrored(camera: &Camera, level: f32) -> Camera {
 }
 // ANCHOR_END: lake
 
-/// An offscreen picture of the scene, with its own depth buffer.
+/// An offscreen picture of the scene, with its own depth buffer. (Cloning
+/// copies two reference-counted handles, not the textures.)
+#[derive(Clone)]
 struct Picture {
     colour: wgpu::TextureView,
     depth: wgpu::TextureView,
@@ -142,6 +144,7 @@ pub struct WaterChapter {
     pipeline_layout: wgpu::PipelineLayout,
     pipeline: wgpu::RenderPipeline,
     show_layout: wgpu::BindGroupLayout,
+    show_groups: [wgpu::BindGroup; 2],
     show_pipeline_layout: wgpu::PipelineLayout,
     show_pipeline: wgpu::RenderPipeline,
     target: Target,
@@ -170,16 +173,7 @@ fn sampler_entry(binding: u32) -> wgpu::BindGroupLayoutEntry {
     }
 }
 
-fn embedded(name: &str, bytes: &[u8], device: &wgpu::Device, queue: &wgpu::Queue) -> anyhow::Result<Texture> {
-    let image = decode_rgba(bytes).map_err(|e| anyhow::anyhow!("{name} is not a readable PNG: {e}"))?;
-    Ok(Texture::from_image(device, queue, &image, ColorSpace::Linear, name))
-}
-
 impl WaterChapter {
-    fn pipelines(&self, gpu: &Gpu) -> Result<(wgpu::RenderPipeline, wgpu::RenderPipeline), ShaderError> {
-        build_pipelines(gpu, &self.pipeline_layout, &self.show_pipeline_layout, self.target.format)
-    }
-
     fn water_group(&self, device: &wgpu::Device) -> wgpu::BindGroup {
         let textures = [
             &self.reflection.colour,
@@ -202,6 +196,8 @@ impl WaterChapter {
         self.reflection = Picture::new(device, self.target.format, size.0, size.1);
         self.refraction = Picture::new(device, self.target.format, size.0, size.1);
         self.water_group = self.water_group(device);
+        self.show_groups =
+            show_groups(device, &self.show_layout, [&self.reflection, &self.refraction], &self.clamp_sampler);
     }
 
     // ANCHOR: picture
@@ -209,30 +205,27 @@ impl WaterChapter {
     /// only what `clip` keeps, and submits it at once: the uniforms are
     /// rewritten for the next picture, and a write lands before the next
     /// submission, not before the last.
-    fn take_picture(&mut self, gpu: &Gpu, frame: &Frame, which: &'static str, camera: &Camera, clip: Vec4) {
+    fn take_picture(
+        &mut self,
+        gpu: &Gpu,
+        frame: &Frame,
+        label: &'static str,
+        picture: &Picture,
+        camera: &Camera,
+        clip: Vec4,
+    ) {
         self.sky.prepare(gpu, camera, clip);
-        let (colour, depth) = match which {
-            "reflection" => (self.reflection.colour.clone(), self.reflection.depth.clone()),
-            _ => (self.refraction.colour.clone(), self.refraction.depth.clone()),
-        };
-        let mut encoder = gpu.device.create_command_encoder(&wgpu::CommandEncoderDescriptor { label: Some(which) });
+        let mut encoder = gpu.device.create_command_encoder(&wgpu::CommandEncoderDescriptor { label: Some(label) });
         {
-            let mut pass = scene_pass(&mut encoder, frame.timer, which, &colour, SKY, &depth);
+            let mut pass = scene_pass(&mut encoder, frame.timer, label, &picture.colour, SKY, &picture.depth);
             self.sky.draw(&mut pass);
         }
         gpu.queue.submit([encoder.finish()]);
     }
     // ANCHOR_END: picture
 
-    fn show(&self, gpu: &Gpu, frame: &mut Frame, picture: &wgpu::TextureView) {
-        let group = gpu.device.create_bind_group(&wgpu::BindGroupDescriptor {
-            label: Some("show picture"),
-            layout: &self.show_layout,
-            entries: &[
-                wgpu::BindGroupEntry { binding: 0, resource: wgpu::BindingResource::TextureView(picture) },
-                wgpu::BindGroupEntry { binding: 1, resource: wgpu::BindingResource::Sampler(&self.clamp_sampler) },
-            ],
-        });
+    /// Draws picture `which` (0 reflection, 1 refraction) over the whole frame.
+    fn show(&self, frame: &mut Frame, which: usize) {
         let mut pass = frame.encoder.begin_render_pass(&wgpu::RenderPassDescriptor {
             label: Some("show picture"),
             color_attachments: &[Some(wgpu::RenderPassColorAttachment {
@@ -244,7 +237,7 @@ impl WaterChapter {
             ..Default::default()
         });
         pass.set_pipeline(&self.show_pipeline);
-        pass.set_bind_group(0, &group, &[]);
+        pass.set_bind_group(0, &self.show_groups[which], &[]);
         pass.draw(0..3, 0..1);
     }
 }
@@ -272,6 +265,25 @@ fn water_group(
         entries.push(wgpu::BindGroupEntry { binding: 6 + i as u32, resource: wgpu::BindingResource::Sampler(sampler) });
     }
     device.create_bind_group(&wgpu::BindGroupDescriptor { label: Some("water"), layout, entries: &entries })
+}
+
+/// Bind groups that let the show pipeline read each picture.
+fn show_groups(
+    device: &wgpu::Device,
+    layout: &wgpu::BindGroupLayout,
+    pictures: [&Picture; 2],
+    sampler: &wgpu::Sampler,
+) -> [wgpu::BindGroup; 2] {
+    pictures.map(|picture| {
+        device.create_bind_group(&wgpu::BindGroupDescriptor {
+            label: Some("show picture"),
+            layout,
+            entries: &[
+                wgpu::BindGroupEntry { binding: 0, resource: wgpu::BindingResource::TextureView(&picture.colour) },
+                wgpu::BindGroupEntry { binding: 1, resource: wgpu::BindingResource::Sampler(sampler) },
+            ],
+        })
+    })
 }
 
 fn build_pipelines(
@@ -358,14 +370,9 @@ impl Chapter for WaterChapter {
         }
         let grid = MeshData::upload(&grid, device, "water grid");
 
-        let dudv =
-            embedded("assets/water/dudv.png", include_bytes!("../../../assets/water/dudv.png"), device, &gpu.queue)?;
-        let normal_map = embedded(
-            "assets/water/normal.png",
-            include_bytes!("../../../assets/water/normal.png"),
-            device,
-            &gpu.queue,
-        )?;
+        let asset = |name, bytes| Texture::from_bytes(device, &gpu.queue, name, bytes, ColorSpace::Linear);
+        let dudv = asset("assets/water/dudv.png", include_bytes!("../../../assets/water/dudv.png"))?;
+        let normal_map = asset("assets/water/normal.png", include_bytes!("../../../assets/water/normal.png"))?;
         let clamp_sampler = device.create_sampler(&wgpu::SamplerDescriptor {
             label: Some("clamp"),
             mag_filter: wgpu::FilterMode::Linear,
@@ -416,6 +423,7 @@ impl Chapter for WaterChapter {
         let refraction = Picture::new(device, target.format, pictures_size.0, pictures_size.1);
         let textures = [&reflection.colour, &refraction.colour, &refraction.depth, &dudv.view, &normal_map.view];
         let water_group = water_group(device, &water_layout, &uniform, textures, [&dudv.sampler, &clamp_sampler]);
+        let show_groups = show_groups(device, &show_layout, [&reflection, &refraction], &clamp_sampler);
         Ok(Self {
             sky,
             settings,
@@ -433,6 +441,7 @@ impl Chapter for WaterChapter {
             water_layout,
             pipeline_layout,
             pipeline,
+            show_groups,
             show_layout,
             show_pipeline_layout,
             show_pipeline,
@@ -475,14 +484,15 @@ impl Chapter for WaterChapter {
         let bias = 0.5; // a little overlap, so that waves do not open gaps at the shore
         // 1. The reflection: from below the water, keeping what is above it.
         let above = Vec4::new(0.0, 1.0, 0.0, -self.level + bias);
-        self.take_picture(gpu, frame, "reflection", &mirrored(&camera, self.level), above);
+        let (reflection, refraction) = (self.reflection.clone(), self.refraction.clone());
+        self.take_picture(gpu, frame, "reflection", &reflection, &mirrored(&camera, self.level), above);
         // 2. The refraction: from the camera, keeping what is below the water.
         let below = Vec4::new(0.0, -1.0, 0.0, self.level + bias);
-        self.take_picture(gpu, frame, "refraction", &camera, below);
+        self.take_picture(gpu, frame, "refraction", &refraction, &camera, below);
 
         match VIEWS[frame.view].name {
-            "reflection" => return self.show(gpu, frame, &self.reflection.colour.clone()),
-            "refraction" => return self.show(gpu, frame, &self.refraction.colour.clone()),
+            "reflection" => return self.show(frame, 0),
+            "refraction" => return self.show(frame, 1),
             _ => {}
         }
 
@@ -559,7 +569,8 @@ impl Chapter for WaterChapter {
 
     fn reload_shaders(&mut self, gpu: &Gpu) -> Result<(), ShaderError> {
         self.sky.reload_shaders(gpu)?;
-        (self.pipeline, self.show_pipeline) = self.pipelines(gpu)?;
+        (self.pipeline, self.show_pipeline) =
+            build_pipelines(gpu, &self.pipeline_layout, &self.show_pipeline_layout, self.target.format)?;
         Ok(())
     }
 }
