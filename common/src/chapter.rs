@@ -1,8 +1,7 @@
 //! The contract every chapter fulfils, so that one runner can open it in a
 //! window, render it headless to a PNG, benchmark it and snapshot-test it.
 
-use crate::snapshot::Tolerance;
-use crate::{Gpu, GpuNeeds, Input, PassTimer, ShaderError};
+use crate::{Camera, Gpu, GpuNeeds, Input, PassTimer, ShaderError};
 
 /// A named picture a chapter can show: the default scene, a preset, or a
 /// debug view such as the depth buffer. Every view is also a snapshot.
@@ -10,6 +9,29 @@ use crate::{Gpu, GpuNeeds, Input, PassTimer, ShaderError};
 pub struct View {
     pub name: &'static str,
     pub about: &'static str,
+    pub kind: ViewKind,
+}
+
+/// What choosing a view does to the camera. Either way, what a view shows
+/// never depends on the views chosen before it.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum ViewKind {
+    /// A way of drawing (`flat`, `no-fog`, `wireframe`): it never touches
+    /// the camera, so a learner keeps their place while comparing.
+    Mode,
+    /// A place to look from (`dusk`, a follow camera): choosing it sets
+    /// the whole camera.
+    Preset,
+}
+
+impl View {
+    pub const fn mode(name: &'static str, about: &'static str) -> Self {
+        Self { name, about, kind: ViewKind::Mode }
+    }
+
+    pub const fn preset(name: &'static str, about: &'static str) -> Self {
+        Self { name, about, kind: ViewKind::Preset }
+    }
 }
 
 /// The colour target a chapter draws into: the window's surface or an
@@ -116,12 +138,6 @@ pub trait Chapter: Sized + 'static {
     /// Chapter-specific keys for the F1 help, as (key, what it does).
     const KEYS: &'static [(&'static str, &'static str)] = &[];
 
-    /// How far a snapshot of `view` may drift from its reference. Loosen it
-    /// only for views whose pixels legitimately vary between drivers.
-    fn snapshot_tolerance(_view: usize) -> Tolerance {
-        Tolerance::DEFAULT
-    }
-
     /// Device features the chapter requires or can use.
     fn gpu_needs() -> GpuNeeds {
         GpuNeeds::default()
@@ -134,8 +150,21 @@ pub trait Chapter: Sized + 'static {
     /// resources such as the depth buffer.
     fn resize(&mut self, _gpu: &Gpu, _target: Target) {}
 
-    /// The learner (or `--view`) picked another view: set presets here.
+    /// The learner (or `--view`) picked `view`: set everything the view
+    /// decides, whatever the view before it was, except the camera. Call it
+    /// through [`show_view`], which also places the camera for presets.
     fn select_view(&mut self, _view: usize) {}
+
+    /// Puts the camera where `view` starts: the preset's camera, or for a
+    /// mode, the chapter's starting camera. The overlay's "reset camera"
+    /// button calls this.
+    fn reset_camera(&mut self, _view: usize) {}
+
+    /// The camera the learner flies, for chapters that have one: the
+    /// overlay shows where it is, and tests move it.
+    fn camera_mut(&mut self) -> Option<&mut Camera> {
+        None
+    }
 
     /// Interactive input, once per frame before `render`; `dt` is the real
     /// frame time in seconds. Never called when rendering headless.
@@ -158,6 +187,15 @@ pub trait Chapter: Sized + 'static {
     /// it. On error keep the old pipelines; the runner shows the message.
     fn reload_shaders(&mut self, _gpu: &Gpu) -> Result<(), ShaderError> {
         Ok(())
+    }
+}
+
+/// Switches `chapter` to `view` as the overlay and `--view` do: the view's
+/// settings, and for a preset, its camera.
+pub fn show_view<C: Chapter>(chapter: &mut C, view: usize) {
+    chapter.select_view(view);
+    if C::VIEWS[view].kind == ViewKind::Preset {
+        chapter.reset_camera(view);
     }
 }
 

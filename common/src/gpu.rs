@@ -3,7 +3,9 @@
 //! Everything else in the book starts from a [`Gpu`]: the adapter says what
 //! the machine can do, the device creates resources, the queue runs work.
 
+use std::any::Any;
 use std::fmt;
+use std::sync::{Arc, Mutex};
 
 /// The adapter, device and queue a chapter draws with.
 pub struct Gpu {
@@ -11,11 +13,13 @@ pub struct Gpu {
     pub adapter: wgpu::Adapter,
     pub device: wgpu::Device,
     pub queue: wgpu::Queue,
+    /// See [`Gpu::cached`].
+    cache: Mutex<Vec<Box<dyn Any + Send>>>,
 }
 
 /// What a chapter needs beyond the WebGPU baseline. Optional features are
 /// enabled when the adapter has them; required ones make setup fail clearly.
-#[derive(Clone, Copy, Debug, Default)]
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
 pub struct GpuNeeds {
     pub required: wgpu::Features,
     pub optional: wgpu::Features,
@@ -106,7 +110,34 @@ impl Gpu {
             .await
             .map_err(|e| NoAdapter { reason: format!("request_device failed: {e}") })?;
 
-        Ok(Self { instance, adapter, device, queue })
+        Ok(Self { instance, adapter, device, queue, cache: Mutex::default() })
+    }
+
+    /// Returns the value made for `key` on this device, making it first if
+    /// the last value of this type was made for another key (one is kept
+    /// per type). For immutable data that is slow to make and the same for
+    /// every instance that asks, like chapter 03's terrain: a window that
+    /// regenerates it keeps one copy, and tests that create a chapter many
+    /// times make it once. `make` must not call `cached` itself.
+    pub fn cached<K, V>(&self, key: K, make: impl FnOnce() -> V) -> Arc<V>
+    where
+        K: PartialEq + Send + 'static,
+        V: Send + Sync + 'static,
+    {
+        let mut cache = self.cache.lock().unwrap_or_else(|e| e.into_inner());
+        let slot = cache.iter_mut().find_map(|entry| entry.downcast_mut::<(K, Arc<V>)>());
+        match slot {
+            Some((k, v)) if *k == key => v.clone(),
+            Some(entry) => {
+                *entry = (key, Arc::new(make()));
+                entry.1.clone()
+            }
+            None => {
+                let value = Arc::new(make());
+                cache.push(Box::new((key, value.clone())));
+                value
+            }
+        }
     }
 
     /// One line naming the adapter, for logs and bench tables.

@@ -126,7 +126,7 @@ pub fn capture<C: Chapter>(
 pub fn render_image<C: Chapter>(gpu: &Gpu, request: &RenderRequest) -> anyhow::Result<image::RgbaImage> {
     let target = Target { format: OFFSCREEN_FORMAT, width: request.width, height: request.height };
     let mut chapter = C::new(gpu, target)?;
-    chapter.select_view(request.view);
+    crate::chapter::show_view(&mut chapter, request.view);
     capture(gpu, &mut chapter, target, request.time, request.view)
 }
 
@@ -153,7 +153,7 @@ pub fn bench<C: Chapter>(gpu: &Gpu, request: &RenderRequest, frames: u32) -> any
     let setup = Instant::now();
     let mut chapter = C::new(gpu, target)?;
     let setup_ms = setup.elapsed().as_secs_f64() * 1e3;
-    chapter.select_view(request.view);
+    crate::chapter::show_view(&mut chapter, request.view);
     let offscreen = Offscreen::new(&gpu.device, target);
     let timer = PassTimer::new(&gpu.device, 16);
 

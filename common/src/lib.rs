@@ -4,23 +4,25 @@
 //! this crate opens a window with an egui overlay and hot-reloaded shaders,
 //! or renders headless for `--screenshot`, `--bench` and the snapshot tests.
 
+pub mod args;
 pub mod camera;
 pub mod chapter;
-pub mod cli;
+mod cli;
+pub mod fullscreen;
 pub mod gpu;
 pub mod headless;
 pub mod input;
 pub mod mesh;
 mod overlay;
+pub mod parallel;
 pub mod primitives;
 pub mod shader;
-pub mod snapshot;
 pub mod texture;
 pub mod timing;
 mod window;
 
 pub use camera::{Camera, FlyController};
-pub use chapter::{Chapter, Frame, Target, View};
+pub use chapter::{Chapter, Frame, Target, View, ViewKind, show_view};
 pub use cli::run;
 pub use gpu::{Gpu, GpuNeeds, NoAdapter};
 pub use input::Input;

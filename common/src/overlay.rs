@@ -36,12 +36,16 @@ impl Overlay {
         self.state.on_window_event(window, event).consumed
     }
 
-    /// Runs the UI and records drawing it over `target` (loading, not clearing).
+    /// Runs the UI and records drawing it over `target` (loading, not
+    /// clearing). `size` is the target's size in pixels: egui's clip
+    /// rectangles are cut to it, so they always fit the surface drawn into,
+    /// even in a frame where the window has already changed size again.
     pub fn draw(
         &mut self,
         gpu: &Gpu,
         encoder: &mut wgpu::CommandEncoder,
         target: &wgpu::TextureView,
+        size: [u32; 2],
         window: &Window,
         ui: impl FnMut(&egui::Context),
     ) -> Vec<wgpu::CommandBuffer> {
@@ -56,11 +60,7 @@ impl Overlay {
                 self.renderer.update_texture(&gpu.device, &gpu.queue, id, delta);
             }
         }
-        let size = window.inner_size();
-        let screen = egui_wgpu::ScreenDescriptor {
-            size_in_pixels: [size.width, size.height],
-            pixels_per_point: output.pixels_per_point,
-        };
+        let screen = egui_wgpu::ScreenDescriptor { size_in_pixels: size, pixels_per_point: output.pixels_per_point };
         let extra = self.renderer.update_buffers(&gpu.device, &gpu.queue, encoder, &jobs, &screen);
         {
             let mut pass = encoder

@@ -8,7 +8,8 @@ use std::cell::RefCell;
 /// A chapter asks `timer.pass("reflection")` when it begins a pass and puts
 /// the answer into `RenderPassDescriptor::timestamp_writes`. When the
 /// adapter has no timestamp queries, or nobody is measuring, the answer is
-/// `None` and the pass is simply not timed.
+/// `None` and the pass is simply not timed; its name is still recorded, so
+/// that tests can tell which passes a frame has.
 pub struct PassTimer {
     queries: Option<Queries>,
     labels: RefCell<Vec<&'static str>>,
@@ -60,13 +61,10 @@ impl PassTimer {
 
     /// Timestamp writes for the next pass, labelled for the report.
     pub fn pass(&self, label: &'static str) -> Option<wgpu::RenderPassTimestampWrites<'_>> {
-        let queries = self.queries.as_ref()?;
         let mut labels = self.labels.borrow_mut();
         let index = labels.len() as u32;
-        if index >= queries.capacity {
-            return None;
-        }
         labels.push(label);
+        let queries = self.queries.as_ref().filter(|q| index < q.capacity)?;
         Some(wgpu::RenderPassTimestampWrites {
             query_set: &queries.set,
             beginning_of_pass_write_index: Some(2 * index),
@@ -74,10 +72,16 @@ impl PassTimer {
         })
     }
 
+    /// The names of the passes begun since the last `read` or `take_labels`,
+    /// in order, and forgets them.
+    pub fn take_labels(&self) -> Vec<&'static str> {
+        std::mem::take(&mut *self.labels.borrow_mut())
+    }
+
     /// Records the copy of this frame's timestamps; call after the passes.
     pub fn resolve(&self, encoder: &mut wgpu::CommandEncoder) {
         let Some(queries) = &self.queries else { return };
-        let used = self.labels.borrow().len() as u32;
+        let used = (self.labels.borrow().len() as u32).min(queries.capacity);
         if used == 0 {
             return;
         }
@@ -88,8 +92,9 @@ impl PassTimer {
     /// Waits for the frame and returns (label, milliseconds) per timed pass,
     /// then forgets the labels for the next frame.
     pub fn read(&self, gpu: &crate::Gpu) -> Vec<(&'static str, f64)> {
-        let labels = std::mem::take(&mut *self.labels.borrow_mut());
+        let mut labels = self.take_labels();
         let Some(queries) = &self.queries else { return Vec::new() };
+        labels.truncate(queries.capacity as usize);
         if labels.is_empty() {
             return Vec::new();
         }

@@ -3,16 +3,17 @@
 
 use std::path::PathBuf;
 use std::sync::Arc;
-use std::time::Instant;
+use std::time::{Duration, Instant};
 
 use anyhow::{Context as _, anyhow};
 use winit::application::ApplicationHandler;
 use winit::event::{DeviceEvent, ElementState, MouseButton, MouseScrollDelta, WindowEvent};
-use winit::event_loop::{ActiveEventLoop, EventLoop};
+use winit::event_loop::{ActiveEventLoop, ControlFlow, EventLoop};
 use winit::keyboard::{KeyCode, PhysicalKey};
 use winit::window::{CursorGrabMode, Window, WindowId};
 
-use crate::cli::{Args, check_size};
+use crate::args::{Args, check_size};
+use crate::chapter::show_view;
 use crate::overlay::{FrameHistory, Overlay};
 use crate::shader::{self, ShaderWatcher};
 use crate::{Chapter, Frame, Gpu, Input, PassTimer, Target};
@@ -67,8 +68,13 @@ struct Running<C: Chapter> {
     frames_left: Option<u32>,
     pointer_locked: bool,
     dragging: bool,
-    minimized: bool,
+    /// The window is covered or minimised: nothing to draw.
+    occluded: bool,
     status: String,
+    /// Frames drawn, and frames skipped because the window had no area.
+    drawn: u64,
+    skipped: u64,
+    probe: Option<PathBuf>,
 }
 
 impl<C: Chapter> ApplicationHandler for App<C> {
@@ -90,16 +96,24 @@ impl<C: Chapter> ApplicationHandler for App<C> {
         let egui_used = app.overlay.on_event(&app.window, &event);
         match event {
             WindowEvent::CloseRequested => event_loop.exit(),
-            WindowEvent::Resized(size) => app.resize(size.width, size.height),
-            WindowEvent::Focused(false) => app.input.release_all(),
+            // The surface follows the window's size at the start of each frame.
+            WindowEvent::Resized(_) => app.window.request_redraw(),
+            WindowEvent::Occluded(occluded) => app.occluded = occluded,
+            WindowEvent::Focused(false) => {
+                // Key-up and button-up events will go to another window.
+                app.input.release_all();
+                app.dragging = false;
+            }
             WindowEvent::KeyboardInput { event, .. } => {
-                if app.overlay.ctx.egui_wants_keyboard_input() {
-                    return; // typing into a text field
-                }
                 let PhysicalKey::Code(key) = event.physical_key else { return };
+                // A release always reaches the input state, whoever has the
+                // keyboard now: a key held down must never stay held.
                 if event.state == ElementState::Released {
                     app.input.key_up(key);
                     return;
+                }
+                if app.overlay.ctx.egui_wants_keyboard_input() {
+                    return; // typing into a text field
                 }
                 match key {
                     KeyCode::Escape if app.pointer_locked => app.lock_pointer(false),
@@ -141,9 +155,15 @@ impl<C: Chapter> ApplicationHandler for App<C> {
         }
     }
 
-    fn about_to_wait(&mut self, _: &ActiveEventLoop) {
-        if let Some(app) = &self.running {
+    fn about_to_wait(&mut self, event_loop: &ActiveEventLoop) {
+        let Some(app) = &self.running else { return };
+        if app.has_area() {
+            event_loop.set_control_flow(ControlFlow::Poll);
             app.window.request_redraw();
+        } else {
+            // Minimised or covered: look again now and then instead of
+            // spinning; a resize or an expose event wakes the loop sooner.
+            event_loop.set_control_flow(ControlFlow::WaitUntil(Instant::now() + Duration::from_millis(200)));
         }
     }
 }
@@ -164,7 +184,10 @@ impl<C: Chapter> Running<C> {
 
         let caps = surface.get_capabilities(&gpu.adapter);
         // Chapters output linear colour and let an sRGB target encode it.
-        let format = caps.formats.iter().copied().find(|f| f.is_srgb()).unwrap_or(caps.formats[0]);
+        let format =
+            caps.formats.iter().copied().find(|f| f.is_srgb()).or(caps.formats.first().copied()).ok_or_else(|| {
+                anyhow!("{} cannot draw into this window (it offers no surface formats)", gpu.describe())
+            })?;
         let overlay_format = format.remove_srgb_suffix();
         let size = window.inner_size();
         let config = wgpu::SurfaceConfiguration {
@@ -176,7 +199,7 @@ impl<C: Chapter> Running<C> {
             // Immediate first, which would spin the CPU for nothing.
             present_mode: wgpu::PresentMode::Fifo,
             desired_maximum_frame_latency: 2,
-            alpha_mode: caps.alpha_modes[0],
+            alpha_mode: wgpu::CompositeAlphaMode::Auto,
             color_space: Default::default(),
             view_formats: if overlay_format == format { vec![] } else { vec![overlay_format] },
         };
@@ -184,7 +207,7 @@ impl<C: Chapter> Running<C> {
 
         let view = args.view_index::<C>();
         let mut chapter = C::new(&gpu, Target { format, width: config.width, height: config.height })?;
-        chapter.select_view(view);
+        show_view(&mut chapter, view);
         let overlay = Overlay::new(&window, &gpu, overlay_format);
 
         let watcher = ShaderWatcher::start();
@@ -213,8 +236,11 @@ impl<C: Chapter> Running<C> {
             frames_left: args.frames,
             pointer_locked: false,
             dragging: false,
-            minimized: false,
+            occluded: false,
             status,
+            drawn: 0,
+            skipped: 0,
+            probe: args.probe.clone(),
         })
     }
 
@@ -222,14 +248,22 @@ impl<C: Chapter> Running<C> {
         Target { format: self.config.format, width: self.config.width, height: self.config.height }
     }
 
-    fn resize(&mut self, width: u32, height: u32) {
-        // A minimised window reports 0×0, which no surface can have.
-        self.minimized = width == 0 || height == 0;
-        if self.minimized {
+    /// Whether there is anything to draw into: a minimised window reports
+    /// a size of 0×0 on some platforms and `Occluded` on others.
+    fn has_area(&self) -> bool {
+        let size = self.window.inner_size();
+        size.width > 0 && size.height > 0 && !self.occluded && self.window.is_minimized() != Some(true)
+    }
+
+    /// Makes the surface, and the chapter's size-dependent resources, match
+    /// the window as it is now.
+    fn match_window_size(&mut self) {
+        let size = self.window.inner_size();
+        if (size.width, size.height) == (self.config.width, self.config.height) {
             return;
         }
-        self.config.width = width;
-        self.config.height = height;
+        self.config.width = size.width;
+        self.config.height = size.height;
         self.surface.configure(&self.gpu.device, &self.config);
         self.chapter.resize(&self.gpu, self.target());
     }
@@ -281,13 +315,35 @@ impl<C: Chapter> Running<C> {
         println!("{}", self.status);
     }
 
+    // ANCHOR: frame
     fn frame(&mut self) -> anyhow::Result<()> {
         let now = Instant::now();
+        // After a pause (minimised, dragged, a breakpoint) the first frame
+        // would otherwise jump: no step is longer than a quarter second.
         let dt = (now - self.last_frame).as_secs_f32().min(0.25);
         self.last_frame = now;
-        if self.minimized {
+        if !self.has_area() {
+            self.skipped += 1;
             return Ok(());
         }
+        // One size is the truth for the whole frame: the surface's, made to
+        // match the window here, before anything is drawn into it.
+        self.match_window_size();
+        let frame = match self.surface.get_current_texture() {
+            wgpu::CurrentSurfaceTexture::Success(frame) | wgpu::CurrentSurfaceTexture::Suboptimal(frame) => frame,
+            wgpu::CurrentSurfaceTexture::Timeout | wgpu::CurrentSurfaceTexture::Occluded => {
+                self.skipped += 1;
+                return Ok(());
+            }
+            wgpu::CurrentSurfaceTexture::Outdated | wgpu::CurrentSurfaceTexture::Lost => {
+                // The window changed under us: configure again, draw next time.
+                self.surface.configure(&self.gpu.device, &self.config);
+                self.skipped += 1;
+                return Ok(());
+            }
+            wgpu::CurrentSurfaceTexture::Validation => anyhow::bail!("the surface texture failed validation"),
+        };
+
         self.history.push(dt);
         if !self.paused {
             self.time += dt;
@@ -296,26 +352,17 @@ impl<C: Chapter> Running<C> {
         self.chapter.update(&self.input, dt);
         self.input.end_frame();
 
-        let frame = match self.surface.get_current_texture() {
-            wgpu::CurrentSurfaceTexture::Success(frame) | wgpu::CurrentSurfaceTexture::Suboptimal(frame) => frame,
-            wgpu::CurrentSurfaceTexture::Timeout | wgpu::CurrentSurfaceTexture::Occluded => return Ok(()),
-            wgpu::CurrentSurfaceTexture::Outdated | wgpu::CurrentSurfaceTexture::Lost => {
-                self.surface.configure(&self.gpu.device, &self.config);
-                return Ok(());
-            }
-            wgpu::CurrentSurfaceTexture::Validation => anyhow::bail!("the surface texture failed validation"),
-        };
         let scene_view = frame.texture.create_view(&Default::default());
         let overlay_view = frame
             .texture
             .create_view(&wgpu::TextureViewDescriptor { format: Some(self.overlay_format), ..Default::default() });
-
         let mut encoder = self.gpu.device.create_command_encoder(&Default::default());
         let timer = PassTimer::off();
         self.chapter.render(
             &self.gpu,
             &mut Frame { encoder: &mut encoder, target: &scene_view, time: self.time, view: self.view, timer: &timer },
         );
+        let size = [self.config.width, self.config.height];
         let extra = {
             let Self { overlay, window, gpu, .. } = self;
             let mut ui_state = UiState {
@@ -329,16 +376,44 @@ impl<C: Chapter> Running<C> {
                 status: &self.status,
                 adapter: gpu.adapter.get_info().name,
             };
-            overlay.draw(gpu, &mut encoder, &overlay_view, window, |ctx| ui_state.show(ctx))
+            overlay.draw(gpu, &mut encoder, &overlay_view, size, window, |ctx| ui_state.show(ctx))
         };
         self.gpu.queue.submit(extra.into_iter().chain([encoder.finish()]));
         self.window.pre_present_notify();
         self.gpu.queue.present(frame);
 
+        self.drawn += 1;
         if let Some(n) = &mut self.frames_left {
             *n = n.saturating_sub(1);
         }
+        self.write_probe();
         Ok(())
+    }
+    // ANCHOR_END: frame
+
+    /// For tests that drive the window from outside (`--probe PATH`): one
+    /// line with what they cannot see in pixels, written whole each frame.
+    fn write_probe(&mut self) {
+        let Some(path) = &self.probe else { return };
+        let camera = match self.chapter.camera_mut() {
+            Some(c) => {
+                format!("{:.4} {:.4} {:.4} {:.5} {:.5}", c.position.x, c.position.y, c.position.z, c.yaw, c.pitch)
+            }
+            None => "none".into(),
+        };
+        let line = format!(
+            "drawn={} skipped={} surface={}x{} view={} camera={camera}\n",
+            self.drawn,
+            self.skipped,
+            self.config.width,
+            self.config.height,
+            C::VIEWS[self.view].name
+        );
+        let partial = path.with_extension("partial");
+        if std::fs::write(&partial, line).and_then(|()| std::fs::rename(&partial, path)).is_err() {
+            eprintln!("cannot write the probe file {}", path.display());
+            self.probe = None;
+        }
     }
 }
 
@@ -368,9 +443,24 @@ impl<C: Chapter> UiState<'_, C> {
                 }
             });
             if *self.view != before {
-                self.chapter.select_view(*self.view);
+                show_view(self.chapter, *self.view);
             }
             ui.small(C::VIEWS[*self.view].about);
+            if let Some(c) = self.chapter.camera_mut() {
+                ui.horizontal(|ui| {
+                    ui.monospace(format!(
+                        "eye {:.1} {:.1} {:.1}  yaw {:.0}° pitch {:.0}°",
+                        c.position.x,
+                        c.position.y,
+                        c.position.z,
+                        c.yaw.to_degrees(),
+                        c.pitch.to_degrees()
+                    ));
+                });
+                if ui.button("reset camera").on_hover_text("back to where this view starts").clicked() {
+                    self.chapter.reset_camera(*self.view);
+                }
+            }
             ui.horizontal(|ui| {
                 ui.label(format!("time {:.2} s", self.time));
                 ui.checkbox(self.paused, "paused (P)");

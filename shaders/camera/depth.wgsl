@@ -1,6 +1,7 @@
 // Chapter 02: the depth buffer made visible.
 // A full-screen triangle reads the depth the scene pass left behind and
 // turns it into grey: black near the camera, white far away.
+#import common::fullscreen::{FullscreenOutput, fullscreen_triangle}
 
 struct DepthView {
     near: f32,
@@ -13,11 +14,10 @@ struct DepthView {
 @group(0) @binding(0) var depth_buffer: texture_depth_2d;
 @group(0) @binding(1) var<uniform> params: DepthView;
 
-// Three vertices that cover the screen: (-1,-1), (3,-1), (-1,3).
+// One triangle over the whole screen (shaders/common/fullscreen.wgsl).
 @vertex
-fn vs_fullscreen(@builtin(vertex_index) index: u32) -> @builtin(position) vec4<f32> {
-    let corner = vec2<f32>(f32((index << 1u) & 2u), f32(index & 2u));
-    return vec4<f32>(corner * 2.0 - 1.0, 0.0, 1.0);
+fn vs_fullscreen(@builtin(vertex_index) index: u32) -> FullscreenOutput {
+    return fullscreen_triangle(index, 0.0);
 }
 
 // ANCHOR: linearize

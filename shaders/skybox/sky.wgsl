@@ -1,6 +1,7 @@
 // Chapter 06: a sky from two cube maps, day and night, drawn behind
 // everything in one full-screen triangle, with the sun drawn where the
 // light comes from.
+#import common::fullscreen::{FullscreenOutput, fullscreen_triangle, uv_to_ndc}
 
 // ANCHOR: uniforms
 struct Sky {
@@ -22,26 +23,21 @@ struct Sky {
 @group(0) @binding(3) var sky_sampler: sampler;
 // ANCHOR_END: uniforms
 
-struct SkyOutput {
-    @builtin(position) clip_position: vec4<f32>,
-    @location(0) ndc: vec2<f32>,
-};
-
 // ANCHOR: vs_sky
 // A triangle that covers the screen, at depth 1: the far plane. With the
 // depth test set to LessEqual and the depth buffer cleared to 1, the sky
 // shows only where nothing nearer was drawn.
 @vertex
-fn vs_sky(@builtin(vertex_index) index: u32) -> SkyOutput {
-    let corner = vec2<f32>(f32((index << 1u) & 2u), f32(index & 2u)) * 2.0 - 1.0;
-    return SkyOutput(vec4<f32>(corner, 1.0, 1.0), corner);
+fn vs_fullscreen(@builtin(vertex_index) index: u32) -> FullscreenOutput {
+    return fullscreen_triangle(index, 1.0);
 }
 // ANCHOR_END: vs_sky
 
 // ANCHOR: fs_sky
 @fragment
-fn fs_sky(in: SkyOutput) -> @location(0) vec4<f32> {
-    let far = sky.clip_to_world * vec4<f32>(in.ndc, 1.0, 1.0);
+fn fs_sky(in: FullscreenOutput) -> @location(0) vec4<f32> {
+    // The pixel's point on the far plane, turned back into a world direction.
+    let far = sky.clip_to_world * vec4<f32>(uv_to_ndc(in.uv), 1.0, 1.0);
     let direction = normalize(far.xyz / far.w);
     var day = textureSample(day_sky, sky_sampler, (sky.world_to_day * vec4<f32>(direction, 0.0)).xyz).rgb;
     let night = textureSample(night_sky, sky_sampler, (sky.world_to_stars * vec4<f32>(direction, 0.0)).xyz).rgb;

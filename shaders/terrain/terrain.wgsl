@@ -107,14 +107,15 @@ fn lit(colour: vec3<f32>, normal: vec3<f32>) -> vec3<f32> {
 }
 
 // Lines along the grid and the quads' diagonals, a pixel wide at any
-// distance, fading out where the cells get smaller than a few pixels.
+// distance, fading out where cells get smaller than 8 pixels (denser lines
+// would only paint the ground pale).
 fn wire(grid: vec2<f32>) -> f32 {
     let width = fwidth(grid);
     let to_line = abs(fract(grid - 0.5) - 0.5) / width;
     let diagonal = grid.x + grid.y;
     let to_diagonal = abs(fract(diagonal - 0.5) - 0.5) / fwidth(diagonal);
     let nearest = min(min(to_line.x, to_line.y), to_diagonal);
-    return (1.0 - clamp(nearest, 0.0, 1.0)) * (1.0 - smoothstep(0.25, 0.5, max(width.x, width.y)));
+    return (1.0 - clamp(nearest, 0.0, 1.0)) * (1.0 - smoothstep(0.125, 0.25, max(width.x, width.y)));
 }
 
 // A colour for each chunk, from a hash of its index.

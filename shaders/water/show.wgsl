@@ -1,21 +1,16 @@
 // Chapter 07's `reflection` and `refraction` views: one of the water's
 // pictures, stretched over the whole screen.
+#import common::fullscreen::{FullscreenOutput, fullscreen_triangle}
 
 @group(0) @binding(0) var picture: texture_2d<f32>;
 @group(0) @binding(1) var picture_sampler: sampler;
 
-struct ShowOutput {
-    @builtin(position) clip_position: vec4<f32>,
-    @location(0) uv: vec2<f32>,
-};
-
 @vertex
-fn vs_show(@builtin(vertex_index) index: u32) -> ShowOutput {
-    let corner = vec2<f32>(f32((index << 1u) & 2u), f32(index & 2u));
-    return ShowOutput(vec4<f32>(corner * 2.0 - 1.0, 0.0, 1.0), vec2<f32>(corner.x, 1.0 - corner.y));
+fn vs_fullscreen(@builtin(vertex_index) index: u32) -> FullscreenOutput {
+    return fullscreen_triangle(index, 0.0);
 }
 
 @fragment
-fn fs_show(in: ShowOutput) -> @location(0) vec4<f32> {
+fn fs_show(in: FullscreenOutput) -> @location(0) vec4<f32> {
     return textureSample(picture, picture_sampler, in.uv);
 }

@@ -1,80 +1,65 @@
-//! Every view of every chapter against its reference image.
+//! Every chapter in the registry, checked view by view: against its
+//! reference image, for purity (a live instance after every other view
+//! draws what a fresh one draws), and against its bench table. The tests
+//! are made from `snapshots::chapters()`, so a new chapter is tested as
+//! soon as it is registered, and a chapter crate left out of the registry
+//! fails `every_chapter_crate_is_registered`.
 
 use std::collections::BTreeSet;
 use std::path::Path;
 
-#[test]
-fn triangle() {
-    snapshots::assert_chapter("triangle");
-}
+use libtest_mimic::{Arguments, Failed, Trial};
 
-#[test]
-fn camera() {
-    snapshots::assert_chapter("camera");
-}
-
-#[test]
-fn terrain() {
-    snapshots::assert_chapter("terrain");
-}
-
-#[test]
-fn fog() {
-    snapshots::assert_chapter("fog");
-}
-
-#[test]
-fn instancing() {
-    snapshots::assert_chapter("instancing");
-}
-
-#[test]
-fn skybox() {
-    snapshots::assert_chapter("skybox");
-}
-
-#[test]
-fn water() {
-    snapshots::assert_chapter("water");
+fn main() {
+    common::gpu::quiet_driver_warnings();
+    let mut trials: Vec<Trial> = snapshots::chapters()
+        .into_iter()
+        .map(|entry| {
+            Trial::test(format!("views::{}", entry.name), move || {
+                let problems = entry.check_purity().map_err(|e| Failed::from(format!("{e:#}")))?;
+                if problems.is_empty() { Ok(()) } else { Err(problems.join("\n").into()) }
+            })
+        })
+        .collect();
+    trials.push(Trial::test("every_chapter_crate_is_registered", every_chapter_crate_is_registered));
+    trials.push(Trial::test("no_stale_references", no_stale_references));
+    libtest_mimic::run(&Arguments::from_args(), trials).exit();
 }
 
 /// A chapter crate missing from the registry would never be snapshot-tested.
-#[test]
-fn every_chapter_crate_is_registered() {
+fn every_chapter_crate_is_registered() -> Result<(), Failed> {
     let chapters = Path::new(env!("CARGO_MANIFEST_DIR")).join("../chapters");
     let mut on_disk = BTreeSet::new();
-    for dir in std::fs::read_dir(&chapters).unwrap() {
-        let manifest = std::fs::read_to_string(dir.unwrap().path().join("Cargo.toml")).unwrap();
-        let name = manifest.lines().find_map(|l| l.strip_prefix("name = ")).expect("package name");
+    for dir in std::fs::read_dir(&chapters).map_err(|e| e.to_string())? {
+        let manifest = std::fs::read_to_string(dir.map_err(|e| e.to_string())?.path().join("Cargo.toml"))
+            .map_err(|e| e.to_string())?;
+        let name = manifest.lines().find_map(|l| l.strip_prefix("name = ")).ok_or("a manifest without a name")?;
         on_disk.insert(name.trim_matches('"').to_string());
     }
     let registered: BTreeSet<String> = snapshots::chapters().iter().map(|e| e.name.to_string()).collect();
-    assert_eq!(on_disk, registered);
+    if on_disk == registered {
+        Ok(())
+    } else {
+        Err(format!("chapters/ holds {on_disk:?} but snapshots::chapters() registers {registered:?}").into())
+    }
 }
 
 /// A reference for a view that no longer exists is a figure nobody checks.
-#[test]
-fn no_stale_references() {
-    for dir in std::fs::read_dir(snapshots::snapshot_dir()).unwrap() {
-        let dir = dir.unwrap().path();
-        let chapter = dir.file_name().unwrap().to_string_lossy().to_string();
-        let entry = snapshots::find(&chapter).unwrap_or_else(|| panic!("{} belongs to no chapter", dir.display()));
-        for file in std::fs::read_dir(&dir).unwrap() {
-            let path = file.unwrap().path();
-            let stem = path.file_stem().unwrap().to_string_lossy().to_string();
+fn no_stale_references() -> Result<(), Failed> {
+    for dir in std::fs::read_dir(snapshots::snapshot_dir()).map_err(|e| e.to_string())? {
+        let dir = dir.map_err(|e| e.to_string())?.path();
+        let chapter = dir.file_name().unwrap_or_default().to_string_lossy().to_string();
+        let entry = snapshots::find(&chapter).ok_or_else(|| format!("{} belongs to no chapter", dir.display()))?;
+        for file in std::fs::read_dir(&dir).map_err(|e| e.to_string())? {
+            let path = file.map_err(|e| e.to_string())?.path();
+            let stem = path.file_stem().unwrap_or_default().to_string_lossy().to_string();
             if stem.ends_with("-actual") || stem.ends_with("-diff") {
                 continue; // left by a failing run, ignored by git
             }
-            assert!(entry.views.iter().any(|v| v.name == stem), "{} is not a view of {chapter}", path.display());
+            if !entry.views.iter().any(|v| v.name == stem) {
+                return Err(format!("{} is not a view of {chapter}", path.display()).into());
+            }
         }
     }
-}
-
-/// Scene time and seeds are inputs: the same request gives the same bytes.
-#[test]
-fn renders_are_deterministic() {
-    for entry in snapshots::chapters() {
-        let (first, second) = (entry.render_view(0).unwrap(), entry.render_view(0).unwrap());
-        assert!(first == second, "{}: two renders of the same view differ", entry.name);
-    }
+    Ok(())
 }

@@ -39,8 +39,8 @@ pub const TRIANGLE: [ColoredVertex; 3] = [
 const CLEAR: wgpu::Color = wgpu::Color { r: 0.02, g: 0.025, b: 0.04, a: 1.0 };
 
 pub const VIEWS: &[View] = &[
-    View { name: "default", about: "colours interpolated across the triangle" },
-    View { name: "flat", about: "interpolation off: one colour per triangle, from its first vertex" },
+    View::mode("default", "colours interpolated across the triangle"),
+    View::mode("flat", "interpolation off: one colour per triangle, from its first vertex"),
 ];
 
 pub struct Triangle {

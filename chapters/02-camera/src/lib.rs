@@ -10,14 +10,14 @@ use common::texture::{DEPTH_FORMAT, depth_view};
 use common::wgpu::util::DeviceExt as _;
 use common::{
     Camera, Chapter, FlyController, Frame, Gpu, Input, Mesh, MeshData, ShaderError, Target, View, anyhow, egui,
-    primitives, shader, wgpu,
+    fullscreen, primitives, shader, wgpu,
 };
 
 pub const VIEWS: &[View] = &[
-    View { name: "default", about: "the field of primitives, lit by a fixed sun" },
-    View { name: "depth", about: "the depth buffer as distance: black near, white at 25 m" },
-    View { name: "depth-raw", about: "the depth buffer as stored: almost everything is nearly 1" },
-    View { name: "normals", about: "world-space normals as colours" },
+    View::mode("default", "the field of primitives, lit by a fixed sun"),
+    View::mode("depth", "the depth buffer as distance: black near, white at 25 m"),
+    View::mode("depth-raw", "the depth buffer as stored: almost everything is nearly 1"),
+    View::mode("normals", "world-space normals as colours"),
 ];
 
 // ANCHOR: uniforms
@@ -265,35 +265,6 @@ fn scene_pipeline(
 }
 // ANCHOR_END: pipeline
 
-fn fullscreen_pipeline(
-    device: &wgpu::Device,
-    layout: &wgpu::PipelineLayout,
-    module: &wgpu::ShaderModule,
-    format: wgpu::TextureFormat,
-) -> wgpu::RenderPipeline {
-    device.create_render_pipeline(&wgpu::RenderPipelineDescriptor {
-        label: Some("depth view"),
-        layout: Some(layout),
-        vertex: wgpu::VertexState {
-            module,
-            entry_point: Some("vs_fullscreen"),
-            buffers: &[],
-            compilation_options: Default::default(),
-        },
-        primitive: Default::default(),
-        depth_stencil: None,
-        multisample: Default::default(),
-        fragment: Some(wgpu::FragmentState {
-            module,
-            entry_point: Some("fs_depth"),
-            targets: &[Some(format.into())],
-            compilation_options: Default::default(),
-        }),
-        multiview_mask: None,
-        cache: None,
-    })
-}
-
 impl CameraChapter {
     fn build_pipelines(
         gpu: &Gpu,
@@ -301,11 +272,19 @@ impl CameraChapter {
         format: wgpu::TextureFormat,
     ) -> Result<Pipelines, ShaderError> {
         let scene = shader!("camera/scene.wgsl").module(&gpu.device)?;
-        let depth = shader!("camera/depth.wgsl").module(&gpu.device)?;
+        let depth = shader!("camera/depth.wgsl", imports: ["common/fullscreen.wgsl"]).module(&gpu.device)?;
         gpu.catch_validation(|| Pipelines {
             shaded: scene_pipeline(&gpu.device, &layouts[0], &scene, format, "fs_main"),
             normals: scene_pipeline(&gpu.device, &layouts[0], &scene, format, "fs_normals"),
-            depth_view: fullscreen_pipeline(&gpu.device, &layouts[1], &depth, format),
+            depth_view: fullscreen::pipeline(
+                &gpu.device,
+                "depth view",
+                &layouts[1],
+                &depth,
+                "fs_depth",
+                format.into(),
+                None,
+            ),
         })
         .map_err(ShaderError)
     }
@@ -462,6 +441,14 @@ impl Chapter for CameraChapter {
         self.depth_group = depth_group(gpu, &self.depth_group_layout, &self.depth, &self.depth_params);
     }
 
+    fn reset_camera(&mut self, _view: usize) {
+        self.camera = start_camera(self.target.aspect());
+    }
+
+    fn camera_mut(&mut self) -> Option<&mut Camera> {
+        Some(&mut self.camera)
+    }
+
     fn update(&mut self, input: &Input, dt: f32) {
         self.controller.update(&mut self.camera, input, dt);
     }
@@ -500,17 +487,7 @@ impl Chapter for CameraChapter {
             }
         }
         if view.starts_with("depth") {
-            let mut pass = frame.encoder.begin_render_pass(&wgpu::RenderPassDescriptor {
-                label: Some("depth view"),
-                color_attachments: &[Some(wgpu::RenderPassColorAttachment {
-                    view: frame.target,
-                    depth_slice: None,
-                    resolve_target: None,
-                    ops: wgpu::Operations { load: wgpu::LoadOp::Load, store: wgpu::StoreOp::Store },
-                })],
-                timestamp_writes: frame.timer.pass("depth view"),
-                ..Default::default()
-            });
+            let mut pass = fullscreen::pass(frame.encoder, frame.timer, "depth view", frame.target, None);
             pass.set_pipeline(&self.pipelines.depth_view);
             pass.set_bind_group(0, &self.depth_group, &[]);
             pass.draw(0..3, 0..1);
@@ -525,18 +502,6 @@ impl Chapter for CameraChapter {
         ui.add(egui::Slider::new(&mut self.camera.near, 0.01..=5.0).logarithmic(true).text("near plane (m)"));
         ui.add(egui::Slider::new(&mut self.camera.far, 10.0..=2000.0).logarithmic(true).text("far plane (m)"));
         ui.add(egui::Slider::new(&mut self.controller.speed, 1.0..=50.0).text("speed (m/s)"));
-        let c = &self.camera;
-        ui.monospace(format!(
-            "eye {:.1} {:.1} {:.1}\nyaw {:.0}°  pitch {:.0}°",
-            c.position.x,
-            c.position.y,
-            c.position.z,
-            c.yaw.to_degrees(),
-            c.pitch.to_degrees()
-        ));
-        if ui.button("reset camera").clicked() {
-            self.camera = start_camera(self.target.aspect());
-        }
     }
 
     fn reload_shaders(&mut self, gpu: &Gpu) -> Result<(), ShaderError> {

@@ -68,6 +68,24 @@ pub fn chunk_indices() -> Vec<u16> {
 }
 // ANCHOR_END: indices
 
+/// A coarse index list for seeing chunks from far away: quads of `step` ×
+/// `step` samples, over the same vertices. The overhead `chunks` view, where
+/// a whole chunk is a few pixels wide, draws this instead of 8,192 triangles.
+pub fn coarse_indices(step: u32) -> Vec<u16> {
+    let quads = CHUNK_QUADS / step;
+    let mut indices = Vec::with_capacity((quads * quads * 6) as usize);
+    for z in 0..quads {
+        for x in 0..quads {
+            let a = (z * step * CHUNK_SIDE + x * step) as u16;
+            let b = a + step as u16;
+            let c = a + (step * CHUNK_SIDE) as u16;
+            let d = c + step as u16;
+            indices.extend([a, c, b, b, c, d]);
+        }
+    }
+    indices
+}
+
 /// The box around chunk (cx, cz) in world space.
 pub fn chunk_bounds(field: &HeightField, cx: u32, cz: u32) -> Aabb {
     let (mut low, mut high) = (f32::INFINITY, f32::NEG_INFINITY);
@@ -102,6 +120,17 @@ mod tests {
         for t in indices.chunks_exact(3) {
             let [a, b, c] = [position(t[0]), position(t[1]), position(t[2])];
             assert!((b - a).cross(c - a).y > 0.0, "triangle {t:?} faces down");
+        }
+    }
+
+    #[test]
+    fn coarse_indices_cover_the_chunk_with_fewer_triangles() {
+        let coarse = coarse_indices(8);
+        assert_eq!(coarse.len(), 8 * 8 * 6);
+        assert!(coarse.iter().all(|&i| u32::from(i) < CHUNK_VERTICES));
+        // The four corners of the chunk are used, so nothing is cut off.
+        for corner in [0, CHUNK_QUADS, CHUNK_QUADS * CHUNK_SIDE, CHUNK_VERTICES - 1] {
+            assert!(coarse.contains(&(corner as u16)), "corner {corner}");
         }
     }
 

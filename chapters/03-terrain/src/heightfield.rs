@@ -89,25 +89,20 @@ pub struct HeightField {
 
 impl HeightField {
     // ANCHOR: generate
-    /// Samples every grid point. Rows are independent, so the work is split
-    /// into one band of rows per CPU thread.
+    /// Samples every grid point. Rows are independent, so `map_bands` gives
+    /// each CPU core a band of rows and joins the bands in order.
     pub fn generate(settings: TerrainSettings) -> Self {
         let size = settings.samples() as usize;
         let cliff: Vec<f32> = (0..size).map(|x| settings.cliff_line(x as f32 * settings.spacing)).collect();
-        let mut heights = vec![0.0; size * size];
-        let threads = std::thread::available_parallelism().map_or(1, |n| n.get());
-        let rows_per_band = size.div_ceil(threads);
-        std::thread::scope(|scope| {
-            for (band, rows) in heights.chunks_mut(rows_per_band * size).enumerate() {
-                let cliff = &cliff;
-                scope.spawn(move || {
-                    for (i, h) in rows.iter_mut().enumerate() {
-                        let (x, z) = (i % size, band * rows_per_band + i / size);
-                        let (wx, wz) = (x as f32 * settings.spacing, z as f32 * settings.spacing);
-                        *h = settings.height_with_cliff_at(wx, wz, cliff[x]);
-                    }
-                });
+        let heights = common::parallel::map_bands(size, |rows| {
+            let mut band = Vec::with_capacity(rows.len() * size);
+            for z in rows {
+                for (x, &cliff_line) in cliff.iter().enumerate() {
+                    let (wx, wz) = (x as f32 * settings.spacing, z as f32 * settings.spacing);
+                    band.push(settings.height_with_cliff_at(wx, wz, cliff_line));
+                }
             }
+            band
         });
         Self { settings, size: size as u32, heights }
     }

@@ -7,6 +7,7 @@ pub mod culling;
 pub mod heightfield;
 pub mod noise;
 
+use std::sync::Arc;
 use std::time::Instant;
 
 use common::chapter::uniform_entry;
@@ -18,15 +19,16 @@ use common::{
     wgpu,
 };
 
-use chunks::{Aabb, CHUNK_VERTICES, TerrainVertex, chunk_bounds, chunk_indices, chunk_vertices};
+use chunks::{Aabb, CHUNK_VERTICES, TerrainVertex, chunk_bounds, chunk_indices, chunk_vertices, coarse_indices};
 use culling::Frustum;
 use heightfield::{CHUNK_QUADS, HeightField, TerrainSettings};
 
 pub const VIEWS: &[View] = &[
-    View { name: "default", about: "the terrain, coloured by height and slope, with its cliff" },
-    View { name: "wireframe", about: "the triangles of the height-map mesh" },
-    View { name: "normals", about: "normals from the whole height field: no seams at chunk borders" },
-    View { name: "chunks", about: "from above: a colour per chunk the camera draws, dark for the culled ones" },
+    View::mode("default", "the terrain, coloured by height and slope, with its cliff"),
+    View::mode("wireframe", "the triangles of the height-map mesh, wherever they are at least 8 pixels apart"),
+    View::preset("close-up", "the wireframe from the foot of the cliff, where the 1 m cells are large"),
+    View::mode("normals", "normals from the whole height field: no seams at chunk borders"),
+    View::mode("chunks", "from 4 km above: a colour per chunk your camera draws, dark for the culled ones"),
 ];
 
 /// Pale butterscotch: the Martian sky, and the clear colour.
@@ -52,6 +54,9 @@ pub struct TerrainMesh {
     pub vertex_buffer: wgpu::Buffer,
     pub index_buffer: wgpu::Buffer,
     pub index_count: u32,
+    /// `coarse_indices(8)`, for seeing every chunk from far away.
+    pub coarse_index_buffer: wgpu::Buffer,
+    pub coarse_index_count: u32,
     pub bounds: Vec<Aabb>,
     pub chunks_per_side: u32,
 }
@@ -59,40 +64,28 @@ pub struct TerrainMesh {
 impl TerrainMesh {
     pub fn new(device: &wgpu::Device, field: &HeightField) -> Self {
         let n = field.settings.chunks_per_side;
-        // Rows of chunks are independent: each CPU thread fills its own
-        // band of the one vertex array, in place.
-        let threads = std::thread::available_parallelism().map_or(1, |t| t.get());
-        let rows_per_band = (n as usize).div_ceil(threads);
-        let row_vertices = (n * CHUNK_VERTICES) as usize;
-        let mut vertices = vec![TerrainVertex { height: 0.0, normal: [0; 4] }; n as usize * row_vertices];
-        let mut bounds = vec![Aabb { min: Vec3::ZERO, max: Vec3::ZERO }; (n * n) as usize];
-        std::thread::scope(|scope| {
-            let vertex_bands = vertices.chunks_mut(rows_per_band * row_vertices);
-            let bound_bands = bounds.chunks_mut(rows_per_band * n as usize);
-            for (band, (vertices, bounds)) in vertex_bands.zip(bound_bands).enumerate() {
-                scope.spawn(move || {
-                    for (i, bound) in bounds.iter_mut().enumerate() {
-                        let (cx, cz) = (i as u32 % n, (band * rows_per_band) as u32 + i as u32 / n);
-                        let start = i * CHUNK_VERTICES as usize;
-                        vertices[start..start + CHUNK_VERTICES as usize]
-                            .copy_from_slice(&chunk_vertices(field, cx, cz));
-                        *bound = chunk_bounds(field, cx, cz);
-                    }
-                });
-            }
+        // Rows of chunks are independent: each core builds a band of them.
+        let chunk_row = |cz: usize| (0..n).map(move |cx| (cx, cz as u32));
+        let vertices = common::parallel::map_bands(n as usize, |rows| {
+            rows.flat_map(chunk_row).flat_map(|(cx, cz)| chunk_vertices(field, cx, cz)).collect()
         });
-        let vertex_buffer = device.create_buffer_init(&wgpu::util::BufferInitDescriptor {
-            label: Some("terrain vertices"),
-            contents: bytemuck::cast_slice(&vertices),
-            usage: wgpu::BufferUsages::VERTEX,
+        let bounds = common::parallel::map_bands(n as usize, |rows| {
+            rows.flat_map(chunk_row).map(|(cx, cz)| chunk_bounds(field, cx, cz)).collect()
         });
-        let indices = chunk_indices();
-        let index_buffer = device.create_buffer_init(&wgpu::util::BufferInitDescriptor {
-            label: Some("chunk indices"),
-            contents: bytemuck::cast_slice(&indices),
-            usage: wgpu::BufferUsages::INDEX,
-        });
-        Self { vertex_buffer, index_buffer, index_count: indices.len() as u32, bounds, chunks_per_side: n }
+        let buffer = |label, contents: &[u8], usage| {
+            device.create_buffer_init(&wgpu::util::BufferInitDescriptor { label: Some(label), contents, usage })
+        };
+        let vertex_buffer = buffer("terrain vertices", bytemuck::cast_slice(&vertices), wgpu::BufferUsages::VERTEX);
+        let (indices, coarse) = (chunk_indices(), coarse_indices(8));
+        Self {
+            vertex_buffer,
+            index_buffer: buffer("chunk indices", bytemuck::cast_slice(&indices), wgpu::BufferUsages::INDEX),
+            index_count: indices.len() as u32,
+            coarse_index_buffer: buffer("coarse indices", bytemuck::cast_slice(&coarse), wgpu::BufferUsages::INDEX),
+            coarse_index_count: coarse.len() as u32,
+            bounds,
+            chunks_per_side: n,
+        }
     }
 
     /// Draws chunk `chunk`: its vertices start at `chunk × 4225` in the
@@ -115,6 +108,15 @@ impl TerrainMesh {
             }
         }
         drawn
+    }
+
+    /// Draws every chunk with the coarse index list.
+    pub fn draw_all_coarse(&self, pass: &mut wgpu::RenderPass<'_>) {
+        pass.set_vertex_buffer(0, self.vertex_buffer.slice(..));
+        pass.set_index_buffer(self.coarse_index_buffer.slice(..), wgpu::IndexFormat::Uint16);
+        for chunk in 0..self.bounds.len() as u32 {
+            pass.draw_indexed(0..self.coarse_index_count, (chunk * CHUNK_VERTICES) as i32, chunk..chunk + 1);
+        }
     }
 }
 // ANCHOR_END: terrain_mesh
@@ -192,43 +194,64 @@ fn overhead_camera(field: &HeightField, aspect: f32) -> Camera {
     }
 }
 
-/// Generates the height field and its meshes, timing each (ms).
-fn generate(device: &wgpu::Device, settings: TerrainSettings) -> (HeightField, TerrainMesh, (f64, f64)) {
-    let start = Instant::now();
-    let field = HeightField::generate(settings);
-    let heights = start.elapsed().as_secs_f64() * 1e3;
-    let start = Instant::now();
-    let mesh = TerrainMesh::new(device, &field);
-    (field, mesh, (heights, start.elapsed().as_secs_f64() * 1e3))
+/// The terrain's CPU and GPU data for one set of settings: the height
+/// field, the chunk meshes, and how long each took to make (ms).
+pub struct TerrainData {
+    pub field: HeightField,
+    pub mesh: TerrainMesh,
+    pub timings: (f64, f64),
 }
 
-/// The terrain, ready to draw: height field, meshes, and the bind group
-/// (group 0) of `terrain.wgsl`. Later chapters draw the same ground with
-/// shaders of their own that `#import terrain`.
+impl TerrainData {
+    /// The data for `settings`, made once per device: later chapters, and
+    /// tests that create chapters again and again, share it.
+    pub fn get(gpu: &Gpu, settings: TerrainSettings) -> Arc<Self> {
+        gpu.cached(settings, || {
+            let start = Instant::now();
+            let field = HeightField::generate(settings);
+            let heights = start.elapsed().as_secs_f64() * 1e3;
+            let start = Instant::now();
+            let mesh = TerrainMesh::new(&gpu.device, &field);
+            Self { field, mesh, timings: (heights, start.elapsed().as_secs_f64() * 1e3) }
+        })
+    }
+}
+
+// ANCHOR: viewpoint
+/// The uniforms for drawing the terrain from one camera: group 0 of
+/// `terrain.wgsl`, which shaders that import the module read too. A frame
+/// that draws the terrain from several cameras (chapter 07's reflection,
+/// refraction and main picture) has one viewpoint for each, so that all of
+/// them can be recorded into one encoder and submitted once.
+pub struct Viewpoint {
+    globals: wgpu::Buffer,
+    bind_group: wgpu::BindGroup,
+    frustum: Frustum,
+}
+// ANCHOR_END: viewpoint
+
+/// The terrain, ready to draw: its data and the layout of group 0. Later
+/// chapters draw the same ground with shaders of their own that
+/// `#import terrain`.
 pub struct TerrainRenderer {
     /// What the learner edits in the overlay; applied by `regenerate`.
     pub settings: TerrainSettings,
-    pub field: HeightField,
-    pub mesh: TerrainMesh,
-    /// How long the last generation took: (height field, meshes and upload), ms.
-    pub timings: (f64, f64),
-    globals: wgpu::Buffer,
+    data: Arc<TerrainData>,
+    /// One flag per chunk for the `chunks` view (shared by every viewpoint).
     chunk_flags: wgpu::Buffer,
     pub bind_group_layout: wgpu::BindGroupLayout,
-    bind_group: wgpu::BindGroup,
 }
 
 impl TerrainRenderer {
     pub fn new(gpu: &Gpu, settings: TerrainSettings) -> Self {
         let device = &gpu.device;
-        let (field, mesh, timings) = generate(device, settings);
-        let globals = device.create_buffer(&wgpu::BufferDescriptor {
-            label: Some("terrain globals"),
-            size: std::mem::size_of::<Globals>() as u64,
-            usage: wgpu::BufferUsages::UNIFORM | wgpu::BufferUsages::COPY_DST,
+        let data = TerrainData::get(gpu, settings);
+        let chunk_flags = device.create_buffer(&wgpu::BufferDescriptor {
+            label: Some("chunk drawn flags"),
+            size: u64::from(settings.chunks_per_side.pow(2).max(1)) * 4,
+            usage: wgpu::BufferUsages::STORAGE | wgpu::BufferUsages::COPY_DST,
             mapped_at_creation: false,
         });
-        let chunk_flags = Self::flags_buffer(device, mesh.bounds.len() as u32);
         let bind_group_layout = device.create_bind_group_layout(&wgpu::BindGroupLayoutDescriptor {
             label: Some("terrain"),
             entries: &[
@@ -245,40 +268,43 @@ impl TerrainRenderer {
                 },
             ],
         });
-        let bind_group = Self::bind_group(device, &bind_group_layout, &globals, &chunk_flags);
-        Self { settings, field, mesh, timings, globals, chunk_flags, bind_group_layout, bind_group }
+        Self { settings, data, chunk_flags, bind_group_layout }
     }
 
-    fn flags_buffer(device: &wgpu::Device, chunks: u32) -> wgpu::Buffer {
-        device.create_buffer(&wgpu::BufferDescriptor {
-            label: Some("chunk drawn flags"),
-            size: u64::from(chunks.max(1)) * 4,
-            usage: wgpu::BufferUsages::STORAGE | wgpu::BufferUsages::COPY_DST,
+    /// The height field the terrain was made from: where the ground is.
+    pub fn field(&self) -> &HeightField {
+        &self.data.field
+    }
+
+    pub fn mesh(&self) -> &TerrainMesh {
+        &self.data.mesh
+    }
+
+    /// Makes the terrain again from `self.settings` (the number of chunks
+    /// stays as it was). Viewpoints keep working.
+    pub fn regenerate(&mut self, gpu: &Gpu) {
+        self.settings.chunks_per_side = self.data.field.settings.chunks_per_side;
+        self.data = TerrainData::get(gpu, self.settings);
+    }
+
+    /// A new set of uniforms for drawing the terrain from one more camera.
+    pub fn viewpoint(&self, device: &wgpu::Device) -> Viewpoint {
+        let globals = device.create_buffer(&wgpu::BufferDescriptor {
+            label: Some("terrain globals"),
+            size: std::mem::size_of::<Globals>() as u64,
+            usage: wgpu::BufferUsages::UNIFORM | wgpu::BufferUsages::COPY_DST,
             mapped_at_creation: false,
-        })
-    }
-
-    fn bind_group(
-        device: &wgpu::Device,
-        layout: &wgpu::BindGroupLayout,
-        globals: &wgpu::Buffer,
-        flags: &wgpu::Buffer,
-    ) -> wgpu::BindGroup {
-        device.create_bind_group(&wgpu::BindGroupDescriptor {
+        });
+        let bind_group = device.create_bind_group(&wgpu::BindGroupDescriptor {
             label: Some("terrain"),
-            layout,
+            layout: &self.bind_group_layout,
             entries: &[
                 wgpu::BindGroupEntry { binding: 0, resource: globals.as_entire_binding() },
-                wgpu::BindGroupEntry { binding: 1, resource: flags.as_entire_binding() },
+                wgpu::BindGroupEntry { binding: 1, resource: self.chunk_flags.as_entire_binding() },
             ],
-        })
-    }
-
-    /// Regenerates the height field and the mesh from `self.settings`.
-    pub fn regenerate(&mut self, gpu: &Gpu) {
-        (self.field, self.mesh, self.timings) = generate(&gpu.device, self.settings);
-        self.chunk_flags = Self::flags_buffer(&gpu.device, self.mesh.bounds.len() as u32);
-        self.bind_group = Self::bind_group(&gpu.device, &self.bind_group_layout, &self.globals, &self.chunk_flags);
+        });
+        let frustum = Frustum::from_view_projection(Camera::looking_at(Vec3::ZERO, Vec3::NEG_Z, 1.0).view_projection());
+        Viewpoint { globals, bind_group, frustum }
     }
 
     /// A pipeline that draws the terrain mesh with `shader`'s `vs_main` and
@@ -317,50 +343,57 @@ impl TerrainRenderer {
         .map_err(ShaderError)
     }
 
-    /// Writes the frame's uniforms: `eye` is the camera drawn from.
-    pub fn write_globals(&self, queue: &wgpu::Queue, eye: &Camera, sun: Sun, shading: Shading) {
-        self.write_globals_clipped(queue, eye, sun, shading, KEEP_ALL);
-    }
-
-    /// `write_globals` with a clip plane (see [`KEEP_ALL`]).
-    pub fn write_globals_clipped(&self, queue: &wgpu::Queue, eye: &Camera, sun: Sun, shading: Shading, clip: Vec4) {
+    /// Aims `viewpoint` at the scene from `camera`: writes its uniforms,
+    /// lit by `sun`, keeping what `clip` keeps ([`KEEP_ALL`] for
+    /// everything), and keeps the camera's frustum for culling.
+    pub fn aim(
+        &self,
+        queue: &wgpu::Queue,
+        viewpoint: &mut Viewpoint,
+        camera: &Camera,
+        sun: Sun,
+        shading: Shading,
+        clip: Vec4,
+    ) {
         let globals = Globals {
-            view_proj: eye.view_projection().to_cols_array_2d(),
-            eye: eye.position.extend(1.0).into(),
+            view_proj: camera.view_projection().to_cols_array_2d(),
+            eye: camera.position.extend(1.0).into(),
             sun: sun.direction.normalize().extend(sun.strength).into(),
-            grid: [self.mesh.chunks_per_side, CHUNK_QUADS, shading as u32, 0],
-            scale: [self.field.settings.spacing, self.field.settings.height, 0.0, 0.0],
+            grid: [self.data.mesh.chunks_per_side, CHUNK_QUADS, shading as u32, 0],
+            scale: [self.data.field.settings.spacing, self.data.field.settings.height, 0.0, 0.0],
             clip: clip.into(),
         };
-        queue.write_buffer(&self.globals, 0, bytemuck::bytes_of(&globals));
+        queue.write_buffer(&viewpoint.globals, 0, bytemuck::bytes_of(&globals));
+        viewpoint.frustum = Frustum::from_view_projection(camera.view_projection());
     }
 
     /// Marks which chunks `frustum` keeps, for `Shading::Chunks`.
     pub fn write_chunk_flags(&self, queue: &wgpu::Queue, frustum: &Frustum) {
-        let flags: Vec<u32> = self.mesh.bounds.iter().map(|b| u32::from(frustum.intersects(b))).collect();
+        let flags: Vec<u32> = self.data.mesh.bounds.iter().map(|b| u32::from(frustum.intersects(b))).collect();
         queue.write_buffer(&self.chunk_flags, 0, bytemuck::cast_slice(&flags));
     }
 
-    /// Binds group 0 (camera, sun, grid), which other shaders that import
-    /// the terrain module read too.
-    pub fn bind(&self, pass: &mut wgpu::RenderPass<'_>) {
-        pass.set_bind_group(0, &self.bind_group, &[]);
+    /// Binds group 0 for `viewpoint`: what other shaders that import the
+    /// terrain module (fog, rocks, water) read too.
+    pub fn bind(&self, pass: &mut wgpu::RenderPass<'_>, viewpoint: &Viewpoint) {
+        pass.set_bind_group(0, &viewpoint.bind_group, &[]);
     }
 
-    /// Binds group 0 and draws the chunks `frustum` keeps; returns how many.
-    pub fn draw(&self, pass: &mut wgpu::RenderPass<'_>, frustum: &Frustum) -> usize {
-        self.bind(pass);
-        self.mesh.draw_visible(pass, frustum)
+    /// Binds group 0 and draws the chunks the viewpoint's camera can see;
+    /// returns how many (one draw call each).
+    pub fn draw(&self, pass: &mut wgpu::RenderPass<'_>, viewpoint: &Viewpoint) -> usize {
+        self.bind(pass, viewpoint);
+        self.data.mesh.draw_visible(pass, &viewpoint.frustum)
     }
 
     /// Sliders for the generator; true when the terrain should be regenerated.
     pub fn settings_ui(&mut self, ui: &mut egui::Ui) -> bool {
-        let size = self.field.size;
+        let size = self.data.field.size;
         ui.label(format!(
             "{size} × {size} samples, {} bytes per vertex; heights {:.0} ms, meshes {:.0} ms",
             std::mem::size_of::<TerrainVertex>(),
-            self.timings.0,
-            self.timings.1
+            self.data.timings.0,
+            self.data.timings.1
         ));
         let s = &mut self.settings;
         let mut changed = false;
@@ -381,14 +414,14 @@ impl TerrainRenderer {
 
     /// The chapter's figures for `--bench`.
     pub fn stats(&self, drawn: usize) -> String {
-        let size = self.field.size;
+        let size = self.data.field.size;
         format!(
             "{size}×{size} heights in {:.0} ms, chunk meshes built and uploaded in {:.0} ms; {} bytes per vertex, {:.0} MB of vertices; {drawn} of {} chunks drawn",
-            self.timings.0,
-            self.timings.1,
+            self.data.timings.0,
+            self.data.timings.1,
             std::mem::size_of::<TerrainVertex>(),
-            self.mesh.vertex_buffer.size() as f64 / 1e6,
-            self.mesh.bounds.len()
+            self.data.mesh.vertex_buffer.size() as f64 / 1e6,
+            self.data.mesh.bounds.len()
         )
     }
 }
@@ -397,6 +430,7 @@ pub struct TerrainChapter {
     pub terrain: TerrainRenderer,
     pub camera: Camera,
     pub controller: FlyController,
+    viewpoint: Viewpoint,
     layout: wgpu::PipelineLayout,
     pipeline: wgpu::RenderPipeline,
     depth: wgpu::TextureView,
@@ -427,8 +461,9 @@ impl Chapter for TerrainChapter {
         });
         let pipeline = terrain.pipeline(gpu, &terrain_shader(), &layout, target.format)?;
         Ok(Self {
-            camera: start_camera(&terrain.field, target.aspect()),
+            camera: start_camera(terrain.field(), target.aspect()),
             controller: FlyController { speed: 40.0, ..Default::default() },
+            viewpoint: terrain.viewpoint(&gpu.device),
             terrain,
             layout,
             pipeline,
@@ -445,13 +480,19 @@ impl Chapter for TerrainChapter {
         self.depth = depth_view(&gpu.device, target.width, target.height);
     }
 
-    /// Each view starts from its own camera: the wireframe from close up.
-    fn select_view(&mut self, view: usize) {
-        let aspect = self.target.aspect();
+    // Every view but `close-up` is a mode: a way of drawing what the flying
+    // camera sees. `chunks` too: it shows that camera's culling from above.
+
+    fn reset_camera(&mut self, view: usize) {
+        let (field, aspect) = (self.terrain.field(), self.target.aspect());
         self.camera = match VIEWS[view].name {
-            "wireframe" => close_up_camera(&self.terrain.field, aspect),
-            _ => start_camera(&self.terrain.field, aspect),
+            "close-up" => close_up_camera(field, aspect),
+            _ => start_camera(field, aspect),
         };
+    }
+
+    fn camera_mut(&mut self) -> Option<&mut Camera> {
+        Some(&mut self.camera)
     }
 
     fn update(&mut self, input: &Input, dt: f32) {
@@ -463,34 +504,33 @@ impl Chapter for TerrainChapter {
         if std::mem::take(&mut self.regenerate_requested) {
             self.terrain.regenerate(gpu);
         }
-        // Culling always uses the flying camera; the `chunks` view looks at
-        // its result from high above.
-        let frustum = Frustum::from_view_projection(self.camera.view_projection());
-        let (eye, shading) = match VIEWS[frame.view].name {
-            "wireframe" => (self.camera, Shading::Wireframe),
-            "normals" => (self.camera, Shading::Normals),
-            "chunks" => (overhead_camera(&self.terrain.field, self.target.aspect()), Shading::Chunks),
-            _ => (self.camera, Shading::Shaded),
+        let shading = match VIEWS[frame.view].name {
+            "wireframe" | "close-up" => Shading::Wireframe,
+            "normals" => Shading::Normals,
+            "chunks" => Shading::Chunks,
+            _ => Shading::Shaded,
         };
-        self.terrain.write_globals(&gpu.queue, &eye, Sun::AFTERNOON, shading);
-        if shading == Shading::Chunks {
-            self.terrain.write_chunk_flags(&gpu.queue, &frustum);
-        }
-
         let mut pass = frame.scene_pass("terrain", SKY, &self.depth);
         pass.set_pipeline(&self.pipeline);
         if shading == Shading::Chunks {
-            // Draw every chunk, so the culled ones can be seen as such.
-            self.terrain.draw(&mut pass, &Frustum::from_view_projection(eye.view_projection()));
-            self.drawn = self.terrain.mesh.bounds.iter().filter(|b| frustum.intersects(b)).count();
+            // Look from high above at what the flying camera culls: every
+            // chunk is drawn (coarsely), coloured if the camera keeps it.
+            let frustum = Frustum::from_view_projection(self.camera.view_projection());
+            self.terrain.write_chunk_flags(&gpu.queue, &frustum);
+            self.drawn = self.terrain.mesh().bounds.iter().filter(|b| frustum.intersects(b)).count();
+            let overhead = overhead_camera(self.terrain.field(), self.target.aspect());
+            self.terrain.aim(&gpu.queue, &mut self.viewpoint, &overhead, Sun::AFTERNOON, shading, KEEP_ALL);
+            self.terrain.bind(&mut pass, &self.viewpoint);
+            self.terrain.mesh().draw_all_coarse(&mut pass);
         } else {
-            self.drawn = self.terrain.draw(&mut pass, &frustum);
+            self.terrain.aim(&gpu.queue, &mut self.viewpoint, &self.camera, Sun::AFTERNOON, shading, KEEP_ALL);
+            self.drawn = self.terrain.draw(&mut pass, &self.viewpoint);
         }
     }
     // ANCHOR_END: render
 
     fn ui(&mut self, ui: &mut egui::Ui) {
-        ui.label(format!("chunks drawn: {} / {}", self.drawn, self.terrain.mesh.bounds.len()));
+        ui.label(format!("chunks drawn: {} / {}", self.drawn, self.terrain.mesh().bounds.len()));
         self.regenerate_requested |= self.terrain.settings_ui(ui);
         ui.add(egui::Slider::new(&mut self.controller.speed, 5.0..=400.0).logarithmic(true).text("speed (m/s)"));
     }

@@ -9,14 +9,13 @@ use common::{
     Camera, Chapter, FlyController, Frame, Gpu, Input, ShaderError, ShaderFile, Target, View, anyhow, egui, shader,
     wgpu,
 };
-use terrain::culling::Frustum;
 use terrain::heightfield::TerrainSettings;
-use terrain::{SKY, Shading, Sun, TerrainRenderer, start_camera};
+use terrain::{KEEP_ALL, SKY, Shading, Sun, TerrainRenderer, Viewpoint, start_camera};
 
 pub const VIEWS: &[View] = &[
-    View { name: "default", about: "the terrain in a light haze, fading into the sky" },
-    View { name: "no-fog", about: "the same view without fog: a hard edge where the world ends" },
-    View { name: "dense", about: "a dust storm: thick fog, and a far plane pulled in to 600 m" },
+    View::mode("default", "the terrain in a light haze, fading into the sky"),
+    View::mode("no-fog", "the same view without fog: a hard edge where the world ends"),
+    View::mode("dense", "a dust storm: thick fog, and a far plane pulled in to 588 m"),
 ];
 
 // ANCHOR: settings
@@ -43,6 +42,12 @@ impl FogSettings {
     /// (d · density)^gradient = ln 255 for d.
     pub fn opaque_distance(&self) -> f32 {
         if self.density <= 0.0 { f32::INFINITY } else { 255f32.ln().powf(1.0 / self.gradient) / self.density }
+    }
+
+    /// Where to put the camera's far plane in this fog: nothing beyond the
+    /// opaque distance can be seen, so nothing there needs drawing.
+    pub fn far_plane(&self) -> f32 {
+        self.opaque_distance().min(MAX_FAR)
     }
 }
 // ANCHOR_END: settings
@@ -115,6 +120,7 @@ pub struct FogChapter {
     pub camera: Camera,
     pub controller: FlyController,
     fog_binding: FogBinding,
+    viewpoint: Viewpoint,
     layout: wgpu::PipelineLayout,
     pipeline: wgpu::RenderPipeline,
     depth: wgpu::TextureView,
@@ -141,9 +147,10 @@ impl Chapter for FogChapter {
         });
         let pipeline = terrain.pipeline(gpu, &fog_shader(), &layout, target.format)?;
         Ok(Self {
-            camera: start_camera(&terrain.field, target.aspect()),
+            camera: start_camera(terrain.field(), target.aspect()),
             controller: FlyController { speed: 40.0, ..Default::default() },
             fog: FogSettings::HAZE,
+            viewpoint: terrain.viewpoint(device),
             terrain,
             fog_binding,
             layout,
@@ -169,6 +176,14 @@ impl Chapter for FogChapter {
         };
     }
 
+    fn reset_camera(&mut self, _view: usize) {
+        self.camera = start_camera(self.terrain.field(), self.target.aspect());
+    }
+
+    fn camera_mut(&mut self) -> Option<&mut Camera> {
+        Some(&mut self.camera)
+    }
+
     fn update(&mut self, input: &Input, dt: f32) {
         self.controller.update(&mut self.camera, input, dt);
     }
@@ -179,16 +194,16 @@ impl Chapter for FogChapter {
             self.terrain.regenerate(gpu);
         }
         // Nothing past the opaque distance can be seen: stop drawing there.
-        self.camera.far = self.fog.opaque_distance().min(MAX_FAR);
+        self.camera.far = self.fog.far_plane();
         self.fog_binding.write(&gpu.queue, self.fog);
-        self.terrain.write_globals(&gpu.queue, &self.camera, Sun::AFTERNOON, Shading::Shaded);
+        self.terrain.aim(&gpu.queue, &mut self.viewpoint, &self.camera, Sun::AFTERNOON, Shading::Shaded, KEEP_ALL);
 
         // Clear to the fog colour: where there is no ground, the fog's
         // "infinitely far" is what shows.
         let mut pass = frame.scene_pass("terrain", SKY, &self.depth);
         pass.set_pipeline(&self.pipeline);
         pass.set_bind_group(1, &self.fog_binding.group, &[]);
-        self.drawn = self.terrain.draw(&mut pass, &Frustum::from_view_projection(self.camera.view_projection()));
+        self.drawn = self.terrain.draw(&mut pass, &self.viewpoint);
     }
     // ANCHOR_END: render
 
@@ -200,7 +215,7 @@ impl Chapter for FogChapter {
             self.fog.opaque_distance(),
             self.camera.far,
             self.drawn,
-            self.terrain.mesh.bounds.len()
+            self.terrain.mesh().bounds.len()
         ));
         ui.collapsing("terrain", |ui| {
             self.regenerate_requested |= self.terrain.settings_ui(ui);

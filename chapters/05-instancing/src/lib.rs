@@ -1,6 +1,9 @@
 //! Chapter 05: instancing. One rock mesh, up to a million rocks, one draw
 //! call; and the same rocks drawn one call at a time, to see why it matters.
-//! The scene is the Mars plain so far: terrain, fog and rocks.
+//! The scene is the Mars plain so far: terrain, fog and rocks, put together
+//! as a `MarsPlain` that chapters 06 and 07 reuse.
+
+use std::sync::Arc;
 
 use common::glam::{Vec3, Vec4};
 use common::texture::{depth_test, depth_view};
@@ -9,10 +12,9 @@ use common::{
     Camera, Chapter, FlyController, Frame, Gpu, Input, Mesh, MeshData, ShaderError, ShaderFile, Target, Vertex, View,
     anyhow, egui, shader, wgpu,
 };
-use fog::{FogBinding, FogSettings, MAX_FAR, fog_shader};
-use terrain::culling::Frustum;
+use fog::{FogBinding, FogSettings, fog_shader};
 use terrain::heightfield::{HeightField, TerrainSettings};
-use terrain::{KEEP_ALL, SKY, Shading, Sun, TerrainRenderer};
+use terrain::{KEEP_ALL, SKY, Shading, Sun, TerrainRenderer, Viewpoint};
 
 // ANCHOR: rng
 /// SplitMix64: a tiny, fast, seedable random number generator. Same seed,
@@ -131,15 +133,24 @@ impl RockInstance {
 // ANCHOR_END: instance
 
 // ANCHOR: scatter
-/// `count` rocks scattered over a 1.6 km square of the plain in front of
-/// the start camera, each on the ground, half buried, never on the cliff.
-/// Placement is uniform, so the first n of them are a fair sample at any n:
-/// the rock-count slider just draws fewer.
+/// How many places a rock may try before the scatter gives up on it.
+pub const ATTEMPTS_PER_ROCK: usize = 20;
+
+/// Up to `count` rocks scattered over a 1.6 km square of the plain in front
+/// of the start camera, each on the ground, half buried, never on a steep
+/// slope. Placement is uniform, so the first n of them are a fair sample at
+/// any n: the rock-count slider just draws fewer. A random place on a slope
+/// is rejected and another tried; on terrain that is steep almost
+/// everywhere (the sliders can make it so) that could go on for ever, so
+/// after `ATTEMPTS_PER_ROCK × count` tries the scatter stops, with fewer rocks.
 pub fn scatter(field: &HeightField, count: usize, seed: u64) -> Vec<RockInstance> {
     let mut rng = Rng::new(seed);
     let centre = plain_camera(field, 1.0).position;
     let mut rocks = Vec::with_capacity(count);
-    while rocks.len() < count {
+    for _ in 0..count.saturating_mul(ATTEMPTS_PER_ROCK) {
+        if rocks.len() == count {
+            break;
+        }
         let x = centre.x + rng.range(-800.0, 800.0);
         let z = centre.z + rng.range(-1400.0, 200.0);
         // Dust does not stay on steep slopes, and neither do rocks.
@@ -170,7 +181,7 @@ pub fn plain_camera(field: &HeightField, aspect: f32) -> Camera {
     let eye = Vec3::new(x, field.height_at(x, z) + 3.5, z);
     let ahead = Vec3::new(x + 40.0, 0.0, z - 200.0);
     let target = Vec3::new(ahead.x, field.height_at(ahead.x, ahead.z) + 2.0, ahead.z);
-    Camera { far: MAX_FAR, near: 0.1, ..Camera::looking_at(eye, target, aspect) }
+    Camera { far: fog::MAX_FAR, near: 0.1, ..Camera::looking_at(eye, target, aspect) }
 }
 
 /// How the rocks are drawn.
@@ -195,13 +206,13 @@ pub struct Setup {
 }
 
 pub const VIEWS: &[View] = &[
-    View { name: "default", about: "the Mars plain: terrain, fog and 200,000 rocks in one draw call" },
-    View { name: "naive", about: "the same plain with 2,000 rocks, one draw call each" },
-    View { name: "rocks-10k", about: "bench: 10,000 rocks, instanced, no terrain" },
-    View { name: "rocks-100k", about: "bench: 100,000 rocks, instanced, no terrain" },
-    View { name: "rocks-1m", about: "bench: 1,000,000 rocks, instanced, no terrain" },
-    View { name: "naive-10k", about: "bench: 10,000 rocks, one draw call each, no terrain" },
-    View { name: "flat-1m", about: "bench: 1,000,000 rocks, instanced, flat colour: the cost floor" },
+    View::mode("default", "the Mars plain: terrain, fog and 200,000 rocks in one draw call"),
+    View::mode("naive", "the same plain with 2,000 rocks, one draw call each"),
+    View::mode("rocks-10k", "bench: 10,000 rocks, instanced, no terrain"),
+    View::mode("rocks-100k", "bench: 100,000 rocks, instanced, no terrain"),
+    View::mode("rocks-1m", "bench: 1,000,000 rocks, instanced, no terrain"),
+    View::mode("naive-10k", "bench: 10,000 rocks, one draw call each, no terrain"),
+    View::mode("flat-1m", "bench: 1,000,000 rocks, instanced, flat colour: the cost floor"),
 ];
 
 fn setup_for(view: &str) -> Setup {
@@ -221,6 +232,52 @@ fn setup_for(view: &str) -> Setup {
 pub const MAX_ROCKS: u32 = 1_000_000;
 pub const MAX_ONE_PER_DRAW: u32 = 20_000;
 const SEED: u64 = 5;
+
+/// The rocks on the GPU: the one mesh, every rock's instance record, and
+/// the first `MAX_ONE_PER_DRAW` of them again, one per 256-byte uniform
+/// slot, for the one-draw-per-rock comparison. Made once per terrain and
+/// device, and shared (a million rocks take a moment to scatter).
+pub struct RockField {
+    mesh: Mesh,
+    instances: wgpu::Buffer,
+    singles: wgpu::Buffer,
+    single_stride: u32,
+    /// How many rocks the scatter placed (fewer than `MAX_ROCKS` only on
+    /// terrain too steep for them).
+    pub placed: u32,
+}
+
+impl RockField {
+    pub fn get(gpu: &Gpu, field: &HeightField) -> Arc<Self> {
+        gpu.cached((field.settings, SEED), || {
+            let device = &gpu.device;
+            let rocks = scatter(field, MAX_ROCKS as usize, SEED);
+            let instances = device.create_buffer_init(&wgpu::util::BufferInitDescriptor {
+                label: Some("rock instances"),
+                contents: bytemuck::cast_slice(&rocks),
+                usage: wgpu::BufferUsages::VERTEX,
+            });
+            let single_stride = (std::mem::size_of::<RockInstance>() as u32)
+                .next_multiple_of(device.limits().min_uniform_buffer_offset_alignment);
+            let mut slots = vec![0u8; single_stride as usize * MAX_ONE_PER_DRAW as usize];
+            for (slot, rock) in slots.chunks_exact_mut(single_stride as usize).zip(&rocks) {
+                slot[..std::mem::size_of::<RockInstance>()].copy_from_slice(bytemuck::bytes_of(rock));
+            }
+            let singles = device.create_buffer_init(&wgpu::util::BufferInitDescriptor {
+                label: Some("one rock per slot"),
+                contents: &slots,
+                usage: wgpu::BufferUsages::UNIFORM,
+            });
+            Self {
+                mesh: rock_mesh(SEED).upload(device, "rock"),
+                instances,
+                singles,
+                single_stride,
+                placed: rocks.len() as u32,
+            }
+        })
+    }
+}
 
 fn rocks_shader() -> ShaderFile {
     shader!("instancing/rocks.wgsl", imports: ["terrain/terrain.wgsl", "fog/fog.wgsl"])
@@ -265,37 +322,75 @@ fn rock_pipeline(
     })
 }
 
-pub struct InstancingChapter {
+/// Draw calls recorded for one picture of the plain.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct DrawCalls {
+    /// One per terrain chunk in view.
+    pub terrain: u32,
+    /// One for all rocks, or one per rock.
+    pub rocks: u32,
+}
+
+impl DrawCalls {
+    pub fn total(&self) -> u32 {
+        self.terrain + self.rocks
+    }
+}
+
+// ANCHOR: mars_plain
+/// The Mars plain: chapter 03's terrain in chapter 04's fog, strewn with this
+/// chapter's rocks. Chapters 05, 06 and 07 each own one and draw it through
+/// explicit inputs: a viewpoint aimed from a camera, the sun, the air, and
+/// what the picture should show.
+pub struct MarsPlain {
     pub terrain: TerrainRenderer,
-    pub fog: FogSettings,
-    /// The light, and the fog's colour (linear RGB); chapter 06 moves both
-    /// with the time of day.
-    pub sun: Sun,
-    pub fog_colour: [f32; 3],
-    pub setup: Setup,
-    pub camera: Camera,
-    pub controller: FlyController,
-    pub fog_binding: FogBinding,
-    rock: Mesh,
-    instances: wgpu::Buffer,
-    /// The first `MAX_ONE_PER_DRAW` rocks again, one per 256-byte slot, for
-    /// the one-draw-per-rock path.
-    singles: wgpu::Buffer,
+    rocks: Arc<RockField>,
+    /// The fog's uniform (group 1), the same for every picture of a frame.
+    pub fog: FogBinding,
     singles_group: wgpu::BindGroup,
-    single_stride: u32,
     layouts: [wgpu::PipelineLayout; 2],
     terrain_pipeline: wgpu::RenderPipeline,
     rock_pipelines: RockPipelines,
-    depth: wgpu::TextureView,
-    target: Target,
-    /// Draw calls in the last frame.
-    pub draw_calls: u32,
-    regenerate_requested: bool,
-    /// The frustum of the last `prepare`, for culling chunks in `draw`.
-    frustum: Frustum,
+    format: wgpu::TextureFormat,
 }
+// ANCHOR_END: mars_plain
 
-impl InstancingChapter {
+impl MarsPlain {
+    /// The plain for targets of `format`.
+    pub fn new(gpu: &Gpu, format: wgpu::TextureFormat) -> anyhow::Result<Self> {
+        let device = &gpu.device;
+        let terrain = TerrainRenderer::new(gpu, TerrainSettings::default());
+        let rocks = RockField::get(gpu, terrain.field());
+        let fog = FogBinding::new(device);
+        let single_layout = device.create_bind_group_layout(&wgpu::BindGroupLayoutDescriptor {
+            label: Some("one rock"),
+            entries: &[wgpu::BindGroupLayoutEntry {
+                binding: 0,
+                visibility: wgpu::ShaderStages::VERTEX,
+                ty: wgpu::BindingType::Buffer {
+                    ty: wgpu::BufferBindingType::Uniform,
+                    has_dynamic_offset: true,
+                    min_binding_size: wgpu::BufferSize::new(std::mem::size_of::<RockInstance>() as u64),
+                },
+                count: None,
+            }],
+        });
+        let layout = |label, groups: &[Option<&wgpu::BindGroupLayout>]| {
+            device.create_pipeline_layout(&wgpu::PipelineLayoutDescriptor {
+                label: Some(label),
+                bind_group_layouts: groups,
+                immediate_size: 0,
+            })
+        };
+        let shared = [Some(&terrain.bind_group_layout), Some(&fog.layout)];
+        let layouts =
+            [layout("rocks", &shared), layout("one rock per draw", &[shared[0], shared[1], Some(&single_layout)])];
+        let terrain_pipeline = terrain.pipeline(gpu, &fog_shader(), &layouts[0], format)?;
+        let rock_pipelines = Self::build_rock_pipelines(gpu, &layouts, format)?;
+        let singles_group = Self::singles_group(device, &single_layout, &rocks);
+        Ok(Self { terrain, rocks, fog, singles_group, layouts, terrain_pipeline, rock_pipelines, format })
+    }
+
     fn build_rock_pipelines(
         gpu: &Gpu,
         layouts: &[wgpu::PipelineLayout; 2],
@@ -310,34 +405,14 @@ impl InstancingChapter {
         .map_err(ShaderError)
     }
 
-    /// Scatters the rocks on the current terrain and uploads both copies.
-    fn upload_rocks(device: &wgpu::Device, field: &HeightField, stride: u32) -> (wgpu::Buffer, wgpu::Buffer) {
-        let rocks = scatter(field, MAX_ROCKS as usize, SEED);
-        let instances = device.create_buffer_init(&wgpu::util::BufferInitDescriptor {
-            label: Some("rock instances"),
-            contents: bytemuck::cast_slice(&rocks),
-            usage: wgpu::BufferUsages::VERTEX,
-        });
-        let mut slots = vec![0u8; stride as usize * MAX_ONE_PER_DRAW as usize];
-        for (slot, rock) in slots.chunks_exact_mut(stride as usize).zip(&rocks) {
-            slot[..std::mem::size_of::<RockInstance>()].copy_from_slice(bytemuck::bytes_of(rock));
-        }
-        let singles = device.create_buffer_init(&wgpu::util::BufferInitDescriptor {
-            label: Some("one rock per slot"),
-            contents: &slots,
-            usage: wgpu::BufferUsages::UNIFORM,
-        });
-        (instances, singles)
-    }
-
-    fn singles_group(device: &wgpu::Device, layout: &wgpu::BindGroupLayout, singles: &wgpu::Buffer) -> wgpu::BindGroup {
+    fn singles_group(device: &wgpu::Device, layout: &wgpu::BindGroupLayout, rocks: &RockField) -> wgpu::BindGroup {
         device.create_bind_group(&wgpu::BindGroupDescriptor {
             label: Some("one rock"),
             layout,
             entries: &[wgpu::BindGroupEntry {
                 binding: 0,
                 resource: wgpu::BindingResource::Buffer(wgpu::BufferBinding {
-                    buffer: singles,
+                    buffer: &rocks.singles,
                     offset: 0,
                     size: wgpu::BufferSize::new(std::mem::size_of::<RockInstance>() as u64),
                 }),
@@ -345,56 +420,63 @@ impl InstancingChapter {
         })
     }
 
-    /// The depth buffer the main pass draws with (a cheap handle: wgpu views
-    /// are reference-counted).
-    pub fn depth(&self) -> wgpu::TextureView {
-        self.depth.clone()
+    /// How many rocks there are to draw.
+    pub fn rocks_placed(&self) -> u32 {
+        self.rocks.placed
     }
 
-    /// Writes the uniforms for drawing the plain from `camera`, keeping
-    /// what `clip` keeps (`KEEP_ALL` for everything). Later chapters draw the
-    /// plain several times a frame, from several cameras, through this.
-    pub fn prepare(&mut self, gpu: &Gpu, camera: &Camera, clip: Vec4) {
-        if std::mem::take(&mut self.regenerate_requested) {
-            self.terrain.regenerate(gpu);
-            // The rocks must follow the new ground.
-            (self.instances, self.singles) = Self::upload_rocks(&gpu.device, &self.terrain.field, self.single_stride);
-            let layout = self.rock_pipelines.one_per_draw.get_bind_group_layout(2);
-            self.singles_group = Self::singles_group(&gpu.device, &layout, &self.singles);
-        }
-        self.camera.far = self.fog.opaque_distance().min(MAX_FAR);
-        let camera = Camera { far: self.camera.far, ..*camera };
-        self.fog_binding.write_with_colour(&gpu.queue, self.fog, self.fog_colour);
-        self.terrain.write_globals_clipped(&gpu.queue, &camera, self.sun, Shading::Shaded, clip);
-        self.frustum = Frustum::from_view_projection(camera.view_projection());
+    /// Makes the terrain again from `self.terrain.settings`, and the rocks on it.
+    pub fn regenerate(&mut self, gpu: &Gpu) {
+        self.terrain.regenerate(gpu);
+        self.rocks = RockField::get(gpu, self.terrain.field());
+        let layout = self.rock_pipelines.one_per_draw.get_bind_group_layout(2);
+        self.singles_group = Self::singles_group(&gpu.device, &layout, &self.rocks);
     }
 
-    /// Draws the terrain and the rocks as prepared into `pass`.
-    pub fn draw(&mut self, pass: &mut wgpu::RenderPass<'_>) {
+    /// Sets the air every picture of this frame is seen through: `fog`, in
+    /// the colour `fog_colour` (linear RGB).
+    pub fn set_air(&self, queue: &wgpu::Queue, fog: FogSettings, fog_colour: [f32; 3]) {
+        self.fog.write_with_colour(queue, fog, fog_colour);
+    }
+
+    /// Aims `viewpoint` from `camera`, lit by `sun`, keeping what `clip` keeps.
+    pub fn aim(&self, queue: &wgpu::Queue, viewpoint: &mut Viewpoint, camera: &Camera, sun: Sun, clip: Vec4) {
+        self.terrain.aim(queue, viewpoint, camera, sun, Shading::Shaded, clip);
+    }
+
+    // ANCHOR: draw
+    /// Records the terrain (unless `setup` leaves it out) and `setup.rocks`
+    /// rocks into `pass`, as seen from `viewpoint`.
+    pub fn draw(&self, pass: &mut wgpu::RenderPass<'_>, viewpoint: &Viewpoint, setup: Setup) -> DrawCalls {
         // Group 0 (camera, sun) and group 1 (fog) serve the terrain and the rocks alike.
-        pass.set_bind_group(1, &self.fog_binding.group, &[]);
-        self.terrain.bind(pass);
-        if self.setup.terrain {
+        pass.set_bind_group(1, &self.fog.group, &[]);
+        self.terrain.bind(pass, viewpoint);
+        let mut calls = DrawCalls::default();
+        if setup.terrain {
             pass.set_pipeline(&self.terrain_pipeline);
-            self.terrain.draw(pass, &self.frustum);
+            calls.terrain = self.terrain.draw(pass, viewpoint) as u32;
         }
-        self.draw_calls = self.draw_rocks(pass) + u32::from(self.setup.terrain);
+        calls.rocks = self.draw_rocks(pass, setup);
+        calls
     }
+    // ANCHOR_END: draw
 
     // ANCHOR: draw_rocks
     /// Draws the first `setup.rocks` rocks; returns the number of draw calls.
-    fn draw_rocks(&self, pass: &mut wgpu::RenderPass<'_>) -> u32 {
-        let Setup { rocks, mode, .. } = self.setup;
-        pass.set_vertex_buffer(0, self.rock.vertex_buffer.slice(..));
-        pass.set_index_buffer(self.rock.index_buffer.slice(..), wgpu::IndexFormat::Uint32);
+    fn draw_rocks(&self, pass: &mut wgpu::RenderPass<'_>, setup: Setup) -> u32 {
+        let Setup { mode, .. } = setup;
+        let rocks = setup.rocks.min(self.rocks.placed);
+        let mesh = &self.rocks.mesh;
+        pass.set_vertex_buffer(0, mesh.vertex_buffer.slice(..));
+        pass.set_index_buffer(mesh.index_buffer.slice(..), wgpu::IndexFormat::Uint32);
         match mode {
             Mode::Instanced | Mode::Flat => {
                 let pipeline =
                     if mode == Mode::Flat { &self.rock_pipelines.flat } else { &self.rock_pipelines.instanced };
                 pass.set_pipeline(pipeline);
-                pass.set_vertex_buffer(1, self.instances.slice(..));
+                pass.set_vertex_buffer(1, self.rocks.instances.slice(..));
                 // Every rock, one call: the GPU loops over the instances itself.
-                pass.draw_indexed(0..self.rock.index_count, 0, 0..rocks);
+                pass.draw_indexed(0..mesh.index_count, 0, 0..rocks);
                 1
             }
             Mode::OnePerDraw => {
@@ -403,14 +485,36 @@ impl InstancingChapter {
                 for i in 0..rocks {
                     // A bind group change and a draw per rock, validated and
                     // recorded one by one: this is the cost instancing removes.
-                    pass.set_bind_group(2, &self.singles_group, &[i * self.single_stride]);
-                    pass.draw_indexed(0..self.rock.index_count, 0, 0..1);
+                    pass.set_bind_group(2, &self.singles_group, &[i * self.rocks.single_stride]);
+                    pass.draw_indexed(0..mesh.index_count, 0, 0..1);
                 }
                 rocks
             }
         }
     }
     // ANCHOR_END: draw_rocks
+
+    /// Rebuilds the terrain and rock pipelines from the WGSL on disk.
+    pub fn reload_shaders(&mut self, gpu: &Gpu) -> Result<(), ShaderError> {
+        let terrain = self.terrain.pipeline(gpu, &fog_shader(), &self.layouts[0], self.format)?;
+        self.rock_pipelines = Self::build_rock_pipelines(gpu, &self.layouts, self.format)?;
+        self.terrain_pipeline = terrain;
+        Ok(())
+    }
+}
+
+pub struct InstancingChapter {
+    pub plain: MarsPlain,
+    pub fog: FogSettings,
+    pub setup: Setup,
+    pub camera: Camera,
+    pub controller: FlyController,
+    viewpoint: Viewpoint,
+    depth: wgpu::TextureView,
+    target: Target,
+    /// Draw calls in the last frame.
+    pub draw_calls: DrawCalls,
+    regenerate_requested: bool,
 }
 
 impl Chapter for InstancingChapter {
@@ -421,60 +525,18 @@ impl Chapter for InstancingChapter {
     const BENCH_FRAMES: u32 = 10;
 
     fn new(gpu: &Gpu, target: Target) -> anyhow::Result<Self> {
-        let device = &gpu.device;
-        let terrain = TerrainRenderer::new(gpu, TerrainSettings::default());
-        let fog_binding = FogBinding::new(device);
-        let single_stride = (std::mem::size_of::<RockInstance>() as u32)
-            .next_multiple_of(device.limits().min_uniform_buffer_offset_alignment);
-        let (instances, singles) = Self::upload_rocks(device, &terrain.field, single_stride);
-        let single_layout = device.create_bind_group_layout(&wgpu::BindGroupLayoutDescriptor {
-            label: Some("one rock"),
-            entries: &[wgpu::BindGroupLayoutEntry {
-                binding: 0,
-                visibility: wgpu::ShaderStages::VERTEX,
-                ty: wgpu::BindingType::Buffer {
-                    ty: wgpu::BufferBindingType::Uniform,
-                    has_dynamic_offset: true,
-                    min_binding_size: wgpu::BufferSize::new(std::mem::size_of::<RockInstance>() as u64),
-                },
-                count: None,
-            }],
-        });
-        let singles_group = Self::singles_group(device, &single_layout, &singles);
-        let layout = |label, groups: &[Option<&wgpu::BindGroupLayout>]| {
-            device.create_pipeline_layout(&wgpu::PipelineLayoutDescriptor {
-                label: Some(label),
-                bind_group_layouts: groups,
-                immediate_size: 0,
-            })
-        };
-        let shared = [Some(&terrain.bind_group_layout), Some(&fog_binding.layout)];
-        let layouts =
-            [layout("rocks", &shared), layout("one rock per draw", &[shared[0], shared[1], Some(&single_layout)])];
-        let terrain_pipeline = terrain.pipeline(gpu, &fog_shader(), &layouts[0], target.format)?;
-        let rock_pipelines = Self::build_rock_pipelines(gpu, &layouts, target.format)?;
+        let plain = MarsPlain::new(gpu, target.format)?;
         Ok(Self {
-            camera: plain_camera(&terrain.field, target.aspect()),
+            camera: plain_camera(plain.terrain.field(), target.aspect()),
             controller: FlyController { speed: 20.0, ..Default::default() },
             fog: FogSettings::HAZE,
-            sun: Sun::AFTERNOON,
-            fog_colour: [SKY.r as f32, SKY.g as f32, SKY.b as f32],
             setup: setup_for("default"),
-            terrain,
-            fog_binding,
-            rock: rock_mesh(SEED).upload(device, "rock"),
-            instances,
-            singles,
-            singles_group,
-            single_stride,
-            layouts,
-            terrain_pipeline,
-            rock_pipelines,
-            depth: depth_view(device, target.width, target.height),
+            viewpoint: plain.terrain.viewpoint(&gpu.device),
+            plain,
+            depth: depth_view(&gpu.device, target.width, target.height),
             target,
-            draw_calls: 0,
+            draw_calls: DrawCalls::default(),
             regenerate_requested: false,
-            frustum: Frustum::from_view_projection(Camera::looking_at(Vec3::ZERO, Vec3::NEG_Z, 1.0).view_projection()),
         })
     }
 
@@ -488,16 +550,30 @@ impl Chapter for InstancingChapter {
         self.setup = setup_for(VIEWS[view].name);
     }
 
+    fn reset_camera(&mut self, _view: usize) {
+        self.camera = plain_camera(self.plain.terrain.field(), self.target.aspect());
+    }
+
+    fn camera_mut(&mut self) -> Option<&mut Camera> {
+        Some(&mut self.camera)
+    }
+
     fn update(&mut self, input: &Input, dt: f32) {
         self.controller.update(&mut self.camera, input, dt);
     }
 
     // ANCHOR: render
     fn render(&mut self, gpu: &Gpu, frame: &mut Frame) {
-        let camera = self.camera;
-        self.prepare(gpu, &camera, KEEP_ALL);
+        if std::mem::take(&mut self.regenerate_requested) {
+            self.plain.regenerate(gpu);
+        }
+        // Chapter 04: nothing beyond the fog's opaque distance needs drawing.
+        self.camera.far = self.fog.far_plane();
+        let sky = [SKY.r as f32, SKY.g as f32, SKY.b as f32];
+        self.plain.set_air(&gpu.queue, self.fog, sky);
+        self.plain.aim(&gpu.queue, &mut self.viewpoint, &self.camera, Sun::AFTERNOON, KEEP_ALL);
         let mut pass = frame.scene_pass("terrain and rocks", SKY, &self.depth);
-        self.draw(&mut pass);
+        self.draw_calls = self.plain.draw(&mut pass, &self.viewpoint, self.setup);
     }
     // ANCHOR_END: render
 
@@ -508,34 +584,43 @@ impl Chapter for InstancingChapter {
             ui.radio_value(&mut s.mode, Mode::OnePerDraw, "one draw per rock");
             ui.radio_value(&mut s.mode, Mode::Flat, "flat");
         });
-        let max = if s.mode == Mode::OnePerDraw { MAX_ONE_PER_DRAW } else { MAX_ROCKS };
+        let max = if s.mode == Mode::OnePerDraw { MAX_ONE_PER_DRAW } else { self.plain.rocks_placed() };
         s.rocks = s.rocks.min(max);
         ui.add(egui::Slider::new(&mut s.rocks, 0..=max).logarithmic(true).text("rocks"));
         ui.checkbox(&mut s.terrain, "terrain");
-        ui.label(format!("draw calls last frame: {}", self.draw_calls));
+        let calls = self.draw_calls;
+        ui.label(format!(
+            "draw calls last frame: {} ({} terrain chunks, {} for the rocks)",
+            calls.total(),
+            calls.terrain,
+            calls.rocks
+        ));
+        if self.plain.rocks_placed() < MAX_ROCKS {
+            ui.label(format!("this terrain is steep: only {} rocks found room", self.plain.rocks_placed()));
+        }
         ui.add(egui::Slider::new(&mut self.fog.density, 0.0..=0.01).logarithmic(true).text("fog density"));
         ui.collapsing("terrain settings", |ui| {
-            self.regenerate_requested |= self.terrain.settings_ui(ui);
+            self.regenerate_requested |= self.plain.terrain.settings_ui(ui);
         });
         ui.add(egui::Slider::new(&mut self.controller.speed, 2.0..=200.0).logarithmic(true).text("speed (m/s)"));
     }
 
     fn stats(&self) -> String {
+        let calls = self.draw_calls;
         format!(
-            "{} rocks, {:?}, {} draw calls; {} vertices per rock, {} bytes per instance",
-            self.setup.rocks,
+            "{} rocks, {:?}; {} draw calls ({} terrain chunks + {} for the rocks); {} vertices per rock, {} bytes per instance",
+            self.setup.rocks.min(self.plain.rocks_placed()),
             self.setup.mode,
-            self.draw_calls,
-            self.rock.index_count,
+            calls.total(),
+            calls.terrain,
+            calls.rocks,
+            rock_mesh(SEED).vertices.len(),
             std::mem::size_of::<RockInstance>()
         )
     }
 
     fn reload_shaders(&mut self, gpu: &Gpu) -> Result<(), ShaderError> {
-        let terrain = self.terrain.pipeline(gpu, &fog_shader(), &self.layouts[0], self.target.format)?;
-        self.rock_pipelines = Self::build_rock_pipelines(gpu, &self.layouts, self.target.format)?;
-        self.terrain_pipeline = terrain;
-        Ok(())
+        self.plain.reload_shaders(gpu)
     }
 }
 
@@ -580,6 +665,21 @@ mod tests {
             let n = field.normal(x as i64, z as i64);
             assert!(n.y >= 0.9);
         }
+    }
+
+    #[test]
+    fn the_scatter_gives_up_where_the_ground_is_too_steep() {
+        // A ramp rising 1.2 m per metre everywhere: no slope under 25°.
+        let settings = TerrainSettings::default();
+        let size = settings.samples();
+        let heights = (0..size * size).map(|i| 1.2 * (i % size) as f32).collect();
+        let field = HeightField { settings, size, heights };
+        assert!(scatter(&field, 1_000, SEED).is_empty(), "no rock belongs on this slope, and the scatter must stop");
+        // Where half the ground is flat, the scatter still fills its count.
+        let half: Vec<f32> =
+            (0..size * size).map(|i| if i % size < size / 2 { 0.0 } else { 1.2 * (i % size) as f32 }).collect();
+        let field = HeightField { settings, size, heights: half };
+        assert_eq!(scatter(&field, 1_000, SEED).len(), 1_000);
     }
 
     #[test]

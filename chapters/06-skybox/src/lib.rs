@@ -1,19 +1,21 @@
 //! Chapter 06: a sky box. Two cube maps, day and night, blended by the time
 //! of day and turning with it; the sun painted in the day sky is the light
 //! the ground is lit by, and the fog takes the colour of the sky's horizon.
-//! The scene is chapter 05's Mars plain.
+//! The scene is chapter 05's Mars plain, under a `Sky` that chapter 07 reuses.
 
 use std::f32::consts::TAU;
 
 use common::chapter::uniform_entry;
-use common::glam::{Mat4, Quat, Vec3, Vec4};
-use common::texture::{ColorSpace, cubemap_from_images, decode_faces};
+use common::glam::{Mat4, Quat, Vec3};
+use common::texture::{ColorSpace, Texture, cubemap_from_images, decode_faces, depth_view};
 use common::wgpu::util::DeviceExt as _;
 use common::{
-    Camera, Chapter, Frame, Gpu, Input, ShaderError, ShaderFile, Target, View, anyhow, egui, image, shader, wgpu,
+    Camera, Chapter, FlyController, Frame, Gpu, Input, ShaderError, ShaderFile, Target, View, anyhow, egui, fullscreen,
+    image, shader, wgpu,
 };
-use instancing::InstancingChapter;
-use terrain::{KEEP_ALL, Sun};
+use fog::FogSettings;
+use instancing::{DrawCalls, MarsPlain, Setup, plain_camera};
+use terrain::{KEEP_ALL, Sun, Viewpoint};
 
 // ANCHOR: faces
 /// One face of a sky under `assets/skybox/`: its name, for errors, and its
@@ -105,21 +107,6 @@ fn srgb_to_linear(byte: u8) -> f32 {
 }
 // ANCHOR_END: horizon
 
-pub const VIEWS: &[View] = &[
-    View { name: "day", about: "mid-morning: the sun high in the east, the plain in full light" },
-    View { name: "dusk", about: "facing west as the sun sets in its blue Martian halo" },
-    View { name: "night", about: "stars over the plain, lit by the sky alone" },
-];
-
-/// Time of day each view starts at.
-fn start_phase(view: &str) -> f32 {
-    match view {
-        "dusk" => 0.745,
-        "night" => 0.02,
-        _ => 0.40,
-    }
-}
-
 /// `Sky` in sky.wgsl.
 #[repr(C)]
 #[derive(Clone, Copy, bytemuck::Pod, bytemuck::Zeroable)]
@@ -136,59 +123,7 @@ fn dust_drift(phase: f32) -> Quat {
 }
 
 fn sky_shader() -> ShaderFile {
-    shader!("skybox/sky.wgsl")
-}
-
-pub struct SkyboxChapter {
-    /// Chapter 05's scene: terrain, fog and rocks.
-    pub plain: InstancingChapter,
-    /// The time of day at scene time 0, and how long a day lasts (s).
-    pub start_phase: f32,
-    pub day_seconds: f32,
-    horizons: [[f32; 3]; 2],
-    uniform: wgpu::Buffer,
-    bind_group: wgpu::BindGroup,
-    layout: wgpu::PipelineLayout,
-    pipeline: wgpu::RenderPipeline,
-    format: wgpu::TextureFormat,
-    phase: f32,
-}
-
-impl SkyboxChapter {
-    // ANCHOR: time_of_day
-    /// Sets the time of day from scene time: the sun, the light on the
-    /// ground, and the fog colour between the night and day horizons.
-    pub fn set_time(&mut self, time: f32) {
-        self.phase = (self.start_phase + time / self.day_seconds).rem_euclid(1.0);
-        let sun = sun_at(self.phase);
-        let blend = day_blend(sun);
-        let [day, night] = self.horizons;
-        self.plain.sun = sun;
-        self.plain.fog_colour = [0, 1, 2].map(|c| night[c] + (day[c] - night[c]) * blend);
-    }
-    // ANCHOR_END: time_of_day
-
-    /// Writes the uniforms for drawing the plain and the sky from `camera`.
-    pub fn prepare(&mut self, gpu: &Gpu, camera: &Camera, clip: Vec4) {
-        self.plain.prepare(gpu, camera, clip);
-        let turn_only = Mat4::look_to_rh(Vec3::ZERO, camera.forward(), Vec3::Y);
-        let sun = self.plain.sun;
-        let uniform = SkyUniform {
-            clip_to_world: (camera.projection() * turn_only).inverse().to_cols_array_2d(),
-            world_to_day: Mat4::from_quat(dust_drift(self.phase).inverse()).to_cols_array_2d(),
-            world_to_stars: Mat4::from_quat(celestial_turn(self.phase).inverse()).to_cols_array_2d(),
-            sun: sun.direction.normalize().extend(day_blend(sun)).into(),
-        };
-        gpu.queue.write_buffer(&self.uniform, 0, bytemuck::bytes_of(&uniform));
-    }
-
-    /// Draws the plain, then the sky wherever the plain left the depth at 1.
-    pub fn draw(&mut self, pass: &mut wgpu::RenderPass<'_>) {
-        self.plain.draw(pass);
-        pass.set_pipeline(&self.pipeline);
-        pass.set_bind_group(0, &self.bind_group, &[]);
-        pass.draw(0..3, 0..1);
-    }
+    shader!("skybox/sky.wgsl", imports: ["common/fullscreen.wgsl"])
 }
 
 // ANCHOR: pipeline
@@ -198,63 +133,52 @@ fn sky_pipeline(
     format: wgpu::TextureFormat,
 ) -> Result<wgpu::RenderPipeline, ShaderError> {
     let module = sky_shader().module(&gpu.device)?;
+    // Test against the scene's depth, but leave it alone: the sky is at the
+    // far plane, and passes only where the buffer still says 1.
+    let depth = wgpu::DepthStencilState {
+        format: common::texture::DEPTH_FORMAT,
+        depth_write_enabled: Some(false),
+        depth_compare: Some(wgpu::CompareFunction::LessEqual),
+        stencil: Default::default(),
+        bias: Default::default(),
+    };
     gpu.catch_validation(|| {
-        gpu.device.create_render_pipeline(&wgpu::RenderPipelineDescriptor {
-            label: Some("sky"),
-            layout: Some(layout),
-            vertex: wgpu::VertexState {
-                module: &module,
-                entry_point: Some("vs_sky"),
-                buffers: &[],
-                compilation_options: Default::default(),
-            },
-            primitive: Default::default(),
-            // Test against the scene's depth, but leave it alone: the sky is
-            // at the far plane, and passes only where the buffer still says 1.
-            depth_stencil: Some(wgpu::DepthStencilState {
-                format: common::texture::DEPTH_FORMAT,
-                depth_write_enabled: Some(false),
-                depth_compare: Some(wgpu::CompareFunction::LessEqual),
-                stencil: Default::default(),
-                bias: Default::default(),
-            }),
-            multisample: Default::default(),
-            fragment: Some(wgpu::FragmentState {
-                module: &module,
-                entry_point: Some("fs_sky"),
-                targets: &[Some(format.into())],
-                compilation_options: Default::default(),
-            }),
-            multiview_mask: None,
-            cache: None,
-        })
+        fullscreen::pipeline(&gpu.device, "sky", layout, &module, "fs_sky", format.into(), Some(depth))
     })
     .map_err(ShaderError)
 }
 // ANCHOR_END: pipeline
 
-impl Chapter for SkyboxChapter {
-    const NAME: &'static str = env!("CARGO_PKG_NAME");
-    const TITLE: &'static str = "06 · Sky box";
-    const VIEWS: &'static [View] = VIEWS;
-    const SNAPSHOT_TIME: f32 = 0.0;
-    const KEYS: &'static [(&'static str, &'static str)] = common::FlyController::KEYS;
-    const BENCH_FRAMES: u32 = 10;
+/// The sky's uniform for one camera. A frame that draws the sky from several
+/// cameras has one each, like chapter 03's terrain viewpoints.
+pub struct SkyViewpoint {
+    uniform: wgpu::Buffer,
+    bind_group: wgpu::BindGroup,
+}
 
-    fn new(gpu: &Gpu, target: Target) -> anyhow::Result<Self> {
+// ANCHOR: sky
+/// The sky: day and night cube maps, the sun, and the colour of the
+/// horizon for the fog. Inputs: a camera and the time of day.
+pub struct Sky {
+    day: Texture,
+    night: Texture,
+    /// Day and night horizon colours, measured from the cube maps.
+    horizons: [[f32; 3]; 2],
+    bind_group_layout: wgpu::BindGroupLayout,
+    layout: wgpu::PipelineLayout,
+    pipeline: wgpu::RenderPipeline,
+    format: wgpu::TextureFormat,
+}
+// ANCHOR_END: sky
+
+impl Sky {
+    pub fn new(gpu: &Gpu, format: wgpu::TextureFormat) -> anyhow::Result<Self> {
         let device = &gpu.device;
-        let plain = InstancingChapter::new(gpu, target)?;
         // Decoded once: for the cube maps and to measure their horizons.
         let (day_faces, night_faces) = (decode_faces(&DAY)?, decode_faces(&NIGHT)?);
         let day = cubemap_from_images(device, &gpu.queue, &day_faces, ColorSpace::Srgb, "day sky");
         let night = cubemap_from_images(device, &gpu.queue, &night_faces, ColorSpace::Srgb, "night sky");
         let horizons = [horizon_colour(&day_faces), horizon_colour(&night_faces)];
-
-        let uniform = device.create_buffer_init(&wgpu::util::BufferInitDescriptor {
-            label: Some("sky"),
-            contents: &[0; std::mem::size_of::<SkyUniform>()],
-            usage: wgpu::BufferUsages::UNIFORM | wgpu::BufferUsages::COPY_DST,
-        });
         let cube = |binding| wgpu::BindGroupLayoutEntry {
             binding,
             visibility: wgpu::ShaderStages::FRAGMENT,
@@ -279,64 +203,186 @@ impl Chapter for SkyboxChapter {
                 },
             ],
         });
-        let bind_group = device.create_bind_group(&wgpu::BindGroupDescriptor {
-            label: Some("sky"),
-            layout: &bind_group_layout,
-            entries: &[
-                wgpu::BindGroupEntry { binding: 0, resource: uniform.as_entire_binding() },
-                wgpu::BindGroupEntry { binding: 1, resource: wgpu::BindingResource::TextureView(&day.view) },
-                wgpu::BindGroupEntry { binding: 2, resource: wgpu::BindingResource::TextureView(&night.view) },
-                wgpu::BindGroupEntry { binding: 3, resource: wgpu::BindingResource::Sampler(&day.sampler) },
-            ],
-        });
         let layout = device.create_pipeline_layout(&wgpu::PipelineLayoutDescriptor {
             label: Some("sky"),
             bind_group_layouts: &[Some(&bind_group_layout)],
             immediate_size: 0,
         });
-        let pipeline = sky_pipeline(gpu, &layout, target.format)?;
+        let pipeline = sky_pipeline(gpu, &layout, format)?;
+        Ok(Self { day, night, horizons, bind_group_layout, layout, pipeline, format })
+    }
+
+    pub fn viewpoint(&self, device: &wgpu::Device) -> SkyViewpoint {
+        let uniform = device.create_buffer_init(&wgpu::util::BufferInitDescriptor {
+            label: Some("sky"),
+            contents: &[0; std::mem::size_of::<SkyUniform>()],
+            usage: wgpu::BufferUsages::UNIFORM | wgpu::BufferUsages::COPY_DST,
+        });
+        let bind_group = device.create_bind_group(&wgpu::BindGroupDescriptor {
+            label: Some("sky"),
+            layout: &self.bind_group_layout,
+            entries: &[
+                wgpu::BindGroupEntry { binding: 0, resource: uniform.as_entire_binding() },
+                wgpu::BindGroupEntry { binding: 1, resource: wgpu::BindingResource::TextureView(&self.day.view) },
+                wgpu::BindGroupEntry { binding: 2, resource: wgpu::BindingResource::TextureView(&self.night.view) },
+                wgpu::BindGroupEntry { binding: 3, resource: wgpu::BindingResource::Sampler(&self.day.sampler) },
+            ],
+        });
+        SkyViewpoint { uniform, bind_group }
+    }
+
+    // ANCHOR: fog_colour
+    /// The colour the fog must have at time of day `phase`: between the
+    /// night and day horizons, as much day as the sky shows.
+    pub fn fog_colour(&self, phase: f32) -> [f32; 3] {
+        let blend = day_blend(sun_at(phase));
+        let [day, night] = self.horizons;
+        [0, 1, 2].map(|c| night[c] + (day[c] - night[c]) * blend)
+    }
+    // ANCHOR_END: fog_colour
+
+    /// Writes the sky's uniform for drawing it from `camera` at time of day `phase`.
+    pub fn aim(&self, queue: &wgpu::Queue, viewpoint: &SkyViewpoint, camera: &Camera, phase: f32) {
+        let turn_only = Mat4::look_to_rh(Vec3::ZERO, camera.forward(), Vec3::Y);
+        let sun = sun_at(phase);
+        let uniform = SkyUniform {
+            clip_to_world: (camera.projection() * turn_only).inverse().to_cols_array_2d(),
+            world_to_day: Mat4::from_quat(dust_drift(phase).inverse()).to_cols_array_2d(),
+            world_to_stars: Mat4::from_quat(celestial_turn(phase).inverse()).to_cols_array_2d(),
+            sun: sun.direction.normalize().extend(day_blend(sun)).into(),
+        };
+        queue.write_buffer(&viewpoint.uniform, 0, bytemuck::bytes_of(&uniform));
+    }
+
+    /// Draws the sky wherever the depth buffer still holds 1: call it after
+    /// everything else in the pass.
+    pub fn draw(&self, pass: &mut wgpu::RenderPass<'_>, viewpoint: &SkyViewpoint) {
+        pass.set_pipeline(&self.pipeline);
+        pass.set_bind_group(0, &viewpoint.bind_group, &[]);
+        pass.draw(0..3, 0..1);
+    }
+
+    pub fn reload_shaders(&mut self, gpu: &Gpu) -> Result<(), ShaderError> {
+        self.pipeline = sky_pipeline(gpu, &self.layout, self.format)?;
+        Ok(())
+    }
+}
+
+pub const VIEWS: &[View] = &[
+    View::mode("day", "mid-morning: the sun high in the east, the plain in full light"),
+    View::preset("dusk", "facing west as the sun sets in its blue Martian halo"),
+    View::mode("night", "stars over the plain, lit by the sky alone"),
+];
+
+/// Time of day each view starts at.
+fn start_phase(view: &str) -> f32 {
+    match view {
+        "dusk" => 0.745,
+        "night" => 0.02,
+        _ => 0.40,
+    }
+}
+
+/// The plain's camera, turned to face the sunset: west (−x), a little
+/// south, a little up.
+fn dusk_camera(field: &terrain::heightfield::HeightField, aspect: f32) -> Camera {
+    Camera { yaw: 0.95f32.atan2(-0.3), pitch: 4f32.to_radians(), ..plain_camera(field, aspect) }
+}
+
+pub struct SkyboxChapter {
+    pub plain: MarsPlain,
+    pub sky: Sky,
+    pub camera: Camera,
+    pub controller: FlyController,
+    pub fog: FogSettings,
+    pub rocks: Setup,
+    /// The time of day at scene time 0, and how long a day lasts (s).
+    pub start_phase: f32,
+    pub day_seconds: f32,
+    /// The time of day of the last frame (0 midnight, 0.5 noon).
+    phase: f32,
+    viewpoint: (Viewpoint, SkyViewpoint),
+    depth: wgpu::TextureView,
+    target: Target,
+    draw_calls: DrawCalls,
+}
+
+impl SkyboxChapter {
+    // ANCHOR: time_of_day
+    /// The time of day at scene time `time`: 0 midnight, 0.5 noon.
+    pub fn phase_at(&self, time: f32) -> f32 {
+        (self.start_phase + time / self.day_seconds).rem_euclid(1.0)
+    }
+    // ANCHOR_END: time_of_day
+}
+
+impl Chapter for SkyboxChapter {
+    const NAME: &'static str = env!("CARGO_PKG_NAME");
+    const TITLE: &'static str = "06 · Sky box";
+    const VIEWS: &'static [View] = VIEWS;
+    const SNAPSHOT_TIME: f32 = 0.0;
+    const KEYS: &'static [(&'static str, &'static str)] = FlyController::KEYS;
+    const BENCH_FRAMES: u32 = 10;
+
+    fn new(gpu: &Gpu, target: Target) -> anyhow::Result<Self> {
+        let plain = MarsPlain::new(gpu, target.format)?;
+        let sky = Sky::new(gpu, target.format)?;
         Ok(Self {
-            plain,
+            camera: plain_camera(plain.terrain.field(), target.aspect()),
+            controller: FlyController { speed: 20.0, ..Default::default() },
+            fog: FogSettings::HAZE,
+            rocks: instancing::Setup { rocks: 200_000, mode: instancing::Mode::Instanced, terrain: true },
             start_phase: start_phase("day"),
             day_seconds: 240.0,
-            horizons,
-            uniform,
-            bind_group,
-            layout,
-            pipeline,
-            format: target.format,
-            phase: 0.0,
+            phase: start_phase("day"),
+            viewpoint: (plain.terrain.viewpoint(&gpu.device), sky.viewpoint(&gpu.device)),
+            depth: depth_view(&gpu.device, target.width, target.height),
+            plain,
+            sky,
+            target,
+            draw_calls: DrawCalls::default(),
         })
     }
 
     fn resize(&mut self, gpu: &Gpu, target: Target) {
-        self.plain.resize(gpu, target);
+        self.target = target;
+        self.camera.aspect = target.aspect();
+        self.depth = depth_view(&gpu.device, target.width, target.height);
     }
 
     fn select_view(&mut self, view: usize) {
-        self.plain.select_view(0);
-        let name = VIEWS[view].name;
-        self.start_phase = start_phase(name);
-        if name == "dusk" {
-            // Turn to face the sunset: west (−x), a little south, a little up.
-            self.plain.camera.yaw = 0.95f32.atan2(-0.3);
-            self.plain.camera.pitch = 4f32.to_radians();
-        }
+        self.start_phase = start_phase(VIEWS[view].name);
+    }
+
+    fn reset_camera(&mut self, view: usize) {
+        let (field, aspect) = (self.plain.terrain.field(), self.target.aspect());
+        self.camera = match VIEWS[view].name {
+            "dusk" => dusk_camera(field, aspect),
+            _ => plain_camera(field, aspect),
+        };
+    }
+
+    fn camera_mut(&mut self) -> Option<&mut Camera> {
+        Some(&mut self.camera)
     }
 
     fn update(&mut self, input: &Input, dt: f32) {
-        self.plain.update(input, dt);
+        self.controller.update(&mut self.camera, input, dt);
     }
 
     // ANCHOR: render
     fn render(&mut self, gpu: &Gpu, frame: &mut Frame) {
-        self.set_time(frame.time);
-        let camera = self.plain.camera;
-        self.prepare(gpu, &camera, KEEP_ALL);
-        let depth = self.plain.depth();
+        // The time of day sets the light on the ground and the fog's colour.
+        self.phase = self.phase_at(frame.time);
+        self.camera.far = self.fog.far_plane();
+        self.plain.set_air(&gpu.queue, self.fog, self.sky.fog_colour(self.phase));
+        let (ground, sky) = &mut self.viewpoint;
+        self.plain.aim(&gpu.queue, ground, &self.camera, sun_at(self.phase), KEEP_ALL);
+        self.sky.aim(&gpu.queue, sky, &self.camera, self.phase);
         // The clear colour is never seen: the sky covers whatever the plain leaves.
-        let mut pass = frame.scene_pass("plain and sky", terrain::SKY, &depth);
-        self.draw(&mut pass);
+        let mut pass = frame.scene_pass("plain and sky", terrain::SKY, &self.depth);
+        self.draw_calls = self.plain.draw(&mut pass, ground, self.rocks);
+        self.sky.draw(&mut pass, sky);
     }
     // ANCHOR_END: render
 
@@ -345,18 +391,27 @@ impl Chapter for SkyboxChapter {
         ui.label(format!("time of day {:02}:{:02}", hours as u32, ((hours.fract()) * 60.0) as u32));
         ui.add(egui::Slider::new(&mut self.start_phase, 0.0..=1.0).text("time of day at t = 0"));
         ui.add(egui::Slider::new(&mut self.day_seconds, 10.0..=1200.0).logarithmic(true).text("day length (s)"));
-        ui.separator();
-        self.plain.ui(ui);
+        ui.add(egui::Slider::new(&mut self.fog.density, 0.0..=0.01).logarithmic(true).text("fog density"));
+        let max = self.plain.rocks_placed();
+        ui.add(egui::Slider::new(&mut self.rocks.rocks, 0..=max).logarithmic(true).text("rocks"));
+        ui.add(egui::Slider::new(&mut self.controller.speed, 2.0..=200.0).logarithmic(true).text("speed (m/s)"));
     }
 
     fn stats(&self) -> String {
-        format!("time of day {:.3}; {}", self.phase, self.plain.stats())
+        let calls = self.draw_calls;
+        format!(
+            "time of day {:.3}; {} rocks; {} draw calls ({} terrain chunks, {} for the rocks, 1 for the sky)",
+            self.phase,
+            self.rocks.rocks.min(self.plain.rocks_placed()),
+            calls.total() + 1,
+            calls.terrain,
+            calls.rocks
+        )
     }
 
     fn reload_shaders(&mut self, gpu: &Gpu) -> Result<(), ShaderError> {
         self.plain.reload_shaders(gpu)?;
-        self.pipeline = sky_pipeline(gpu, &self.layout, self.format)?;
-        Ok(())
+        self.sky.reload_shaders(gpu)
     }
 }
 

@@ -10,19 +10,21 @@ use common::glam::{Vec2, Vec4};
 use common::texture::{ColorSpace, Texture, depth_test, depth_view};
 use common::wgpu::util::DeviceExt as _;
 use common::{
-    Camera, Chapter, Frame, Gpu, Input, Mesh, MeshData, ShaderError, ShaderFile, Target, View, anyhow, egui,
-    primitives, shader, wgpu,
+    Camera, Chapter, FlyController, Frame, Gpu, Input, Mesh, MeshData, PassTimer, ShaderError, ShaderFile, Target,
+    View, anyhow, egui, fullscreen, primitives, shader, wgpu,
 };
-use skybox::SkyboxChapter;
+use fog::FogSettings;
+use instancing::{MarsPlain, Mode, Setup, plain_camera};
+use skybox::{Sky, SkyViewpoint, sun_at};
 use terrain::heightfield::HeightField;
-use terrain::{KEEP_ALL, SKY};
+use terrain::{KEEP_ALL, SKY, Viewpoint};
 
 pub const VIEWS: &[View] = &[
-    View { name: "default", about: "the lake: reflection and refraction mixed by Fresnel, ripples and waves" },
-    View { name: "reflection", about: "the reflection picture, full screen: the scene above the water, from below it" },
-    View { name: "refraction", about: "the refraction picture, full screen: the scene below the water" },
-    View { name: "waves", about: "the geometric waves three times as strong" },
-    View { name: "no-fresnel", about: "reflection and refraction half and half at every angle" },
+    View::mode("default", "the lake: reflection and refraction mixed by Fresnel, ripples and waves"),
+    View::mode("reflection", "the reflection picture, full screen: the scene above the water, from below it"),
+    View::mode("refraction", "the refraction picture, full screen: the scene below the water"),
+    View::preset("waves", "the geometric waves three times as strong, seen from 6 m above the water"),
+    View::mode("no-fresnel", "reflection and refraction half and half at every angle"),
 ];
 
 /// What the overlay changes.
@@ -89,7 +91,7 @@ struct Picture {
 }
 
 impl Picture {
-    fn new(device: &wgpu::Device, format: wgpu::TextureFormat, width: u32, height: u32) -> Self {
+    fn new(device: &wgpu::Device, format: wgpu::TextureFormat, (width, height): (u32, u32)) -> Self {
         let colour = device
             .create_texture(&wgpu::TextureDescriptor {
                 label: Some("water picture"),
@@ -104,6 +106,14 @@ impl Picture {
             .create_view(&Default::default());
         Self { colour, depth: depth_view(device, width, height) }
     }
+}
+
+/// The uniforms for drawing the plain and the sky from one camera. The
+/// frame draws three pictures, each from its own camera, so it keeps three
+/// of these, and all three pictures are recorded before one submit.
+struct Eye {
+    ground: Viewpoint,
+    sky: SkyViewpoint,
 }
 
 /// `Water` in water.wgsl.
@@ -121,20 +131,36 @@ fn water_shader() -> ShaderFile {
 }
 
 fn show_shader() -> ShaderFile {
-    shader!("water/show.wgsl")
+    shader!("water/show.wgsl", imports: ["common/fullscreen.wgsl"])
 }
 
+/// Which of the frame's pictures an `Eye` draws.
+const REFLECTION: usize = 0;
+const REFRACTION: usize = 1;
+const MAIN: usize = 2;
+
+/// The time of day the lake is seen at (mid-morning, chapter 06's `day`).
+const START_PHASE: f32 = 0.40;
+
 pub struct WaterChapter {
-    /// Chapter 06's scene: the plain under the sky.
-    pub sky: SkyboxChapter,
+    pub plain: MarsPlain,
+    pub sky: Sky,
+    pub camera: Camera,
+    pub controller: FlyController,
+    pub fog: FogSettings,
+    pub rocks: Setup,
     pub settings: WaterSettings,
+    /// Seconds in a day (chapter 06's slider).
+    pub day_seconds: f32,
     pub level: f32,
     /// The lake's centre (x, z) and side, metres.
     pub centre: Vec2,
     pub size: f32,
     grid: Mesh,
+    eyes: [Eye; 3],
     reflection: Picture,
     refraction: Picture,
+    depth: wgpu::TextureView,
     dudv: Texture,
     normal_map: Texture,
     clamp_sampler: wgpu::Sampler,
@@ -193,49 +219,42 @@ impl WaterChapter {
             return;
         }
         self.pictures_size = size;
-        self.reflection = Picture::new(device, self.target.format, size.0, size.1);
-        self.refraction = Picture::new(device, self.target.format, size.0, size.1);
+        self.reflection = Picture::new(device, self.target.format, size);
+        self.refraction = Picture::new(device, self.target.format, size);
         self.water_group = self.water_group(device);
         self.show_groups =
             show_groups(device, &self.show_layout, [&self.reflection, &self.refraction], &self.clamp_sampler);
     }
 
     // ANCHOR: picture
-    /// Renders the plain and the sky from `camera` into `picture`, keeping
-    /// only what `clip` keeps, and submits it at once: the uniforms are
-    /// rewritten for the next picture, and a write lands before the next
-    /// submission, not before the last.
+    /// Records the plain and the sky, seen from `camera` through eye `eye`,
+    /// into `colour` and `depth`, keeping only what `clip` keeps. Each
+    /// picture has its own eye, so its uniforms are not overwritten by the
+    /// next picture's before the one submit at the end of the frame.
+    #[allow(clippy::too_many_arguments)]
     fn take_picture(
         &mut self,
         gpu: &Gpu,
-        frame: &Frame,
-        label: &'static str,
-        picture: &Picture,
+        encoder: &mut wgpu::CommandEncoder,
+        timer: &PassTimer,
+        (label, eye): (&'static str, usize),
+        (colour, depth): (&wgpu::TextureView, &wgpu::TextureView),
         camera: &Camera,
         clip: Vec4,
+        phase: f32,
     ) {
-        self.sky.prepare(gpu, camera, clip);
-        let mut encoder = gpu.device.create_command_encoder(&wgpu::CommandEncoderDescriptor { label: Some(label) });
-        {
-            let mut pass = scene_pass(&mut encoder, frame.timer, label, &picture.colour, SKY, &picture.depth);
-            self.sky.draw(&mut pass);
-        }
-        gpu.queue.submit([encoder.finish()]);
+        let Eye { ground, sky } = &mut self.eyes[eye];
+        self.plain.aim(&gpu.queue, ground, camera, sun_at(phase), clip);
+        self.sky.aim(&gpu.queue, sky, camera, phase);
+        let mut pass = scene_pass(encoder, timer, label, colour, SKY, depth);
+        self.plain.draw(&mut pass, ground, self.rocks);
+        self.sky.draw(&mut pass, sky);
     }
     // ANCHOR_END: picture
 
     /// Draws picture `which` (0 reflection, 1 refraction) over the whole frame.
     fn show(&self, frame: &mut Frame, which: usize) {
-        let mut pass = frame.encoder.begin_render_pass(&wgpu::RenderPassDescriptor {
-            label: Some("show picture"),
-            color_attachments: &[Some(wgpu::RenderPassColorAttachment {
-                view: frame.target,
-                depth_slice: None,
-                resolve_target: None,
-                ops: wgpu::Operations { load: wgpu::LoadOp::Clear(SKY), store: wgpu::StoreOp::Store },
-            })],
-            ..Default::default()
-        });
+        let mut pass = fullscreen::pass(frame.encoder, frame.timer, "show picture", frame.target, Some(SKY));
         pass.set_pipeline(&self.show_pipeline);
         pass.set_bind_group(0, &self.show_groups[which], &[]);
         pass.draw(0..3, 0..1);
@@ -321,27 +340,8 @@ fn build_pipelines(
             multiview_mask: None,
             cache: None,
         });
-        let picture = gpu.device.create_render_pipeline(&wgpu::RenderPipelineDescriptor {
-            label: Some("show picture"),
-            layout: Some(show_layout),
-            vertex: wgpu::VertexState {
-                module: &show,
-                entry_point: Some("vs_show"),
-                buffers: &[],
-                compilation_options: Default::default(),
-            },
-            primitive: Default::default(),
-            depth_stencil: None,
-            multisample: Default::default(),
-            fragment: Some(wgpu::FragmentState {
-                module: &show,
-                entry_point: Some("fs_show"),
-                targets: &[Some(format.into())],
-                compilation_options: Default::default(),
-            }),
-            multiview_mask: None,
-            cache: None,
-        });
+        let picture =
+            fullscreen::pipeline(&gpu.device, "show picture", show_layout, &show, "fs_show", format.into(), None);
         (surface, picture)
     })
     .map_err(ShaderError)
@@ -352,7 +352,7 @@ impl Chapter for WaterChapter {
     const TITLE: &'static str = "07 · Water";
     const VIEWS: &'static [View] = VIEWS;
     const SNAPSHOT_TIME: f32 = 0.0;
-    const KEYS: &'static [(&'static str, &'static str)] = common::FlyController::KEYS;
+    const KEYS: &'static [(&'static str, &'static str)] = FlyController::KEYS;
     const BENCH_FRAMES: u32 = 5;
 
     /// Clip distances where the adapter has them; a fragment discard otherwise.
@@ -362,8 +362,10 @@ impl Chapter for WaterChapter {
 
     fn new(gpu: &Gpu, target: Target) -> anyhow::Result<Self> {
         let device = &gpu.device;
-        let sky = SkyboxChapter::new(gpu, target)?;
-        let (centre, size, level) = find_lake(&sky.plain.terrain.field, &sky.plain.camera);
+        let plain = MarsPlain::new(gpu, target.format)?;
+        let sky = Sky::new(gpu, target.format)?;
+        let field = plain.terrain.field();
+        let (centre, size, level) = find_lake(field, &plain_camera(field, target.aspect()));
         let mut grid = primitives::plane(256);
         for v in &mut grid.vertices {
             v.position = [centre.x + v.position[0] * size, 0.0, centre.y + v.position[2] * size];
@@ -400,11 +402,7 @@ impl Chapter for WaterChapter {
         });
         let pipeline_layout = device.create_pipeline_layout(&wgpu::PipelineLayoutDescriptor {
             label: Some("water"),
-            bind_group_layouts: &[
-                Some(&sky.plain.terrain.bind_group_layout),
-                Some(&sky.plain.fog_binding.layout),
-                Some(&water_layout),
-            ],
+            bind_group_layouts: &[Some(&plain.terrain.bind_group_layout), Some(&plain.fog.layout), Some(&water_layout)],
             immediate_size: 0,
         });
         let show_layout = device.create_bind_group_layout(&wgpu::BindGroupLayoutDescriptor {
@@ -419,20 +417,30 @@ impl Chapter for WaterChapter {
         let (pipeline, show_pipeline) = build_pipelines(gpu, &pipeline_layout, &show_pipeline_layout, target.format)?;
         let settings = WaterSettings::default();
         let pictures_size = picture_size(target, settings.resolution);
-        let reflection = Picture::new(device, target.format, pictures_size.0, pictures_size.1);
-        let refraction = Picture::new(device, target.format, pictures_size.0, pictures_size.1);
+        let reflection = Picture::new(device, target.format, pictures_size);
+        let refraction = Picture::new(device, target.format, pictures_size);
         let textures = [&reflection.colour, &refraction.colour, &refraction.depth, &dudv.view, &normal_map.view];
         let water_group = water_group(device, &water_layout, &uniform, textures, [&dudv.sampler, &clamp_sampler]);
         let show_groups = show_groups(device, &show_layout, [&reflection, &refraction], &clamp_sampler);
+        let eyes = std::array::from_fn(|_| Eye { ground: plain.terrain.viewpoint(device), sky: sky.viewpoint(device) });
+        let camera = lake_camera(field, centre, size, level, 18.0, target.aspect());
         Ok(Self {
+            plain,
             sky,
+            camera,
+            controller: FlyController { speed: 10.0, ..Default::default() },
+            fog: FogSettings::HAZE,
+            rocks: Setup { rocks: 200_000, mode: Mode::Instanced, terrain: true },
             settings,
+            day_seconds: 240.0,
             level,
             centre,
             size,
             grid,
+            eyes,
             reflection,
             refraction,
+            depth: depth_view(device, target.width, target.height),
             dudv,
             normal_map,
             clamp_sampler,
@@ -452,57 +460,85 @@ impl Chapter for WaterChapter {
 
     fn resize(&mut self, gpu: &Gpu, target: Target) {
         self.target = target;
-        self.sky.resize(gpu, target);
+        self.camera.aspect = target.aspect();
+        self.depth = depth_view(&gpu.device, target.width, target.height);
         self.resize_pictures(&gpu.device);
     }
 
     fn select_view(&mut self, view: usize) {
-        self.sky.select_view(0);
         self.settings = WaterSettings::default();
-        let mut height = 18.0;
         match VIEWS[view].name {
-            "waves" => {
-                self.settings.wave_strength = 3.0;
-                height = 6.0;
-            }
+            "waves" => self.settings.wave_strength = 3.0,
             "no-fresnel" => self.settings.fresnel = false,
             _ => {}
         }
-        let field = &self.sky.plain.terrain.field;
-        self.sky.plain.camera = lake_camera(field, self.centre, self.size, self.level, height, self.target.aspect());
+    }
+
+    fn reset_camera(&mut self, view: usize) {
+        let height = if VIEWS[view].name == "waves" { 6.0 } else { 18.0 };
+        let field = self.plain.terrain.field();
+        self.camera = lake_camera(field, self.centre, self.size, self.level, height, self.target.aspect());
+    }
+
+    fn camera_mut(&mut self) -> Option<&mut Camera> {
+        Some(&mut self.camera)
     }
 
     fn update(&mut self, input: &Input, dt: f32) {
-        self.sky.update(input, dt);
+        self.controller.update(&mut self.camera, input, dt);
     }
 
     // ANCHOR: render
     fn render(&mut self, gpu: &Gpu, frame: &mut Frame) {
         self.resize_pictures(&gpu.device);
-        self.sky.set_time(frame.time);
-        let camera = self.sky.plain.camera;
+        let phase = (START_PHASE + frame.time / self.day_seconds).rem_euclid(1.0);
+        self.camera.far = self.fog.far_plane();
+        self.plain.set_air(&gpu.queue, self.fog, self.sky.fog_colour(phase));
+        let camera = self.camera;
         let bias = 0.5; // a little overlap, so that waves do not open gaps at the shore
-        // 1. The reflection: from below the water, keeping what is above it.
-        let above = Vec4::new(0.0, 1.0, 0.0, -self.level + bias);
+        let view = VIEWS[frame.view].name;
         let (reflection, refraction) = (self.reflection.clone(), self.refraction.clone());
-        self.take_picture(gpu, frame, "reflection", &reflection, &mirrored(&camera, self.level), above);
+        // 1. The reflection: from below the water, keeping what is above it.
+        if view != "refraction" {
+            let above = Vec4::new(0.0, 1.0, 0.0, -self.level + bias);
+            let targets = (&reflection.colour, &reflection.depth);
+            let mirror = mirrored(&camera, self.level);
+            self.take_picture(
+                gpu,
+                frame.encoder,
+                frame.timer,
+                ("reflection", REFLECTION),
+                targets,
+                &mirror,
+                above,
+                phase,
+            );
+        }
         // 2. The refraction: from the camera, keeping what is below the water.
-        let below = Vec4::new(0.0, -1.0, 0.0, self.level + bias);
-        self.take_picture(gpu, frame, "refraction", &refraction, &camera, below);
-
-        match VIEWS[frame.view].name {
+        if view != "reflection" {
+            let below = Vec4::new(0.0, -1.0, 0.0, self.level + bias);
+            let targets = (&refraction.colour, &refraction.depth);
+            self.take_picture(
+                gpu,
+                frame.encoder,
+                frame.timer,
+                ("refraction", REFRACTION),
+                targets,
+                &camera,
+                below,
+                phase,
+            );
+        }
+        match view {
             "reflection" => return self.show(frame, 0),
             "refraction" => return self.show(frame, 1),
             _ => {}
         }
 
         // 3. The scene itself, whole.
-        self.sky.prepare(gpu, &camera, KEEP_ALL);
-        let depth = self.sky.plain.depth();
-        {
-            let mut pass = frame.scene_pass("plain and sky", SKY, &depth);
-            self.sky.draw(&mut pass);
-        }
+        let depth = self.depth.clone();
+        let targets = (frame.target, &depth);
+        self.take_picture(gpu, frame.encoder, frame.timer, ("plain and sky", MAIN), targets, &camera, KEEP_ALL, phase);
 
         // 4. The water on top, reading both pictures.
         let lake = waves::lake_waves();
@@ -513,7 +549,7 @@ impl Chapter for WaterChapter {
                 self.settings.wave_strength,
                 f32::from(u8::from(self.settings.fresnel)),
             ],
-            ripples: [self.settings.ripples, 18.0, camera.near, self.sky.plain.camera.far],
+            ripples: [self.settings.ripples, 18.0, camera.near, camera.far],
             waves: lake.map(|w| [w.direction.x, w.direction.y, w.amplitude, w.wavelength]),
             speeds: [
                 [lake[0].speed, lake[1].speed, lake[2].speed, lake[3].speed],
@@ -538,8 +574,8 @@ impl Chapter for WaterChapter {
             ..Default::default()
         });
         pass.set_pipeline(&self.pipeline);
-        self.sky.plain.terrain.bind(&mut pass);
-        pass.set_bind_group(1, &self.sky.plain.fog_binding.group, &[]);
+        self.plain.terrain.bind(&mut pass, &self.eyes[MAIN].ground);
+        pass.set_bind_group(1, &self.plain.fog.group, &[]);
         pass.set_bind_group(2, &self.water_group, &[]);
         self.grid.draw(&mut pass, 0..1);
     }
@@ -560,14 +596,24 @@ impl Chapter for WaterChapter {
             self.level, self.pictures_size.0, self.pictures_size.1
         ));
         ui.separator();
-        self.sky.ui(ui);
+        ui.add(egui::Slider::new(&mut self.day_seconds, 10.0..=1200.0).logarithmic(true).text("day length (s)"));
+        ui.add(egui::Slider::new(&mut self.fog.density, 0.0..=0.01).logarithmic(true).text("fog density"));
+        let max = self.plain.rocks_placed();
+        ui.add(egui::Slider::new(&mut self.rocks.rocks, 0..=max).logarithmic(true).text("rocks"));
+        ui.add(egui::Slider::new(&mut self.controller.speed, 2.0..=100.0).logarithmic(true).text("speed (m/s)"));
     }
 
     fn stats(&self) -> String {
-        format!("pictures {}×{}; {}", self.pictures_size.0, self.pictures_size.1, self.sky.stats())
+        format!(
+            "pictures {}×{}; {} rocks in each picture",
+            self.pictures_size.0,
+            self.pictures_size.1,
+            self.rocks.rocks.min(self.plain.rocks_placed())
+        )
     }
 
     fn reload_shaders(&mut self, gpu: &Gpu) -> Result<(), ShaderError> {
+        self.plain.reload_shaders(gpu)?;
         self.sky.reload_shaders(gpu)?;
         (self.pipeline, self.show_pipeline) =
             build_pipelines(gpu, &self.pipeline_layout, &self.show_pipeline_layout, self.target.format)?;

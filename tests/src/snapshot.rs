@@ -4,6 +4,8 @@
 use std::fmt;
 use std::path::{Path, PathBuf};
 
+use common::image;
+
 /// How different a picture may be from its reference and still pass.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Tolerance {

@@ -2,8 +2,8 @@
 //! (where the adapter has them) and a discard in the fragment shader.
 
 use common::headless::{RenderRequest, render_image};
-use common::snapshot::{Tolerance, compare};
 use common::{Chapter, Gpu, GpuNeeds, chapter::view_index, wgpu};
+use snapshots::snapshot::{Tolerance, compare};
 use water::WaterChapter;
 
 #[test]

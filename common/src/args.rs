@@ -1,0 +1,164 @@
+//! The flags every chapter binary accepts, parsed and checked: a bad value
+//! is a one-line error naming the flag and what it accepts.
+
+use std::path::{Path, PathBuf};
+
+use clap::{CommandFactory, FromArgMatches, Parser};
+
+use crate::{Chapter, Gpu};
+
+/// Width and height in pixels.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct Size {
+    pub width: u32,
+    pub height: u32,
+}
+
+fn parse_size(text: &str) -> Result<Size, String> {
+    let expected = "expected WIDTHxHEIGHT, both at least 1, like 1280x720";
+    let (w, h) = text.split_once(['x', 'X']).ok_or(expected)?;
+    match (w.trim().parse::<u32>(), h.trim().parse::<u32>()) {
+        (Ok(width), Ok(height)) if width > 0 && height > 0 => Ok(Size { width, height }),
+        _ => Err(expected.into()),
+    }
+}
+
+fn parse_time(text: &str) -> Result<f32, String> {
+    match text.parse::<f32>() {
+        Ok(t) if t.is_finite() => Ok(t),
+        _ => Err("expected a finite number of seconds, like 12.5".into()),
+    }
+}
+
+/// Flags shared by every chapter (`--help` prints them).
+#[derive(Parser, Debug, Clone)]
+pub struct Args {
+    /// Render one picture offscreen (no window or display needed) and write it to PATH, a .png file.
+    #[arg(long, value_name = "PATH")]
+    pub screenshot: Option<PathBuf>,
+
+    /// Picture size for --screenshot and --bench, or the window's first size.
+    #[arg(long, value_name = "WxH", value_parser = parse_size, default_value = "1280x720")]
+    pub size: Size,
+
+    /// Scene time in seconds. Headless pictures default to the chapter's snapshot time; the window starts at 0.
+    #[arg(long, value_name = "SECONDS", value_parser = parse_time, allow_negative_numbers = true)]
+    pub time: Option<f32>,
+
+    /// The view to show (--list-views lists them with what each shows).
+    #[arg(long, value_name = "NAME")]
+    pub view: Option<String>,
+
+    /// Print the chapter's views and exit.
+    #[arg(long)]
+    pub list_views: bool,
+
+    /// With --bench: frames to measure (default: the chapter's, usually 100). With a window: close after N frames.
+    #[arg(long, value_name = "N", value_parser = clap::value_parser!(u32).range(1..=1_000_000))]
+    pub frames: Option<u32>,
+
+    /// Render frames offscreen and print min/median/p95 frame times (every view unless --view is given).
+    #[arg(long)]
+    pub bench: bool,
+
+    /// For tests that drive the window: after every frame, write the runner's state (frame count,
+    /// surface size, camera) as one line to PATH.
+    #[arg(long, value_name = "PATH", hide = true)]
+    pub probe: Option<PathBuf>,
+}
+
+impl Args {
+    /// Parses the command line for chapter `C`; the view names become the
+    /// allowed values of `--view`, so a typo lists the real ones.
+    pub fn parse_for<C: Chapter>() -> Result<Self, clap::Error> {
+        Self::parse_from_for::<C>(std::env::args_os())
+    }
+
+    pub fn parse_from_for<C: Chapter>(
+        args: impl IntoIterator<Item = impl Into<std::ffi::OsString> + Clone>,
+    ) -> Result<Self, clap::Error> {
+        let names: Vec<&'static str> = C::VIEWS.iter().map(|v| v.name).collect();
+        let command = Self::command()
+            .name(C::NAME)
+            .about(format!("{}: opens a window; with --screenshot or --bench, renders headless.", C::TITLE))
+            .mut_arg("view", |arg| arg.value_parser(clap::builder::PossibleValuesParser::new(names)));
+        Self::from_arg_matches(&command.try_get_matches_from(args)?)
+    }
+
+    /// Index of the chosen view (0 when none was given).
+    pub fn view_index<C: Chapter>(&self) -> usize {
+        self.view.as_deref().and_then(crate::chapter::view_index::<C>).unwrap_or(0)
+    }
+}
+
+/// A mistake in the flags found after parsing; exit code 2 like clap's.
+#[derive(Debug)]
+pub struct UsageError(pub String);
+
+impl std::fmt::Display for UsageError {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.write_str(&self.0)
+    }
+}
+
+impl std::error::Error for UsageError {}
+
+/// Fails early, before any GPU work, if `path` cannot be written.
+pub fn check_writable(path: &Path) -> anyhow::Result<()> {
+    if path.extension().is_none_or(|e| !e.eq_ignore_ascii_case("png")) {
+        return Err(UsageError(format!("--screenshot {}: the file name must end in .png", path.display())).into());
+    }
+    std::fs::OpenOptions::new()
+        .create(true)
+        .truncate(false)
+        .write(true)
+        .open(path)
+        .map(drop)
+        .map_err(|e| UsageError(format!("--screenshot {}: cannot write there: {e}", path.display())).into())
+}
+
+/// The device's largest texture side; a bigger `--size` is refused.
+pub fn check_size(gpu: &Gpu, size: Size) -> Result<(), UsageError> {
+    let max = gpu.device.limits().max_texture_dimension_2d;
+    if size.width > max || size.height > max {
+        return Err(UsageError(format!(
+            "--size {}x{} is larger than {} allows: at most {max} pixels per side",
+            size.width,
+            size.height,
+            gpu.adapter.get_info().name
+        )));
+    }
+    Ok(())
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn sizes() {
+        assert_eq!(parse_size("640x360"), Ok(Size { width: 640, height: 360 }));
+        assert_eq!(parse_size("7X3"), Ok(Size { width: 7, height: 3 }));
+        for bad in ["0x0", "640", "x360", "-5x3", "axb", "640x0"] {
+            assert!(parse_size(bad).is_err(), "{bad} accepted");
+        }
+    }
+
+    #[test]
+    fn times() {
+        assert_eq!(parse_time("12.5"), Ok(12.5));
+        assert_eq!(parse_time("-1"), Ok(-1.0));
+        for bad in ["NaN", "inf", "-inf", "soon", ""] {
+            assert!(parse_time(bad).is_err(), "{bad} accepted");
+        }
+    }
+
+    #[test]
+    fn unwritable_screenshot_paths_are_usage_errors() {
+        let error = check_writable(Path::new("/no/such/dir/out.png")).unwrap_err();
+        assert!(error.is::<UsageError>());
+        assert!(error.to_string().starts_with("--screenshot /no/such/dir/out.png: cannot write there"), "{error}");
+        let error = check_writable(Path::new("out.jpg")).unwrap_err();
+        assert!(error.to_string().contains("must end in .png"), "{error}");
+    }
+}

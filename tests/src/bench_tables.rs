@@ -1,0 +1,100 @@
+//! The book's bench tables (`book/src/bench/<chapter>.md`, written by
+//! `cargo xtask bench`) must describe the chapter as it is: every view in
+//! them, and no pass a view no longer draws.
+
+use std::path::{Path, PathBuf};
+
+use common::View;
+
+/// Where `cargo xtask bench` writes a chapter's table.
+pub fn table_path(chapter: &str) -> PathBuf {
+    Path::new(env!("CARGO_MANIFEST_DIR")).join("../book/src/bench").join(format!("{chapter}.md"))
+}
+
+/// The rows of a bench table as (view, pass), where pass is `None` for the
+/// whole frame's row and `Some(name)` for a `GPU: name pass` row.
+pub fn rows(table: &str) -> Vec<(String, Option<String>)> {
+    table
+        .lines()
+        .filter_map(|line| {
+            let cells: Vec<&str> = line.split('|').map(str::trim).collect();
+            // | view | what | min | median | p95 |  → ["", view, what, …, ""]
+            let (view, what) = (*cells.get(1)?, *cells.get(2)?);
+            if cells.len() != 7 || view == "view" || view.starts_with("---") {
+                return None;
+            }
+            let pass = what.strip_prefix("GPU: ").and_then(|p| p.strip_suffix(" pass")).map(str::to_string);
+            Some((view.to_string(), pass))
+        })
+        .collect()
+}
+
+/// Compares `chapter`'s bench table with `drawn`: the passes each view
+/// drew when it was rendered. Returns the problems, each saying how to fix it.
+pub fn check(chapter: &str, views: &[View], drawn: &[(&str, Vec<&str>)]) -> Vec<String> {
+    let path = table_path(chapter);
+    match std::fs::read_to_string(&path) {
+        Ok(table) => check_table(&path.display().to_string(), &table, chapter, views, drawn),
+        Err(_) => vec![format!("{} is missing: run `cargo xtask bench {chapter}`", path.display())],
+    }
+}
+
+/// [`check`] for a table's text, named `path` in the messages.
+pub fn check_table(path: &str, table: &str, chapter: &str, views: &[View], drawn: &[(&str, Vec<&str>)]) -> Vec<String> {
+    let rows = rows(table);
+    let mut problems = Vec::new();
+    let regenerate = format!("run `cargo xtask bench {chapter}`");
+    for view in views {
+        if !rows.iter().any(|(v, _)| v == view.name) {
+            problems.push(format!("{path}: no row for the view `{}`; {regenerate}", view.name));
+        }
+    }
+    for (view, pass) in &rows {
+        let Some((_, passes)) = drawn.iter().find(|(v, _)| v == view) else {
+            problems.push(format!("{path}: `{view}` is not a view of {chapter}; {regenerate}"));
+            continue;
+        };
+        if let Some(pass) = pass
+            && !passes.contains(&pass.as_str())
+        {
+            problems
+                .push(format!("{path}: `{view}` no longer draws a `{pass}` pass (it draws {passes:?}); {regenerate}"));
+        }
+    }
+    problems
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    const TABLE: &str = "Measured by …\n\n| view | what | min ms | median ms | p95 ms |\n|---|---|---:|---:|---:|\n\
+        | day | frame (CPU+GPU) | 1.00 | 2.00 | 3.00 |\n| day | GPU: plain and sky pass | 1.00 | 2.00 | 3.00 |\n\n- day: setup 3 ms\n";
+
+    const VIEWS: &[View] = &[View::mode("day", "")];
+
+    #[test]
+    fn a_table_that_matches_passes() {
+        assert!(check_table("t.md", TABLE, "sky", VIEWS, &[("day", vec!["plain and sky"])]).is_empty());
+    }
+
+    #[test]
+    fn a_pass_no_longer_drawn_a_view_not_benched_and_an_unknown_view_fail() {
+        let problems = check_table("t.md", TABLE, "sky", VIEWS, &[("day", vec!["terrain", "sky"])]);
+        assert!(problems.len() == 1 && problems[0].contains("no longer draws a `plain and sky` pass"), "{problems:?}");
+        let two: &[View] = &[View::mode("day", ""), View::mode("dusk", "")];
+        let drawn = [("day", vec!["plain and sky"]), ("dusk", vec!["plain and sky"])];
+        let problems = check_table("t.md", TABLE, "sky", two, &drawn);
+        assert!(problems.len() == 1 && problems[0].contains("no row for the view `dusk`"), "{problems:?}");
+        let problems = check_table("t.md", TABLE, "sky", &[View::mode("noon", "")], &[("noon", vec![])]);
+        assert!(problems.iter().any(|p| p.contains("`day` is not a view of sky")), "{problems:?}");
+    }
+
+    #[test]
+    fn rows_are_read_with_their_passes() {
+        assert_eq!(
+            rows(TABLE),
+            vec![("day".to_string(), None), ("day".to_string(), Some("plain and sky".to_string()))]
+        );
+    }
+}
