@@ -68,6 +68,8 @@ struct Running<C: Chapter> {
     frames_left: Option<u32>,
     pointer_locked: bool,
     dragging: bool,
+    /// Where the pointer is now, in physical pixels.
+    cursor: winit::dpi::PhysicalPosition<f64>,
     /// The window is covered or minimised: nothing to draw.
     occluded: bool,
     status: String,
@@ -125,8 +127,16 @@ impl<C: Chapter> ApplicationHandler for App<C> {
                     _ => app.input.key_down(key),
                 }
             }
+            WindowEvent::CursorMoved { position, .. } => app.cursor = position,
             WindowEvent::MouseInput { state, button: MouseButton::Left, .. } => {
-                app.dragging = state == ElementState::Pressed && !egui_used && !app.overlay.ctx.is_pointer_over_egui();
+                // Over the overlay, the press is egui's. Ask where the pointer
+                // is now: at a few frames a second it has moved since egui
+                // last looked.
+                let scale = app.window.scale_factor();
+                let point = egui::pos2((app.cursor.x / scale) as f32, (app.cursor.y / scale) as f32);
+                let layer = app.overlay.ctx.layer_id_at(point);
+                let on_overlay = layer.is_some_and(|layer| layer.order != egui::Order::Background);
+                app.dragging = state == ElementState::Pressed && !on_overlay;
             }
             WindowEvent::MouseWheel { delta, .. } if !egui_used => {
                 app.input.scroll += match delta {
@@ -236,6 +246,7 @@ impl<C: Chapter> Running<C> {
             frames_left: args.frames,
             pointer_locked: false,
             dragging: false,
+            cursor: Default::default(),
             occluded: false,
             status,
             drawn: 0,
@@ -315,31 +326,41 @@ impl<C: Chapter> Running<C> {
         println!("{}", self.status);
     }
 
-    // ANCHOR: frame
+    /// Draws a frame if the window can show one, and reports to the probe.
     fn frame(&mut self) -> anyhow::Result<()> {
+        if self.draw()? {
+            self.drawn += 1;
+            if let Some(n) = &mut self.frames_left {
+                *n = n.saturating_sub(1);
+            }
+        } else {
+            self.skipped += 1;
+        }
+        self.write_probe();
+        Ok(())
+    }
+
+    // ANCHOR: frame
+    /// Returns false when there was nothing to draw into.
+    fn draw(&mut self) -> anyhow::Result<bool> {
         let now = Instant::now();
         // After a pause (minimised, dragged, a breakpoint) the first frame
         // would otherwise jump: no step is longer than a quarter second.
         let dt = (now - self.last_frame).as_secs_f32().min(0.25);
         self.last_frame = now;
         if !self.has_area() {
-            self.skipped += 1;
-            return Ok(());
+            return Ok(false);
         }
         // One size is the truth for the whole frame: the surface's, made to
         // match the window here, before anything is drawn into it.
         self.match_window_size();
         let frame = match self.surface.get_current_texture() {
             wgpu::CurrentSurfaceTexture::Success(frame) | wgpu::CurrentSurfaceTexture::Suboptimal(frame) => frame,
-            wgpu::CurrentSurfaceTexture::Timeout | wgpu::CurrentSurfaceTexture::Occluded => {
-                self.skipped += 1;
-                return Ok(());
-            }
+            wgpu::CurrentSurfaceTexture::Timeout | wgpu::CurrentSurfaceTexture::Occluded => return Ok(false),
             wgpu::CurrentSurfaceTexture::Outdated | wgpu::CurrentSurfaceTexture::Lost => {
                 // The window changed under us: configure again, draw next time.
                 self.surface.configure(&self.gpu.device, &self.config);
-                self.skipped += 1;
-                return Ok(());
+                return Ok(false);
             }
             wgpu::CurrentSurfaceTexture::Validation => anyhow::bail!("the surface texture failed validation"),
         };
@@ -368,7 +389,7 @@ impl<C: Chapter> Running<C> {
             let mut ui_state = UiState {
                 chapter: &mut self.chapter,
                 view: &mut self.view,
-                time: self.time,
+                time: &mut self.time,
                 paused: &mut self.paused,
                 history: &self.history,
                 shader_error: self.shader_error.as_deref(),
@@ -381,13 +402,7 @@ impl<C: Chapter> Running<C> {
         self.gpu.queue.submit(extra.into_iter().chain([encoder.finish()]));
         self.window.pre_present_notify();
         self.gpu.queue.present(frame);
-
-        self.drawn += 1;
-        if let Some(n) = &mut self.frames_left {
-            *n = n.saturating_sub(1);
-        }
-        self.write_probe();
-        Ok(())
+        Ok(true)
     }
     // ANCHOR_END: frame
 
@@ -402,12 +417,13 @@ impl<C: Chapter> Running<C> {
             None => "none".into(),
         };
         let line = format!(
-            "drawn={} skipped={} surface={}x{} view={} camera={camera}\n",
+            "drawn={} skipped={} surface={}x{} view={} typing={} camera={camera}\n",
             self.drawn,
             self.skipped,
             self.config.width,
             self.config.height,
-            C::VIEWS[self.view].name
+            C::VIEWS[self.view].name,
+            u8::from(self.overlay.ctx.egui_wants_keyboard_input()),
         );
         let partial = path.with_extension("partial");
         if std::fs::write(&partial, line).and_then(|()| std::fs::rename(&partial, path)).is_err() {
@@ -421,7 +437,7 @@ impl<C: Chapter> Running<C> {
 struct UiState<'a, C: Chapter> {
     chapter: &'a mut C,
     view: &'a mut usize,
-    time: f32,
+    time: &'a mut f32,
     paused: &'a mut bool,
     history: &'a FrameHistory,
     shader_error: Option<&'a str>,
@@ -433,6 +449,12 @@ struct UiState<'a, C: Chapter> {
 impl<C: Chapter> UiState<'_, C> {
     fn show(&mut self, ctx: &egui::Context) {
         egui::Window::new(C::TITLE).default_pos([12.0, 12.0]).default_width(260.0).show(ctx, |ui| {
+            // Scene time is an input like any other: type or drag it.
+            ui.horizontal(|ui| {
+                ui.label("time");
+                ui.add(egui::DragValue::new(self.time).speed(0.05).suffix(" s").max_decimals(2));
+                ui.checkbox(self.paused, "paused (P)");
+            });
             let ms = self.history.mean_ms();
             ui.label(format!("{:.0} FPS  ·  {ms:.2} ms  ·  {}", 1000.0 / ms.max(1e-3), self.adapter));
             self.history.graph(ui);
@@ -461,10 +483,6 @@ impl<C: Chapter> UiState<'_, C> {
                     self.chapter.reset_camera(*self.view);
                 }
             }
-            ui.horizontal(|ui| {
-                ui.label(format!("time {:.2} s", self.time));
-                ui.checkbox(self.paused, "paused (P)");
-            });
             ui.separator();
             self.chapter.ui(ui);
             if let Some(error) = self.shader_error {

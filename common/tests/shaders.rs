@@ -17,13 +17,27 @@ fn wgsl_files(dir: &Path) -> Vec<PathBuf> {
     files
 }
 
-/// The module names a file imports: `#import terrain::{a, b}` → `terrain`.
-fn imported_modules(source: &str) -> Vec<String> {
+/// The paths after a file's `#import`s, without the items:
+/// `#import terrain::{a, b}` → `terrain`, `#import common::fullscreen::{a}`
+/// → `common::fullscreen`, `#import terrain::globals` → `terrain::globals`
+/// (the module is then a prefix of it; see `module_of`).
+fn imported_paths(source: &str) -> Vec<String> {
     source
         .lines()
         .filter_map(|l| l.strip_prefix("#import "))
-        .map(|rest| rest.split(|c: char| c == ':' || c == ';' || c.is_whitespace()).next().unwrap_or("").to_string())
+        .map(|rest| rest.split("::{").next().unwrap_or("").trim().trim_end_matches(';').to_string())
         .collect()
+}
+
+/// The longest known module name that `path` starts with.
+fn module_of<'a>(path: &str, modules: &'a HashMap<String, &(String, String)>) -> Option<&'a str> {
+    let mut candidate = path;
+    loop {
+        if let Some((name, _)) = modules.get_key_value(candidate) {
+            return Some(name);
+        }
+        candidate = &candidate[..candidate.rfind("::")?];
+    }
 }
 
 #[test]
@@ -45,10 +59,10 @@ fn every_shader_validates() {
     let mut failures = Vec::new();
     for (path, source) in &files {
         let mut imports = Vec::new();
-        for name in imported_modules(source) {
-            match modules.get(&name) {
+        for imported in imported_paths(source) {
+            match module_of(&imported, &modules).and_then(|name| modules.get(name)) {
                 Some((import_path, text)) => imports.push((import_path.as_str(), text.clone())),
-                None => failures.push(format!("{path}: imports unknown module `{name}`")),
+                None => failures.push(format!("{path}: imports unknown module `{imported}`")),
             }
         }
         if let Err(error) = common::shader::compose(source, path, &imports) {

@@ -2,9 +2,10 @@
 //!
 //! - `test`: everything CI runs: prerequisites, rustfmt, clippy, `cargo test`
 //!   (which includes the snapshot tests), every chapter in a window under
-//!   Xvfb, and the book.
+//!   Xvfb driven by xdotool, and the book.
 //! - `snapshot [--bless] [CHAPTER...]`: compare with, or rewrite, the reference images.
 //! - `book`: check snapshots, copy them in as figures, check anchors, build HTML, check links.
+//! - `window [CHAPTER...]`: only the window test.
 //! - `bench [CHAPTER...]`: release build, frame times per view, written into the book.
 //! - `assets`: paint every texture under `assets/` from code (deterministic).
 
@@ -16,6 +17,7 @@ use anyhow::{Context as _, bail, ensure};
 mod assets;
 mod book;
 mod prerequisites;
+mod window_test;
 
 fn main() -> ExitCode {
     let args: Vec<String> = std::env::args().skip(1).collect();
@@ -24,13 +26,14 @@ fn main() -> ExitCode {
         Some("snapshot") => snapshot(&args[1..]),
         Some("book") => book::build(true),
         Some("bench") => bench(&args[1..]),
+        Some("window") => window_test::run(&args[1..]),
         Some("assets") => assets::generate(),
         Some("help" | "--help" | "-h") | None => {
             print!("{}", USAGE);
             return ExitCode::SUCCESS;
         }
         Some(other) => {
-            Err(anyhow::anyhow!("unknown task '{other}'; the tasks are: test, snapshot, book, bench, assets"))
+            Err(anyhow::anyhow!("unknown task '{other}'; the tasks are: test, snapshot, book, window, bench, assets"))
         }
     };
     match result {
@@ -46,6 +49,7 @@ const USAGE: &str = "\
 cargo xtask test                           everything CI runs (prerequisites, fmt, clippy, tests, snapshots, book)
 cargo xtask snapshot [--bless] [CHAPTER..] compare every view with its reference; --bless rewrites them
 cargo xtask book                           check snapshots, copy figures, build book/book/index.html
+cargo xtask window [CHAPTER..]             drive every chapter's window under Xvfb with xdotool
 cargo xtask bench [CHAPTER..]              release build; frame times at 1280x720 into book/src/bench/
 cargo xtask assets                         paint every texture under assets/ from code
 ";
@@ -91,43 +95,10 @@ fn test() -> anyhow::Result<()> {
     cargo(&["fmt", "--all", "--", "--check"])?;
     cargo(&["clippy", "--workspace", "--all-targets", "--", "-D", "warnings"])?;
     cargo(&["test", "--workspace"])?;
-    window_test()?;
+    window_test::run(&[])?;
     // `cargo test` has just compared every snapshot; the book only copies them.
     book::build(false)?;
     println!("\nxtask test: all checks passed in {:.0} s", started.elapsed().as_secs_f64());
-    Ok(())
-}
-
-/// Opens every chapter in a real window on a virtual X server and lets it
-/// draw 10 frames with the overlay: the one path `cargo test` cannot reach.
-fn window_test() -> anyhow::Result<()> {
-    if !prerequisites::ensure_xvfb()? {
-        println!("\nwindow test skipped: no X server available on this system");
-        return Ok(());
-    }
-    cargo(&["build", "--workspace", "--bins"])?;
-    let (mut passed, mut failed) = (0, 0);
-    for chapter in chapter_names()? {
-        let binary = target_dir().join("debug").join(&chapter);
-        let status = Command::new("xvfb-run")
-            .args(["-a", "-s", "-screen 0 1024x768x24"])
-            .arg(&binary)
-            .args(["--frames", "10", "--size", "640x360"])
-            .envs(quiet_env())
-            // winit warns about Xvfb's missing XSETTINGS and 0 mm screen size.
-            .env("RUST_LOG", std::env::var("RUST_LOG").unwrap_or_else(|_| "error".into()))
-            .status()
-            .context("cannot run xvfb-run")?;
-        if status.success() {
-            passed += 1;
-            println!("window: {chapter} drew 10 frames and closed");
-        } else {
-            failed += 1;
-            println!("window: {chapter} FAILED ({status})");
-        }
-    }
-    println!("window test: {passed} passed, {failed} failed");
-    ensure!(failed == 0, "the window test failed");
     Ok(())
 }
 

@@ -1,5 +1,6 @@
 //! Making sure the tests have what they need from the system: a Vulkan
-//! driver (lavapipe will do) and, for the window test, a virtual X server.
+//! driver (lavapipe will do) and, for the window test, a virtual X server,
+//! a window manager and xdotool.
 
 use std::path::Path;
 use std::process::Command;
@@ -7,8 +8,11 @@ use std::process::Command;
 use anyhow::{bail, ensure};
 
 const VULKAN: [&str; 2] = ["mesa-vulkan-drivers", "libvulkan1"];
-/// Xvfb, and the X libraries winit loads at run time.
-const WINDOW: [&str; 7] = ["xvfb", "xauth", "libx11-xcb1", "libxcursor1", "libxrandr2", "libxi6", "libxkbcommon-x11-0"];
+/// Xvfb, the X libraries winit loads at run time, xdotool to drive the
+/// windows, and openbox, a small window manager (without one, X has no
+/// minimising).
+const WINDOW: [&str; 9] =
+    ["xvfb", "xauth", "libx11-xcb1", "libxcursor1", "libxrandr2", "libxi6", "libxkbcommon-x11-0", "xdotool", "openbox"];
 
 /// On Linux, wgpu needs the Vulkan loader and at least one driver (ICD);
 /// with no GPU, Mesa's lavapipe is that driver.
@@ -21,20 +25,22 @@ pub fn ensure_adapter() -> anyhow::Result<()> {
     Ok(())
 }
 
-/// `xvfb-run` for the window test: true when it is there (installed now
-/// if we may), false on systems where we cannot provide it.
-pub fn ensure_xvfb() -> anyhow::Result<bool> {
+/// Xvfb, openbox and xdotool for the window test: true when they are
+/// there (installed now if we may), false on systems where we cannot
+/// provide them.
+pub fn ensure_window_tools() -> anyhow::Result<bool> {
     if !cfg!(target_os = "linux") {
         return Ok(false);
     }
-    if !has_xvfb_run() {
-        apt_install("no xvfb-run for the window test", &WINDOW)?;
+    if !has_window_tools() {
+        apt_install("the window test needs Xvfb, openbox and xdotool", &WINDOW)?;
     }
-    Ok(has_xvfb_run())
+    Ok(has_window_tools())
 }
 
-fn has_xvfb_run() -> bool {
-    Command::new("sh").args(["-c", "command -v xvfb-run"]).output().is_ok_and(|o| o.status.success())
+fn has_window_tools() -> bool {
+    let command = "command -v Xvfb && command -v openbox && command -v xdotool";
+    Command::new("sh").args(["-c", command]).output().is_ok_and(|o| o.status.success())
 }
 
 /// Installs Debian packages when we may (root on Debian or Ubuntu);

@@ -1,0 +1,378 @@
+//! The window test: every chapter in a real window on a virtual X server,
+//! driven the way people drive windows, with `xdotool`. For each chapter it
+//! resizes the window through 1×1 and back, minimises and restores it (ten
+//! times each), drags with the mouse and checks that the camera turned, holds
+//! a key and clicks the overlay and checks that the camera stops once the key
+//! is let go, then closes the window with Esc. Any panic, wgpu validation
+//! error, non-zero exit or frame that never comes fails it.
+//!
+//! What cannot be seen in pixels (frames drawn, the surface's size, the
+//! camera) the chapter reports through its hidden `--probe FILE` flag.
+
+use std::path::{Path, PathBuf};
+use std::process::{Child, Command, Stdio};
+use std::time::{Duration, Instant};
+
+use anyhow::{Context as _, bail, ensure};
+
+use crate::{chapter_names, quiet_env, target_dir};
+
+/// The window's size, and how long any one step may take: a frame of the
+/// water chapter takes over a second on a software rasteriser in a debug build.
+const SIZE: (u32, u32) = (640, 360);
+const STEP_TIMEOUT: Duration = Duration::from_secs(90);
+const CYCLES: usize = 10;
+
+/// x, y, z, yaw and pitch, as the probe reports them; `None` for chapters
+/// without a camera.
+type Pose = Option<[f32; 5]>;
+
+/// What the chapter last wrote to its probe file.
+#[derive(Clone, Debug, PartialEq)]
+struct Probe {
+    drawn: u64,
+    surface: (u32, u32),
+    /// The overlay has the keyboard (a text field is being edited).
+    typing: bool,
+    camera: Pose,
+}
+
+impl Probe {
+    fn parse(line: &str) -> Option<Self> {
+        let field = |name: &str| line.split_whitespace().find_map(|w| w.strip_prefix(name));
+        let drawn = field("drawn=")?.parse().ok()?;
+        let (w, h) = field("surface=")?.split_once('x')?;
+        let camera_text = line.split_once("camera=")?.1.trim();
+        let camera = if camera_text == "none" {
+            None
+        } else {
+            let values: Vec<f32> = camera_text.split_whitespace().filter_map(|v| v.parse().ok()).collect();
+            Some(values.try_into().ok()?)
+        };
+        let typing = field("typing=")? == "1";
+        Some(Self { drawn, surface: (w.parse().ok()?, h.parse().ok()?), typing, camera })
+    }
+}
+
+/// A virtual X server with a window manager (without one, nothing can be
+/// minimised), torn down when dropped.
+struct Display {
+    name: String,
+    server: Child,
+    manager: Child,
+}
+
+impl Display {
+    fn start() -> anyhow::Result<Self> {
+        // Threads starting displays at once must not pick the same number.
+        static TAKEN: std::sync::Mutex<Vec<u32>> = std::sync::Mutex::new(Vec::new());
+        let mut taken = TAKEN.lock().unwrap_or_else(|e| e.into_inner());
+        let free = |n: &u32| !taken.contains(n) && !Path::new(&format!("/tmp/.X{n}-lock")).exists();
+        let number = (90..190).find(free).context("no free display")?;
+        taken.push(number);
+        drop(taken);
+        let name = format!(":{number}");
+        let server = Command::new("Xvfb")
+            .args([name.as_str(), "-screen", "0", "1024x768x24", "-nolisten", "tcp"])
+            .stderr(Stdio::null())
+            .spawn()
+            .context("cannot start Xvfb")?;
+        let deadline = Instant::now() + Duration::from_secs(10);
+        while !Path::new(&format!("/tmp/.X11-unix/X{number}")).exists() {
+            ensure!(Instant::now() < deadline, "Xvfb did not start");
+            std::thread::sleep(Duration::from_millis(50));
+        }
+        let manager = Command::new("openbox")
+            .arg("--sm-disable")
+            .env("DISPLAY", &name)
+            .stdout(Stdio::null())
+            .stderr(Stdio::null())
+            .spawn()
+            .context("cannot start openbox")?;
+        std::thread::sleep(Duration::from_millis(500));
+        Ok(Self { name, server, manager })
+    }
+
+    fn xdotool(&self, args: &[&str]) -> anyhow::Result<String> {
+        let output = Command::new("xdotool").args(args).env("DISPLAY", &self.name).output().context("xdotool")?;
+        ensure!(
+            output.status.success(),
+            "xdotool {} failed: {}",
+            args.join(" "),
+            String::from_utf8_lossy(&output.stderr)
+        );
+        Ok(String::from_utf8_lossy(&output.stdout).trim().to_string())
+    }
+}
+
+impl Drop for Display {
+    fn drop(&mut self) {
+        let _ = self.manager.kill();
+        let _ = self.server.kill();
+        let _ = self.manager.wait();
+        let _ = self.server.wait();
+    }
+}
+
+/// One chapter running in a window on `display`.
+struct Session<'d> {
+    display: &'d Display,
+    chapter: String,
+    child: Child,
+    probe: PathBuf,
+    log: PathBuf,
+    window: String,
+}
+
+impl<'d> Session<'d> {
+    fn start(display: &'d Display, chapter: &str, dir: &Path) -> anyhow::Result<Self> {
+        let probe = dir.join(format!("{chapter}.probe"));
+        let log = dir.join(format!("{chapter}.log"));
+        let _ = std::fs::remove_file(&probe);
+        let child = Command::new(target_dir().join("debug").join(chapter))
+            .args(["--size", &format!("{}x{}", SIZE.0, SIZE.1), "--probe"])
+            .arg(&probe)
+            .env("DISPLAY", &display.name)
+            .env_remove("WAYLAND_DISPLAY")
+            .envs(quiet_env())
+            // winit warns about Xvfb's missing XSETTINGS and 0 mm screen size.
+            .env("RUST_LOG", "error")
+            .stdout(Stdio::null())
+            .stderr(std::fs::File::create(&log)?)
+            .spawn()
+            .with_context(|| format!("cannot start {chapter}"))?;
+        let mut session = Self { display, chapter: chapter.into(), child, probe, log, window: String::new() };
+        session.wait_for("its first frames", |p| p.drawn >= 2)?;
+        let pid = session.child.id().to_string();
+        session.window = display.xdotool(&["search", "--sync", "--pid", &pid, "--name", "From Triangle"])?;
+        session.window = session.window.lines().next().unwrap_or_default().to_string();
+        Ok(session)
+    }
+
+    fn read(&self) -> Option<Probe> {
+        Probe::parse(&std::fs::read_to_string(&self.probe).ok()?)
+    }
+
+    /// Waits until the probe satisfies `done`, failing if the chapter exits
+    /// or `STEP_TIMEOUT` passes.
+    fn wait_for(&mut self, what: &str, done: impl Fn(&Probe) -> bool) -> anyhow::Result<Probe> {
+        let deadline = Instant::now() + STEP_TIMEOUT;
+        loop {
+            if let Some(probe) = self.read().filter(&done) {
+                return Ok(probe);
+            }
+            if let Some(status) = self.child.try_wait()? {
+                bail!("{} exited ({status}) while waiting for {what}:\n{}", self.chapter, self.log_tail());
+            }
+            ensure!(
+                Instant::now() < deadline,
+                "{}: timed out waiting for {what}; last probe {:?}",
+                self.chapter,
+                self.read()
+            );
+            std::thread::sleep(Duration::from_millis(20));
+        }
+    }
+
+    /// Waits for `frames` more frames to be drawn; returns the last probe.
+    fn frames(&mut self, frames: u64, what: &str) -> anyhow::Result<Probe> {
+        let start = self.read().map_or(0, |p| p.drawn);
+        self.wait_for(what, |p| p.drawn >= start + frames)
+    }
+
+    fn x(&self, args: &[&str]) -> anyhow::Result<String> {
+        let mut all: Vec<&str> = args.to_vec();
+        // Commands that act on a window take it right after the command.
+        if matches!(args[0], "windowsize" | "windowminimize" | "windowactivate" | "windowfocus") {
+            all.insert(1, &self.window);
+            if args[0] == "windowfocus" || args[0] == "windowactivate" {
+                all.insert(1, "--sync");
+            }
+        }
+        self.display.xdotool(&all)
+    }
+
+    fn log_tail(&self) -> String {
+        let text = std::fs::read_to_string(&self.log).unwrap_or_default();
+        let lines: Vec<&str> = text.lines().collect();
+        lines[lines.len().saturating_sub(25)..].join("\n")
+    }
+
+    fn resize_through_one_pixel(&mut self) -> anyhow::Result<()> {
+        let (w, h) = (SIZE.0.to_string(), SIZE.1.to_string());
+        for _ in 0..CYCLES {
+            self.x(&["windowsize", "1", "1"])?;
+            self.wait_for("a 1×1 frame", |p| p.surface == (1, 1))?;
+            self.x(&["windowsize", &w, &h])?;
+            self.wait_for("a full-size frame again", |p| p.surface == SIZE)?;
+        }
+        Ok(())
+    }
+
+    fn minimise_and_restore(&mut self) -> anyhow::Result<()> {
+        for _ in 0..CYCLES {
+            self.x(&["windowminimize"])?;
+            // A frame in flight may still finish; after that, nothing is drawn.
+            std::thread::sleep(Duration::from_millis(200));
+            let hidden = self.read().map_or(0, |p| p.drawn);
+            std::thread::sleep(Duration::from_millis(300));
+            let still = self.read().map_or(0, |p| p.drawn);
+            ensure!(still <= hidden + 1, "{} kept drawing while minimised ({hidden} → {still} frames)", self.chapter);
+            self.x(&["windowactivate"])?;
+            self.frames(1, "a frame after restoring")?;
+        }
+        Ok(())
+    }
+
+    /// Drags across the scene; returns (camera before, camera after).
+    fn drag(&mut self) -> anyhow::Result<(Pose, Pose)> {
+        self.x(&["windowfocus"])?;
+        let before = self.frames(1, "a frame before the drag")?.camera;
+        self.x(&["mousemove", "--window", &self.window, "460", "260"])?;
+        self.x(&["mousedown", "1"])?;
+        for _ in 0..12 {
+            self.x(&["mousemove_relative", "--", "10", "3"])?;
+            std::thread::sleep(Duration::from_millis(30));
+        }
+        self.x(&["mouseup", "1"])?;
+        let after = self.frames(2, "frames after the drag")?.camera;
+        Ok((before, after))
+    }
+
+    /// Holds W, clicks into the overlay's time field while holding it (so
+    /// the overlay has the keyboard when the key comes up), lets go; returns
+    /// the camera while held, and two cameras after the release, a few
+    /// frames apart.
+    fn hold_key(&mut self) -> anyhow::Result<[Pose; 3]> {
+        self.x(&["windowfocus"])?;
+        let start = self.frames(1, "a frame before the key")?.camera;
+        self.x(&["keydown", "w"])?;
+        let held = self.wait_for("the camera to move while W is held", |p| p.camera.is_none() || p.camera != start)?;
+        // The time field is the overlay's first row, at the same place in every chapter.
+        self.x(&["mousemove", "--window", &self.window, "78", "50"])?;
+        self.x(&["click", "1"])?;
+        self.wait_for("the overlay's time field to take the keyboard", |p| p.typing)?;
+        self.x(&["keyup", "w"])?;
+        let released = self.frames(2, "frames after releasing W")?.camera;
+        let later = self.frames(3, "more frames after releasing W")?.camera;
+        // Click the scene to leave the field.
+        self.x(&["mousemove", "--window", &self.window, "500", "300"])?;
+        self.x(&["click", "1"])?;
+        self.wait_for("the overlay to give the keyboard back", |p| !p.typing)?;
+        Ok([held.camera, released, later])
+    }
+
+    fn close(mut self) -> anyhow::Result<()> {
+        self.x(&["windowfocus"])?;
+        self.x(&["key", "Escape"])?;
+        let deadline = Instant::now() + STEP_TIMEOUT;
+        let status = loop {
+            if let Some(status) = self.child.try_wait()? {
+                break status;
+            }
+            ensure!(Instant::now() < deadline, "{}: Esc did not close the window", self.chapter);
+            std::thread::sleep(Duration::from_millis(50));
+        };
+        let log = std::fs::read_to_string(&self.log).unwrap_or_default();
+        ensure!(status.success(), "{} exited with {status}:\n{}", self.chapter, self.log_tail());
+        for bad in ["panicked", "Validation Error", "wgpu error"] {
+            ensure!(!log.contains(bad), "{} reported `{bad}`:\n{}", self.chapter, self.log_tail());
+        }
+        Ok(())
+    }
+}
+
+impl Drop for Session<'_> {
+    fn drop(&mut self) {
+        if matches!(self.child.try_wait(), Ok(None)) {
+            let _ = self.child.kill();
+            let _ = self.child.wait();
+        }
+    }
+}
+
+/// Runs one chapter through everything; returns a one-line summary.
+fn drive(display: &Display, chapter: &str, dir: &Path) -> anyhow::Result<String> {
+    let started = Instant::now();
+    let mut session = Session::start(display, chapter, dir)?;
+    session.resize_through_one_pixel()?;
+    session.minimise_and_restore()?;
+    let (before, after) = session.drag()?;
+    let [held, released, later] = session.hold_key()?;
+    if let (Some(before), Some(after)) = (before, after) {
+        ensure!(before[3] != after[3] || before[4] != after[4], "{chapter}: dragging did not turn the camera");
+        let (Some(released), Some(later)) = (released, later) else { bail!("{chapter}: the camera disappeared") };
+        ensure!(held.is_some(), "{chapter}: no camera while W was held");
+        ensure!(
+            released == later,
+            "{chapter}: the camera kept moving after W was released: {released:?} then {later:?}"
+        );
+    }
+    let turned = before.is_some();
+    session.close()?;
+    Ok(format!(
+        "{chapter}: {CYCLES}× resized through 1×1, {CYCLES}× minimised and restored, {}, closed cleanly ({:.0} s)",
+        if turned { "drag turned the camera, W stopped on release" } else { "no camera to drag" },
+        started.elapsed().as_secs_f64()
+    ))
+}
+
+/// Runs the test for `chosen` chapters (all of them when empty).
+pub fn run(chosen: &[String]) -> anyhow::Result<()> {
+    let all = chapter_names()?;
+    if let Some(bad) = chosen.iter().find(|c| !all.contains(c)) {
+        bail!("unknown chapter '{bad}'; the chapters are: {}", all.join(", "));
+    }
+    if !crate::prerequisites::ensure_window_tools()? {
+        println!("\nwindow test skipped: no X server available on this system");
+        return Ok(());
+    }
+    crate::cargo(&["build", "--workspace", "--bins"])?;
+    let dir = std::env::temp_dir().join(format!("window-test-{}", std::process::id()));
+    std::fs::create_dir_all(&dir)?;
+    // Two chapters at a time, each on its own X display (pointer and
+    // keyboard focus belong to a display), heaviest first: a software
+    // rasteriser draws a frame's vertices on one core.
+    let queue: Vec<&String> = all.iter().filter(|c| chosen.is_empty() || chosen.contains(c)).rev().collect();
+    let next = std::sync::atomic::AtomicUsize::new(0);
+    let failures = std::sync::Mutex::new(Vec::new());
+    std::thread::scope(|scope| {
+        for _ in 0..2 {
+            scope.spawn(|| {
+                let display = match Display::start() {
+                    Ok(display) => display,
+                    Err(error) => return failures.lock().unwrap().push(format!("X display: {error:#}")),
+                };
+                while let Some(chapter) = queue.get(next.fetch_add(1, std::sync::atomic::Ordering::SeqCst)) {
+                    match drive(&display, chapter, &dir) {
+                        Ok(summary) => println!("window: {summary}"),
+                        Err(error) => {
+                            println!("window: {chapter} FAILED: {error:#}");
+                            failures.lock().unwrap().push(chapter.to_string());
+                        }
+                    }
+                }
+            });
+        }
+    });
+    let failures = failures.into_inner().unwrap_or_default();
+    ensure!(failures.is_empty(), "the window test failed for {}", failures.join(", "));
+    let _ = std::fs::remove_dir_all(&dir);
+    Ok(())
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn probe_lines_parse() {
+        let line = "drawn=12 skipped=3 surface=640x360 view=day typing=1 camera=1.0 2.0 3.0 0.5 -0.25\n";
+        let probe = Probe::parse(line).unwrap();
+        let camera = Some([1.0, 2.0, 3.0, 0.5, -0.25]);
+        assert_eq!(probe, Probe { drawn: 12, surface: (640, 360), typing: true, camera });
+        let none = Probe::parse("drawn=1 skipped=0 surface=1x1 view=flat typing=0 camera=none").unwrap();
+        assert_eq!(none.camera, None);
+        assert!(Probe::parse("drawn=").is_none());
+    }
+}
