@@ -7,6 +7,7 @@
 //! crate's binary with `--bless`) writes references.
 
 pub mod bench_tables;
+pub mod diagrams;
 pub mod snapshot;
 
 use std::path::{Path, PathBuf};

@@ -1,5 +1,6 @@
-//! Building the book: figures from the snapshot references, listings from
-//! the code by anchor, and a failure for any anchor or link that is broken.
+//! Building the book: figures from the snapshot references, diagrams drawn
+//! by code, listings from the code by anchor, and a failure for any anchor
+//! or link that is broken.
 
 use std::path::{Path, PathBuf};
 
@@ -17,6 +18,9 @@ pub fn build(check_snapshots: bool) -> anyhow::Result<()> {
     let book = root().join("book");
     println!("\n$ building {}", book.display());
     copy_figures(&root().join("tests/snapshots"), &book.join("src/figures"))?;
+    // Diagrams are drawn by code from the chapters' own functions, fresh each build.
+    let diagrams = book.join("src/diagrams");
+    cargo(&["run", "--quiet", "-p", "snapshots", "--bin", "diagrams", "--", &diagrams.display().to_string()])?;
     let problems = check_includes(&book.join("src"))?;
     if !problems.is_empty() {
         bail!("broken listings in the book:\n  {}", problems.join("\n  "));

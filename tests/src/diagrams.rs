@@ -1,0 +1,492 @@
+//! The book's diagrams, drawn as SVG by code. Plots are computed with the
+//! chapters' own functions (fog visibility, Perlin octaves, frustum
+//! culling, the sun's path, depth precision), so a diagram cannot disagree
+//! with the code it explains. `cargo xtask book` writes them into
+//! `book/src/diagrams/` on every build.
+
+use std::fmt::Write as _;
+
+use common::Camera;
+use common::glam::{Vec2, Vec3};
+
+/// Colours that read on the book's light and dark themes alike: every
+/// diagram has its own pale background.
+const INK: &str = "#1f2430";
+const MUTED: &str = "#7a8194";
+const ACCENT: &str = "#c0532b";
+const BLUE: &str = "#2f6db3";
+const PAPER: &str = "#fbf8f3";
+
+/// A small SVG document.
+struct Svg {
+    width: f32,
+    height: f32,
+    body: String,
+}
+
+impl Svg {
+    fn new(width: f32, height: f32) -> Self {
+        let mut svg = Self { width, height, body: String::new() };
+        svg.rect(0.0, 0.0, width, height, PAPER, "none");
+        svg
+    }
+
+    fn line(&mut self, a: Vec2, b: Vec2, stroke: &str, width: f32) {
+        let _ = writeln!(
+            self.body,
+            r#"<line x1="{:.1}" y1="{:.1}" x2="{:.1}" y2="{:.1}" stroke="{stroke}" stroke-width="{width}"/>"#,
+            a.x, a.y, b.x, b.y
+        );
+    }
+
+    fn dashed(&mut self, a: Vec2, b: Vec2, stroke: &str) {
+        let _ = writeln!(
+            self.body,
+            r#"<line x1="{:.1}" y1="{:.1}" x2="{:.1}" y2="{:.1}" stroke="{stroke}" stroke-width="1.2" stroke-dasharray="5 4"/>"#,
+            a.x, a.y, b.x, b.y
+        );
+    }
+
+    fn arrow(&mut self, a: Vec2, b: Vec2, stroke: &str) {
+        self.line(a, b, stroke, 1.6);
+        let d = (b - a).normalize_or_zero();
+        let side = Vec2::new(-d.y, d.x);
+        let (p, q) = (b - d * 9.0 + side * 4.5, b - d * 9.0 - side * 4.5);
+        self.polygon(&[b, p, q], stroke, "none");
+    }
+
+    fn polyline(&mut self, points: &[Vec2], stroke: &str, width: f32) {
+        let list: Vec<String> = points.iter().map(|p| format!("{:.1},{:.1}", p.x, p.y)).collect();
+        let _ = writeln!(
+            self.body,
+            r#"<polyline points="{}" fill="none" stroke="{stroke}" stroke-width="{width}" stroke-linejoin="round"/>"#,
+            list.join(" ")
+        );
+    }
+
+    /// Only what falls inside the rectangle (x, y, w, h) of what is drawn
+    /// after this, until `unclip`.
+    fn clip(&mut self, x: f32, y: f32, w: f32, h: f32) {
+        let _ = writeln!(
+            self.body,
+            r#"<clipPath id="c{x:.0}{y:.0}"><rect x="{x:.1}" y="{y:.1}" width="{w:.1}" height="{h:.1}"/></clipPath><g clip-path="url(#c{x:.0}{y:.0})">"#
+        );
+    }
+
+    fn unclip(&mut self) {
+        self.body.push_str("</g>\n");
+    }
+
+    fn polygon(&mut self, points: &[Vec2], fill: &str, stroke: &str) {
+        let list: Vec<String> = points.iter().map(|p| format!("{:.1},{:.1}", p.x, p.y)).collect();
+        let _ = writeln!(self.body, r#"<polygon points="{}" fill="{fill}" stroke="{stroke}"/>"#, list.join(" "));
+    }
+
+    fn rect(&mut self, x: f32, y: f32, w: f32, h: f32, fill: &str, stroke: &str) {
+        let _ = writeln!(
+            self.body,
+            r#"<rect x="{x:.1}" y="{y:.1}" width="{w:.1}" height="{h:.1}" fill="{fill}" stroke="{stroke}"/>"#
+        );
+    }
+
+    fn circle(&mut self, c: Vec2, r: f32, fill: &str) {
+        let _ = writeln!(self.body, r#"<circle cx="{:.1}" cy="{:.1}" r="{r}" fill="{fill}"/>"#, c.x, c.y);
+    }
+
+    /// Text at `at`; `anchor` is start, middle or end.
+    fn text(&mut self, at: Vec2, text: &str, size: f32, anchor: &str, fill: &str) {
+        let escaped = text.replace('&', "&amp;").replace('<', "&lt;").replace('>', "&gt;");
+        let _ = writeln!(
+            self.body,
+            r#"<text x="{:.1}" y="{:.1}" font-size="{size}" text-anchor="{anchor}" fill="{fill}">{escaped}</text>"#,
+            at.x, at.y
+        );
+    }
+
+    fn finish(self) -> String {
+        format!(
+            "<svg xmlns=\"http://www.w3.org/2000/svg\" viewBox=\"0 0 {w} {h}\" width=\"{w}\" height=\"{h}\" \
+             font-family=\"system-ui, sans-serif\">\n{}</svg>\n",
+            self.body,
+            w = self.width,
+            h = self.height
+        )
+    }
+}
+
+/// A plot area: maps data coordinates into a rectangle of the picture.
+struct Axes {
+    origin: Vec2,
+    size: Vec2,
+    x: (f32, f32),
+    y: (f32, f32),
+}
+
+impl Axes {
+    fn at(&self, x: f32, y: f32) -> Vec2 {
+        let u = (x - self.x.0) / (self.x.1 - self.x.0);
+        let v = (y - self.y.0) / (self.y.1 - self.y.0);
+        Vec2::new(self.origin.x + u * self.size.x, self.origin.y + self.size.y - v * self.size.y)
+    }
+
+    /// The frame, with tick labels at `xs` and `ys`.
+    fn draw(&self, svg: &mut Svg, xs: &[f32], ys: &[f32], x_label: &str, y_label: &str) {
+        let (left, bottom) = (self.origin.x, self.origin.y + self.size.y);
+        svg.line(Vec2::new(left, bottom), Vec2::new(left + self.size.x, bottom), INK, 1.2);
+        svg.line(Vec2::new(left, self.origin.y), Vec2::new(left, bottom), INK, 1.2);
+        for &x in xs {
+            let p = self.at(x, self.y.0);
+            svg.line(p, p + Vec2::new(0.0, 5.0), INK, 1.0);
+            svg.text(p + Vec2::new(0.0, 18.0), &trim(x), 11.0, "middle", INK);
+        }
+        for &y in ys {
+            let p = self.at(self.x.0, y);
+            svg.line(p, p - Vec2::new(5.0, 0.0), INK, 1.0);
+            svg.text(p + Vec2::new(-8.0, 4.0), &trim(y), 11.0, "end", INK);
+        }
+        svg.text(Vec2::new(left + self.size.x / 2.0, bottom + 36.0), x_label, 12.0, "middle", INK);
+        svg.text(Vec2::new(left, self.origin.y - 10.0), y_label, 12.0, "start", INK);
+    }
+
+    fn curve(&self, svg: &mut Svg, f: impl Fn(f32) -> f32, stroke: &str, width: f32) {
+        let points: Vec<Vec2> = (0..=200)
+            .map(|i| {
+                let x = self.x.0 + (self.x.1 - self.x.0) * i as f32 / 200.0;
+                self.at(x, f(x).clamp(self.y.0, self.y.1))
+            })
+            .collect();
+        svg.polyline(&points, stroke, width);
+    }
+}
+
+fn trim(value: f32) -> String {
+    let text = format!("{value:.2}");
+    text.trim_end_matches('0').trim_end_matches('.').to_string()
+}
+
+/// Chapter 01: clip space, and where its corners land in a picture.
+fn clip_space() -> String {
+    let mut svg = Svg::new(700.0, 300.0);
+    let clip = Axes { origin: Vec2::new(50.0, 40.0), size: Vec2::new(200.0, 200.0), x: (-1.0, 1.0), y: (-1.0, 1.0) };
+    clip.draw(&mut svg, &[-1.0, 0.0, 1.0], &[-1.0, 0.0, 1.0], "x (clip space)", "y");
+    let corners: Vec<Vec2> = triangle::TRIANGLE.iter().map(|v| Vec2::from(v.position)).collect();
+    let colours = ["#d23b2f", "#2f9a45", "#2f5fd0"];
+    svg.polygon(&corners.iter().map(|c| clip.at(c.x, c.y)).collect::<Vec<_>>(), "#e9e1d6", INK);
+    // The picture: 1280 × 720 pixels, y down.
+    let (width, height) = (1280.0, 720.0);
+    let (left, top, scale) = (370.0, 60.0, 0.2);
+    svg.rect(left, top, width * scale, height * scale, "#ffffff", INK);
+    svg.text(Vec2::new(left, top - 10.0), "(0, 0)", 11.0, "middle", INK);
+    svg.text(Vec2::new(left + width * scale, top + height * scale + 16.0), "(1280, 720)", 11.0, "middle", INK);
+    svg.text(Vec2::new(left + width * scale / 2.0, top + height * scale + 36.0), "pixels, y down", 12.0, "middle", INK);
+    let pixels: Vec<Vec2> =
+        corners.iter().map(|c| Vec2::new((c.x + 1.0) / 2.0 * width, (1.0 - c.y) / 2.0 * height)).collect();
+    svg.polygon(&pixels.iter().map(|p| Vec2::new(left, top) + *p * scale).collect::<Vec<_>>(), "#e9e1d6", INK);
+    for ((c, p), colour) in corners.iter().zip(&pixels).zip(colours) {
+        let (a, b) = (clip.at(c.x, c.y), Vec2::new(left, top) + *p * scale);
+        svg.circle(a, 4.0, colour);
+        svg.circle(b, 4.0, colour);
+        svg.text(a + Vec2::new(6.0, -6.0), &format!("({}, {})", trim(c.x), trim(c.y)), 10.0, "start", colour);
+        svg.text(b + Vec2::new(6.0, -6.0), &format!("({:.0}, {:.0})", p.x, p.y), 10.0, "start", colour);
+    }
+    svg.arrow(Vec2::new(275.0, 140.0), Vec2::new(345.0, 140.0), MUTED);
+    svg.text(Vec2::new(310.0, 130.0), "x' = (x+1)/2·W", 10.0, "middle", MUTED);
+    svg.text(Vec2::new(310.0, 162.0), "y' = (1−y)/2·H", 10.0, "middle", MUTED);
+    svg.finish()
+}
+
+/// Chapter 02: the view frustum from the side.
+fn frustum_side() -> String {
+    let mut svg = Svg::new(640.0, 440.0);
+    let eye = Vec2::new(60.0, 220.0);
+    let half = 30f32.to_radians(); // a 60° vertical field of view
+    let (near, far) = (70.0, 330.0);
+    let edge = |d: f32, up: f32| eye + Vec2::new(d, -up * d * half.tan());
+    svg.polygon(&[edge(near, 1.0), edge(far, 1.0), edge(far, -1.0), edge(near, -1.0)], "#efe6da", "none");
+    svg.line(eye, edge(far, 1.0), INK, 1.2);
+    svg.line(eye, edge(far, -1.0), INK, 1.2);
+    svg.line(edge(near, 1.0), edge(near, -1.0), BLUE, 2.0);
+    svg.line(edge(far, 1.0), edge(far, -1.0), BLUE, 2.0);
+    svg.dashed(eye, eye + Vec2::new(far + 40.0, 0.0), MUTED);
+    svg.circle(eye, 5.0, INK);
+    svg.text(eye + Vec2::new(0.0, 24.0), "eye", 12.0, "middle", INK);
+    svg.text(edge(near, -1.0) + Vec2::new(0.0, 18.0), "near (z = 0)", 11.0, "middle", BLUE);
+    svg.text(edge(far, -1.0) + Vec2::new(-4.0, 18.0), "far (z = 1)", 11.0, "middle", BLUE);
+    svg.text(edge(far, 1.0) + Vec2::new(8.0, 14.0), "fov_y = 60° from edge to edge", 11.0, "start", INK);
+    svg.text(
+        Vec2::new(20.0, 24.0),
+        "Everything drawn lies between the planes: −w ≤ x ≤ w, −w ≤ y ≤ w, 0 ≤ z ≤ w.",
+        11.0,
+        "start",
+        INK,
+    );
+    // An object, and where it lands on the near plane.
+    let object = eye + Vec2::new(240.0, -70.0);
+    svg.rect(object.x - 14.0, object.y - 14.0, 28.0, 28.0, ACCENT, "none");
+    let hit = eye + (object - eye) * (near / (object.x - eye.x));
+    svg.dashed(eye, object, ACCENT);
+    svg.circle(hit, 3.5, ACCENT);
+    svg.text(object + Vec2::new(22.0, 4.0), "an object, and its image on the near plane", 11.0, "start", ACCENT);
+    svg.finish()
+}
+
+/// Chapter 02: how stored depth spends its range, from the real projection.
+fn depth_precision() -> String {
+    let mut svg = Svg::new(640.0, 300.0);
+    let camera = Camera { near: 0.1, far: 200.0, ..Camera::looking_at(Vec3::ZERO, Vec3::NEG_Z, 1.0) };
+    let stored = |distance: f32| {
+        let clip = camera.projection() * Vec3::new(0.0, 0.0, -distance).extend(1.0);
+        clip.z / clip.w
+    };
+    let axes = Axes { origin: Vec2::new(70.0, 40.0), size: Vec2::new(520.0, 200.0), x: (0.1, 20.0), y: (0.0, 1.0) };
+    axes.draw(
+        &mut svg,
+        &[0.1, 5.0, 10.0, 15.0, 20.0],
+        &[0.0, 0.5, 0.99],
+        "distance from the eye (m), near 0.1 m, far 200 m",
+        "stored depth",
+    );
+    axes.curve(&mut svg, stored, BLUE, 2.2);
+    for (distance, label) in [(0.2, "0.5 at 0.2 m"), (10.0, "0.99 at 10 m")] {
+        let p = axes.at(distance, stored(distance));
+        svg.circle(p, 4.0, ACCENT);
+        svg.text(p + Vec2::new(8.0, 16.0), label, 11.0, "start", ACCENT);
+    }
+    svg.finish()
+}
+
+/// Chapter 03: octaves of Perlin noise and their sum, from the chapter's noise.
+fn fbm_octaves() -> String {
+    use terrain::noise::{Fbm, perlin3};
+    let mut svg = Svg::new(640.0, 430.0);
+    let fbm = Fbm { octaves: 4, persistence: 0.5, lacunarity: 2.0 };
+    let row = |i: usize, height: f32| Axes {
+        origin: Vec2::new(30.0, 34.0 + i as f32 * 74.0),
+        size: Vec2::new(580.0, height),
+        x: (0.0, 4.0),
+        y: (-0.6, 0.6),
+    };
+    for octave in 0..4 {
+        let axes = row(octave, 50.0);
+        let (frequency, amplitude) = (2f32.powi(octave as i32), 0.5f32.powi(octave as i32));
+        svg.line(axes.at(0.0, 0.0), axes.at(4.0, 0.0), "#e3dccf", 1.0);
+        axes.curve(&mut svg, |x| amplitude * perlin3(f64::from(x * frequency), 0.5, 0.5) as f32, MUTED, 1.6);
+        let label = format!("octave {}: frequency ×{frequency}, height ×{amplitude}", octave + 1);
+        svg.text(axes.origin - Vec2::new(0.0, 6.0), &label, 11.0, "start", INK);
+    }
+    // The sum of the rows above; `Fbm::sample` divides it by 1 + ½ + ¼ + ⅛.
+    let total: f32 = (0..4).map(|o| 0.5f32.powi(o)).sum();
+    let sum = row(4, 80.0);
+    svg.line(sum.at(0.0, 0.0), sum.at(4.0, 0.0), "#e3dccf", 1.0);
+    sum.curve(&mut svg, |x| fbm.sample(f64::from(x), 0.5, 0.5) as f32 * total, ACCENT, 2.2);
+    svg.text(sum.origin - Vec2::new(0.0, 6.0), "their sum: hills on hills (fBm)", 11.0, "start", ACCENT);
+    svg.finish()
+}
+
+/// Chapter 03: which chunks a camera's frustum keeps, seen from above,
+/// computed with the chapter's `Frustum` on a 16 × 16 grid of 64 m chunks.
+fn frustum_culling() -> String {
+    use terrain::chunks::Aabb;
+    use terrain::culling::Frustum;
+    let mut svg = Svg::new(640.0, 400.0);
+    let (n, size, cell) = (16, 64.0f32, 22.0f32);
+    let origin = Vec2::new(30.0, 20.0);
+    let eye = Vec3::new(5.5 * size, 20.0, 13.5 * size);
+    let camera = Camera { far: 700.0, ..Camera::looking_at(eye, eye + Vec3::new(0.55, -0.05, -1.0), 16.0 / 9.0) };
+    let frustum = Frustum::from_view_projection(camera.view_projection());
+    let mut kept = 0;
+    for z in 0..n {
+        for x in 0..n {
+            let min = Vec3::new(x as f32 * size, -10.0, z as f32 * size);
+            let visible = frustum.intersects(&Aabb { min, max: min + Vec3::new(size, 30.0, size) });
+            kept += usize::from(visible);
+            let fill = if visible { "#e7b48f" } else { "#e6e2da" };
+            svg.rect(origin.x + x as f32 * cell, origin.y + z as f32 * cell, cell, cell, fill, "#ffffff");
+        }
+    }
+    let to_map = |p: Vec3| origin + Vec2::new(p.x, p.z) / size * cell;
+    let forward = Vec2::new(camera.forward().x, camera.forward().z).normalize();
+    let half = (camera.fov_y / 2.0).tan() * camera.aspect;
+    let side = Vec2::new(-forward.y, forward.x);
+    let far_corner = |s: f32| to_map(eye) + (forward + side * s * half) * camera.far / size * cell;
+    svg.clip(origin.x, origin.y, n as f32 * cell, n as f32 * cell);
+    svg.polygon(&[to_map(eye), far_corner(1.0), far_corner(-1.0)], "none", ACCENT);
+    svg.unclip();
+    svg.circle(to_map(eye), 5.0, INK);
+    let legend = origin.x + n as f32 * cell + 24.0;
+    svg.rect(legend, 40.0, 16.0, 16.0, "#e7b48f", "none");
+    svg.text(Vec2::new(legend + 24.0, 53.0), &format!("drawn ({kept} of {})", n * n), 12.0, "start", INK);
+    svg.rect(legend, 66.0, 16.0, 16.0, "#e6e2da", "none");
+    svg.text(Vec2::new(legend + 24.0, 79.0), "culled", 12.0, "start", INK);
+    svg.line(Vec2::new(legend, 102.0), Vec2::new(legend + 16.0, 102.0), ACCENT, 1.5);
+    svg.text(Vec2::new(legend + 24.0, 106.0), "the frustum, from above", 12.0, "start", INK);
+    svg.text(Vec2::new(legend, 140.0), "A chunk is kept when its box", 11.0, "start", INK);
+    svg.text(Vec2::new(legend, 156.0), "is not wholly outside one of", 11.0, "start", INK);
+    svg.text(Vec2::new(legend, 172.0), "the six planes: boxes near an", 11.0, "start", INK);
+    svg.text(Vec2::new(legend, 188.0), "edge are kept, never missed.", 11.0, "start", INK);
+    svg.finish()
+}
+
+/// Chapter 04: visibility against distance for the chapter's fogs.
+fn fog_curve() -> String {
+    use fog::FogSettings;
+    let mut svg = Svg::new(640.0, 320.0);
+    let axes = Axes { origin: Vec2::new(70.0, 40.0), size: Vec2::new(500.0, 210.0), x: (0.0, 2500.0), y: (0.0, 1.0) };
+    axes.draw(&mut svg, &[0.0, 500.0, 1000.0, 1500.0, 2000.0, 2500.0], &[0.0, 0.37, 1.0], "distance (m)", "visibility");
+    let plain = FogSettings { density: FogSettings::HAZE.density, gradient: 1.0 };
+    let fogs = [
+        (FogSettings::HAZE, BLUE, "haze: density 0.0015, gradient 1.5"),
+        (plain, MUTED, "density 0.0015, gradient 1"),
+        (FogSettings::DUST_STORM, ACCENT, "dust storm: 0.004, gradient 2"),
+    ];
+    for (i, (fog, colour, label)) in fogs.iter().enumerate() {
+        axes.curve(&mut svg, |d| fog.visibility(d), colour, 2.0);
+        let opaque = fog.opaque_distance();
+        if opaque < 2500.0 {
+            let p = axes.at(opaque, 0.0);
+            svg.line(p, p - Vec2::new(0.0, 14.0), colour, 2.0);
+            svg.text(p - Vec2::new(0.0, 18.0), &format!("{opaque:.0} m"), 10.0, "middle", colour);
+        }
+        svg.text(Vec2::new(330.0, 60.0 + 16.0 * i as f32), label, 11.0, "start", colour);
+    }
+    svg.dashed(axes.at(0.0, (-1f32).exp()), axes.at(2500.0, (-1f32).exp()), "#c9c2b6");
+    svg.text(Vec2::new(330.0, 118.0), "ticks: the opaque distance, below 1/255", 10.0, "start", MUTED);
+    svg.finish()
+}
+
+/// Chapter 05: two vertex buffers, one stepping per vertex, one per instance.
+fn instancing_buffers() -> String {
+    let mut svg = Svg::new(640.0, 280.0);
+    svg.text(Vec2::new(20.0, 28.0), "buffer 0: the rock mesh, step_mode Vertex (60 vertices)", 12.0, "start", INK);
+    for i in 0..10 {
+        let x = 20.0 + i as f32 * 44.0;
+        svg.rect(x, 38.0, 40.0, 26.0, "#e9e1d6", INK);
+        svg.text(Vec2::new(x + 20.0, 56.0), &if i < 9 { format!("v{i}") } else { "…".into() }, 11.0, "middle", INK);
+    }
+    svg.text(Vec2::new(20.0, 98.0), "buffer 1: rocks, step_mode Instance (32 bytes each)", 12.0, "start", INK);
+    for i in 0..4 {
+        let x = 20.0 + i as f32 * 110.0;
+        svg.rect(x, 108.0, 104.0, 26.0, "#e7b48f", INK);
+        let label = if i < 3 { format!("rock {i}") } else { "…".into() };
+        svg.text(Vec2::new(x + 52.0, 126.0), &label, 11.0, "middle", INK);
+    }
+    svg.text(
+        Vec2::new(20.0, 172.0),
+        "draw_indexed(0..60, 0, 0..n): the vertex shader runs for every pair",
+        12.0,
+        "start",
+        INK,
+    );
+    for (row, rock) in ["rock 0", "rock 1", "rock 2"].iter().enumerate() {
+        let y = 184.0 + row as f32 * 28.0;
+        svg.text(Vec2::new(70.0, y + 17.0), rock, 11.0, "end", INK);
+        for v in 0..8 {
+            let x = 80.0 + v as f32 * 60.0;
+            svg.rect(x, y, 56.0, 22.0, if row % 2 == 0 { "#f3ece2" } else { "#efe2d3" }, "#d9cfc1");
+            svg.text(Vec2::new(x + 28.0, y + 15.0), &format!("v{v}, r{row}"), 10.0, "middle", INK);
+        }
+    }
+    svg.finish()
+}
+
+/// Chapter 06: the sun's height through a day, and how much day sky shows,
+/// from `skybox::sun_at` and `day_blend`.
+fn sun_path() -> String {
+    use skybox::{day_blend, sun_at};
+    let mut svg = Svg::new(640.0, 300.0);
+    let axes = Axes { origin: Vec2::new(70.0, 40.0), size: Vec2::new(520.0, 190.0), x: (0.0, 1.0), y: (-1.0, 1.0) };
+    axes.draw(
+        &mut svg,
+        &[0.0, 0.25, 0.5, 0.75, 1.0],
+        &[-1.0, 0.0, 1.0],
+        "time of day (0 midnight, 0.25 sunrise, 0.5 noon, 0.75 sunset)",
+        "",
+    );
+    svg.line(axes.at(0.0, 0.0), axes.at(1.0, 0.0), "#d9cfc1", 1.0);
+    axes.curve(&mut svg, |phase| sun_at(phase).direction.y, ACCENT, 2.2);
+    axes.curve(&mut svg, |phase| day_blend(sun_at(phase)), BLUE, 2.0);
+    svg.text(Vec2::new(80.0, 30.0), "sun height (y of the light's direction)", 11.0, "start", ACCENT);
+    svg.text(Vec2::new(330.0, 30.0), "day sky shown (0 night … 1 day)", 11.0, "start", BLUE);
+    for (phase, view) in [(0.02, "night"), (0.40, "day"), (0.745, "dusk")] {
+        let p = axes.at(phase, sun_at(phase).direction.y);
+        svg.circle(p, 4.5, INK);
+        svg.text(p + Vec2::new(0.0, -10.0), view, 11.0, "middle", INK);
+    }
+    svg.finish()
+}
+
+/// Chapter 07: the camera mirrored in the water.
+fn mirrored_camera() -> String {
+    let mut svg = Svg::new(640.0, 320.0);
+    let level = 160.0;
+    svg.rect(0.0, level, 640.0, 160.0, "#dbe7ef", "none");
+    svg.line(Vec2::new(0.0, level), Vec2::new(640.0, level), BLUE, 2.0);
+    svg.text(Vec2::new(620.0, level + 18.0), "water level", 11.0, "end", BLUE);
+    let eye = Vec2::new(90.0, level - 80.0);
+    let mirror = Vec2::new(eye.x, 2.0 * level - eye.y);
+    let peak = Vec2::new(560.0, level - 120.0);
+    // Where the ray from the mirrored eye to the peak crosses the water.
+    let t = (level - mirror.y) / (peak.y - mirror.y);
+    let hit = mirror + (peak - mirror) * t;
+    svg.polygon(&[Vec2::new(470.0, level), peak, Vec2::new(620.0, level)], "#c9a98d", "none");
+    svg.arrow(eye, hit, ACCENT);
+    svg.arrow(hit, peak, ACCENT);
+    svg.dashed(mirror, hit, MUTED);
+    svg.dashed(eye, mirror, MUTED);
+    svg.circle(eye, 5.0, INK);
+    svg.circle(mirror, 5.0, MUTED);
+    svg.text(eye + Vec2::new(-10.0, -12.0), "camera, h above", 11.0, "start", INK);
+    svg.text(mirror + Vec2::new(-10.0, 22.0), "mirrored camera, h below, pitch negated", 11.0, "start", MUTED);
+    svg.text(hit + Vec2::new(0.0, 20.0), "the reflection is what the mirrored camera sees here", 11.0, "middle", INK);
+    svg.text(
+        Vec2::new(20.0, 24.0),
+        "y′ = 2·level − y: the reflected ray and the mirrored camera's ray are one line",
+        11.0,
+        "start",
+        INK,
+    );
+    svg.finish()
+}
+
+/// Chapter 07: from a fragment's clip position to texture coordinates.
+fn projective_texturing() -> String {
+    let mut svg = Svg::new(640.0, 260.0);
+    let ndc = Axes { origin: Vec2::new(50.0, 40.0), size: Vec2::new(160.0, 160.0), x: (-1.0, 1.0), y: (-1.0, 1.0) };
+    ndc.draw(&mut svg, &[-1.0, 1.0], &[-1.0, 1.0], "clip.xy / clip.w", "");
+    let point = Vec2::new(0.5, 0.5);
+    svg.circle(ndc.at(point.x, point.y), 5.0, ACCENT);
+    let boxes = [(260.0, "refraction: u = (x+1)/2, v = (1−y)/2", false), (450.0, "reflection: v = (1+y)/2", true)];
+    for (left, label, flipped) in boxes {
+        svg.rect(left, 40.0, 160.0, 160.0, "#ffffff", INK);
+        svg.text(Vec2::new(left, 34.0), "(0, 0)", 10.0, "middle", INK);
+        svg.text(Vec2::new(left + 160.0, 214.0), "(1, 1)", 10.0, "middle", INK);
+        let u = (point.x + 1.0) / 2.0;
+        let v = if flipped { (1.0 + point.y) / 2.0 } else { (1.0 - point.y) / 2.0 };
+        svg.circle(Vec2::new(left + u * 160.0, 40.0 + v * 160.0), 5.0, ACCENT);
+        svg.text(Vec2::new(left + 80.0, 236.0), label, 11.0, "middle", INK);
+    }
+    svg.text(
+        Vec2::new(20.0, 20.0),
+        "the same fragment, looked up in each picture (texture v runs down)",
+        11.0,
+        "start",
+        INK,
+    );
+    svg.finish()
+}
+
+/// Every diagram, as (file name, SVG text).
+pub fn all() -> Vec<(&'static str, String)> {
+    vec![
+        ("clip-space.svg", clip_space()),
+        ("frustum-side.svg", frustum_side()),
+        ("depth-precision.svg", depth_precision()),
+        ("fbm-octaves.svg", fbm_octaves()),
+        ("frustum-culling.svg", frustum_culling()),
+        ("fog-curve.svg", fog_curve()),
+        ("instancing-buffers.svg", instancing_buffers()),
+        ("sun-path.svg", sun_path()),
+        ("mirrored-camera.svg", mirrored_camera()),
+        ("projective-texturing.svg", projective_texturing()),
+    ]
+}
