@@ -62,8 +62,11 @@ pub fn normal(waves: &[Wave], x: f32, z: f32, time: f32) -> Vec3 {
 
 // ANCHOR: lake_waves
 /// The lake's eight wave trains: wind from the south-west, directions
-/// spread by ±40°, wavelengths from 24 m down to 6 m, each with a steepness
-/// (amplitude over wavelength) of 1/160 so that no crest folds over.
+/// spread by ±40°, wavelengths from 24 m down to 6 m, each with the same
+/// gentle steepness (amplitude over wavelength) of 1/160, which keeps every
+/// slope of their sum under 25°. (A sum of sines can be steep but never
+/// folds over; folding belongs to Gerstner waves, which move points
+/// sideways, and there steepness is what limits it.)
 pub fn lake_waves() -> [Wave; 8] {
     let wavelengths = [24.0, 17.0, 13.0, 11.0, 9.0, 8.0, 7.0, 6.3];
     let spread = [0.0, -0.5, 0.45, -0.25, 0.7, 0.2, -0.7, 0.35];
