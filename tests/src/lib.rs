@@ -77,17 +77,45 @@ pub fn reference_path(chapter: &str, view: &str) -> PathBuf {
     snapshot_dir().join(chapter).join(format!("{view}.png"))
 }
 
-/// One device per set of needs, shared by every chapter in the process, so
-/// that data cached on the device (the terrain, the rocks) is made once.
-pub fn gpu(needs: GpuNeeds) -> anyhow::Result<Arc<Gpu>> {
-    static DEVICES: Mutex<Vec<(GpuNeeds, Arc<Gpu>)>> = Mutex::new(Vec::new());
-    let mut devices = DEVICES.lock().unwrap_or_else(|e| e.into_inner());
-    if let Some((_, gpu)) = devices.iter().find(|(n, _)| *n == needs) {
-        return Ok(gpu.clone());
+/// Devices not lent out at the moment, with what was cached on them.
+static IDLE_DEVICES: Mutex<Vec<(GpuNeeds, Arc<Gpu>)>> = Mutex::new(Vec::new());
+
+/// A device lent to one thread until the lease is dropped, then kept for
+/// the next chapter with the same needs, which finds the terrain and rocks
+/// already made on it (`Gpu::cached`). A thread never shares its device: a
+/// software rasteriser runs one device's submissions one after another, so
+/// two threads on one device would wait for each other.
+pub struct Lease {
+    needs: GpuNeeds,
+    gpu: Option<Arc<Gpu>>,
+}
+
+impl std::ops::Deref for Lease {
+    type Target = Gpu;
+    fn deref(&self) -> &Gpu {
+        self.gpu.as_ref().expect("a lease holds its device until dropped")
     }
-    let gpu = Arc::new(Gpu::headless(needs)?);
-    devices.push((needs, gpu.clone()));
-    Ok(gpu)
+}
+
+impl Drop for Lease {
+    fn drop(&mut self) {
+        if let Some(gpu) = self.gpu.take() {
+            IDLE_DEVICES.lock().unwrap_or_else(|e| e.into_inner()).push((self.needs, gpu));
+        }
+    }
+}
+
+/// Lends a device with `needs`: an idle one if there is one, else a new one.
+pub fn lease(needs: GpuNeeds) -> anyhow::Result<Lease> {
+    let idle = {
+        let mut devices = IDLE_DEVICES.lock().unwrap_or_else(|e| e.into_inner());
+        devices.iter().position(|(n, _)| *n == needs).map(|i| devices.swap_remove(i).1)
+    };
+    let gpu = match idle {
+        Some(gpu) => gpu,
+        None => Arc::new(Gpu::headless(needs)?),
+    };
+    Ok(Lease { needs, gpu: Some(gpu) })
 }
 
 /// A chapter instance, whatever its type.
@@ -141,8 +169,8 @@ pub struct ViewResult {
 }
 
 impl Entry {
-    pub fn gpu(&self) -> anyhow::Result<Arc<Gpu>> {
-        gpu(self.needs)
+    pub fn gpu(&self) -> anyhow::Result<Lease> {
+        lease(self.needs)
     }
 
     // ANCHOR: check

@@ -143,6 +143,15 @@ struct Globals {
     clip: [f32; 4],
 }
 
+/// What every chapter that draws the terrain asks of the device: clip
+/// distances where the adapter has them (`terrain.wgsl` clips with them,
+/// and with a fragment discard otherwise). Asking for the same thing keeps
+/// chapters 03 to 07 on one kind of device, so a process that opens several
+/// of them can share the terrain made on it (`Gpu::cached`).
+pub fn gpu_needs() -> common::GpuNeeds {
+    common::GpuNeeds { required: wgpu::Features::empty(), optional: wgpu::Features::CLIP_DISTANCES }
+}
+
 /// A clip plane (n, d): fragments with n · p + d < 0 are discarded. `KEEP_ALL`
 /// clips nothing; chapter 07 keeps what is above or below the water.
 pub const KEEP_ALL: Vec4 = Vec4::new(0.0, 0.0, 0.0, 1.0);
@@ -451,6 +460,10 @@ impl Chapter for TerrainChapter {
     const VIEWS: &'static [View] = VIEWS;
     const KEYS: &'static [(&'static str, &'static str)] = FlyController::KEYS;
     const BENCH_FRAMES: u32 = 10;
+
+    fn gpu_needs() -> common::GpuNeeds {
+        gpu_needs()
+    }
 
     fn new(gpu: &Gpu, target: Target) -> anyhow::Result<Self> {
         let terrain = TerrainRenderer::new(gpu, TerrainSettings::default());

@@ -136,6 +136,10 @@ impl Chapter for FogChapter {
     const KEYS: &'static [(&'static str, &'static str)] = FlyController::KEYS;
     const BENCH_FRAMES: u32 = 10;
 
+    fn gpu_needs() -> common::GpuNeeds {
+        terrain::gpu_needs()
+    }
+
     fn new(gpu: &Gpu, target: Target) -> anyhow::Result<Self> {
         let device = &gpu.device;
         let terrain = TerrainRenderer::new(gpu, TerrainSettings::default());

@@ -524,6 +524,10 @@ impl Chapter for InstancingChapter {
     const KEYS: &'static [(&'static str, &'static str)] = FlyController::KEYS;
     const BENCH_FRAMES: u32 = 10;
 
+    fn gpu_needs() -> common::GpuNeeds {
+        terrain::gpu_needs()
+    }
+
     fn new(gpu: &Gpu, target: Target) -> anyhow::Result<Self> {
         let plain = MarsPlain::new(gpu, target.format)?;
         Ok(Self {

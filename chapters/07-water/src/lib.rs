@@ -357,7 +357,7 @@ impl Chapter for WaterChapter {
 
     /// Clip distances where the adapter has them; a fragment discard otherwise.
     fn gpu_needs() -> common::GpuNeeds {
-        common::GpuNeeds { required: wgpu::Features::empty(), optional: wgpu::Features::CLIP_DISTANCES }
+        terrain::gpu_needs()
     }
 
     fn new(gpu: &Gpu, target: Target) -> anyhow::Result<Self> {
