@@ -178,8 +178,9 @@ pub trait Chapter: Sized + 'static {
     fn ui(&mut self, _ui: &mut egui::Ui) {}
 
     /// One line of chapter-specific figures for `--bench` (chunks drawn,
-    /// draw calls…), read after the measured frames.
-    fn stats(&self) -> String {
+    /// draw calls…), read after the measured frames; it may read results
+    /// back from the GPU.
+    fn stats(&mut self, _gpu: &Gpu) -> String {
         String::new()
     }
 

@@ -81,6 +81,9 @@ fn run_headless<C: Chapter>(args: &Args) -> anyhow::Result<()> {
             for (pass, stats) in &report.passes {
                 row(report.view, &format!("GPU: {pass} pass"), *stats);
             }
+            for (work, stats) in &report.cpu {
+                row(report.view, &format!("CPU: {work}"), *stats);
+            }
             let extra = if report.stats.is_empty() { String::new() } else { format!("; {}", report.stats) };
             notes.push(format!("- {}: setup (`Chapter::new`) {:.0} ms{extra}", report.view, report.setup_ms));
         }

@@ -43,6 +43,90 @@ impl Offscreen {
 }
 
 // ANCHOR: readback
+/// Copies a texture's bytes to the CPU, rows unpadded, `bytes_per_texel`
+/// bytes a texel (depth textures: the depth aspect).
+pub fn read_bytes(gpu: &Gpu, texture: &wgpu::Texture, bytes_per_texel: u32) -> anyhow::Result<Vec<u8>> {
+    let (width, height) = (texture.width(), texture.height());
+    let row_bytes = bytes_per_texel * width;
+    let padded_row_bytes = row_bytes.next_multiple_of(wgpu::COPY_BYTES_PER_ROW_ALIGNMENT);
+    let buffer = gpu.device.create_buffer(&wgpu::BufferDescriptor {
+        label: Some("readback"),
+        size: u64::from(padded_row_bytes) * u64::from(height),
+        usage: wgpu::BufferUsages::COPY_DST | wgpu::BufferUsages::MAP_READ,
+        mapped_at_creation: false,
+    });
+    let aspect = if texture.format().is_depth_stencil_format() {
+        wgpu::TextureAspect::DepthOnly
+    } else {
+        wgpu::TextureAspect::All
+    };
+    let mut encoder = gpu.device.create_command_encoder(&Default::default());
+    encoder.copy_texture_to_buffer(
+        wgpu::TexelCopyTextureInfo { texture, mip_level: 0, origin: wgpu::Origin3d::ZERO, aspect },
+        wgpu::TexelCopyBufferInfo {
+            buffer: &buffer,
+            layout: wgpu::TexelCopyBufferLayout {
+                offset: 0,
+                bytes_per_row: Some(padded_row_bytes),
+                rows_per_image: Some(height),
+            },
+        },
+        texture.size(),
+    );
+    gpu.queue.submit([encoder.finish()]);
+    let slice = buffer.slice(..);
+    slice.map_async(wgpu::MapMode::Read, |_| {});
+    gpu.device.poll(wgpu::PollType::wait_indefinitely()).context("waiting for the readback")?;
+    let padded = slice.get_mapped_range().context("mapping the readback buffer")?;
+    let mut bytes = Vec::with_capacity((row_bytes * height) as usize);
+    for row in padded.chunks_exact(padded_row_bytes as usize) {
+        bytes.extend_from_slice(&row[..row_bytes as usize]);
+    }
+    Ok(bytes)
+}
+
+/// Copies a floating-point colour texture (`Rgba16Float`, `Rgba32Float`,
+/// `Rg11b10Ufloat`) or a `Depth32Float` texture to the CPU as RGBA floats
+/// (depth in the first channel), row by row. For tests that check numbers,
+/// not pictures.
+pub fn read_floats(gpu: &Gpu, texture: &wgpu::Texture) -> anyhow::Result<Vec<[f32; 4]>> {
+    use wgpu::TextureFormat as F;
+    let format = texture.format();
+    let size = match format {
+        F::Rgba16Float => 8,
+        F::Rgba32Float => 16,
+        F::Rg11b10Ufloat | F::Depth32Float | F::R32Float => 4,
+        other => bail!("cannot read back {other:?} textures as floats"),
+    };
+    let bytes = read_bytes(gpu, texture, size)?;
+    Ok(bytes
+        .chunks_exact(size as usize)
+        .map(|texel| match format {
+            F::Rgba16Float => {
+                std::array::from_fn(|i| half::f16::from_le_bytes([texel[2 * i], texel[2 * i + 1]]).to_f32())
+            }
+            F::Rgba32Float => std::array::from_fn(|i| f32::from_le_bytes(texel[4 * i..4 * i + 4].try_into().unwrap())),
+            F::Rg11b10Ufloat => {
+                let bits = u32::from_le_bytes(texel.try_into().unwrap());
+                [small_float(bits & 0x7ff, 6), small_float((bits >> 11) & 0x7ff, 6), small_float(bits >> 22, 5), 1.0]
+            }
+            _ => [f32::from_le_bytes(texel.try_into().unwrap()), 0.0, 0.0, 1.0],
+        })
+        .collect())
+}
+
+/// An unsigned float of 5 exponent bits and `mantissa` bits (the 11- and
+/// 10-bit channels of `Rg11b10Ufloat`), bias 15 like half floats.
+fn small_float(bits: u32, mantissa: u32) -> f32 {
+    let exponent = (bits >> mantissa) as i32;
+    let fraction = (bits & ((1 << mantissa) - 1)) as f32 / (1 << mantissa) as f32;
+    match exponent {
+        0 => fraction * 2f32.powi(-14),
+        31 => f32::INFINITY,
+        e => (1.0 + fraction) * 2f32.powi(e - 15),
+    }
+}
+
 /// Copies an RGBA8 or BGRA8 texture to the CPU as an RGBA image.
 ///
 /// GPUs copy textures to buffers in rows padded to 256 bytes
@@ -140,6 +224,8 @@ pub struct BenchReport {
     pub frame: Stats,
     /// GPU time per timed pass, when the adapter has timestamp queries.
     pub passes: Vec<(&'static str, Stats)>,
+    /// CPU time of the work timed with `PassTimer::cpu`.
+    pub cpu: Vec<(&'static str, Stats)>,
     /// Time to create the chapter (`Chapter::new`), in milliseconds.
     pub setup_ms: f64,
     /// The chapter's own figures ([`Chapter::stats`]).
@@ -159,30 +245,38 @@ pub fn bench<C: Chapter>(gpu: &Gpu, request: &RenderRequest, frames: u32) -> any
 
     let mut wall = Vec::new();
     let mut passes: Vec<(&'static str, Vec<f64>)> = Vec::new();
+    let mut cpu: Vec<(&'static str, Vec<f64>)> = Vec::new();
     for i in 0..frames + 3 {
         let start = Instant::now();
         draw_frame(gpu, &mut chapter, &offscreen.view, request.time, request.view, &timer);
         gpu.device.poll(wgpu::PollType::wait_indefinitely()).context("waiting for the frame")?;
         let elapsed = start.elapsed().as_secs_f64() * 1e3;
         let timed = timer.read(gpu);
+        let cpu_timed = timer.take_cpu();
         if i < 3 {
             continue; // warm-up: pipeline caches, first-touch allocations
         }
         wall.push(elapsed);
-        for (label, ms) in timed {
-            match passes.iter_mut().find(|(l, _)| *l == label) {
-                Some((_, samples)) => samples.push(ms),
-                None => passes.push((label, vec![ms])),
+        for (series, samples) in [(&mut passes, timed), (&mut cpu, cpu_timed)] {
+            for (label, ms) in samples {
+                match series.iter_mut().find(|(l, _)| *l == label) {
+                    Some((_, samples)) => samples.push(ms),
+                    None => series.push((label, vec![ms])),
+                }
             }
         }
     }
+    let summarise = |series: Vec<(&'static str, Vec<f64>)>| {
+        series.into_iter().filter_map(|(l, s)| Some((l, Stats::of(&s)?))).collect()
+    };
     Ok(BenchReport {
         view: C::VIEWS[request.view].name,
         width: request.width,
         height: request.height,
         frame: Stats::of(&wall).context("no frames measured")?,
-        passes: passes.into_iter().filter_map(|(l, s)| Some((l, Stats::of(&s)?))).collect(),
+        passes: summarise(passes),
+        cpu: summarise(cpu),
         setup_ms,
-        stats: chapter.stats(),
+        stats: chapter.stats(gpu),
     })
 }

@@ -2,6 +2,7 @@
 //! min/median/p95 summaries the bench prints.
 
 use std::cell::RefCell;
+use std::time::Instant;
 
 /// Hands out timestamp query slots to render passes and reads the times back.
 ///
@@ -13,6 +14,8 @@ use std::cell::RefCell;
 pub struct PassTimer {
     queries: Option<Queries>,
     labels: RefCell<Vec<&'static str>>,
+    /// CPU work timed with [`PassTimer::cpu`] this frame: (label, ms).
+    cpu: RefCell<Vec<(&'static str, f64)>>,
 }
 
 struct Queries {
@@ -25,7 +28,7 @@ struct Queries {
 impl PassTimer {
     /// A timer that never measures.
     pub fn off() -> Self {
-        Self { queries: None, labels: RefCell::new(Vec::new()) }
+        Self { queries: None, labels: RefCell::new(Vec::new()), cpu: RefCell::new(Vec::new()) }
     }
 
     /// A timer for up to `passes` passes a frame, if the device can time them.
@@ -52,7 +55,11 @@ impl PassTimer {
             usage: wgpu::BufferUsages::MAP_READ | wgpu::BufferUsages::COPY_DST,
             mapped_at_creation: false,
         });
-        Self { queries: Some(Queries { set, resolve, readback, capacity: passes }), labels: RefCell::new(Vec::new()) }
+        Self {
+            queries: Some(Queries { set, resolve, readback, capacity: passes }),
+            labels: RefCell::new(Vec::new()),
+            cpu: RefCell::new(Vec::new()),
+        }
     }
 
     pub fn is_on(&self) -> bool {
@@ -70,6 +77,48 @@ impl PassTimer {
             beginning_of_pass_write_index: Some(2 * index),
             end_of_pass_write_index: Some(2 * index + 1),
         })
+    }
+
+    /// Timestamp writes for pass `index` of a chain of `count` passes that
+    /// is reported as one, `label`: the first pass writes the beginning and
+    /// the last the end, so the report shows the whole chain (a bloom's
+    /// dozen small passes, say). Passes between them write nothing.
+    pub fn chain(
+        &self,
+        label: &'static str,
+        index: usize,
+        count: usize,
+    ) -> Option<wgpu::RenderPassTimestampWrites<'_>> {
+        let first = index == 0;
+        let last = index + 1 == count;
+        if first {
+            self.labels.borrow_mut().push(label);
+        }
+        let queries = self.queries.as_ref()?;
+        let slot = self.labels.borrow().iter().rposition(|l| *l == label)? as u32;
+        if slot >= queries.capacity || !(first || last) {
+            return None;
+        }
+        Some(wgpu::RenderPassTimestampWrites {
+            query_set: &queries.set,
+            beginning_of_pass_write_index: first.then_some(2 * slot),
+            end_of_pass_write_index: last.then_some(2 * slot + 1),
+        })
+    }
+
+    /// Runs `work` and records how long it took on the CPU as `label`:
+    /// work a frame does before the GPU sees it (culling lights, say).
+    /// Chapters time nothing themselves; this is where the clock is.
+    pub fn cpu<T>(&self, label: &'static str, work: impl FnOnce() -> T) -> T {
+        let start = Instant::now();
+        let value = work();
+        self.cpu.borrow_mut().push((label, start.elapsed().as_secs_f64() * 1e3));
+        value
+    }
+
+    /// The CPU work timed since the last call, as (label, ms), and forgets it.
+    pub fn take_cpu(&self) -> Vec<(&'static str, f64)> {
+        std::mem::take(&mut *self.cpu.borrow_mut())
     }
 
     /// The names of the passes begun since the last `read` or `take_labels`,

@@ -12,7 +12,8 @@ pub fn table_path(chapter: &str) -> PathBuf {
 }
 
 /// The rows of a bench table as (view, pass), where pass is `None` for the
-/// whole frame's row and `Some(name)` for a `GPU: name pass` row.
+/// whole frame's row and `Some(name)` for a `GPU: name pass` or a
+/// `CPU: name` row (work a frame times on the CPU).
 pub fn rows(table: &str) -> Vec<(String, Option<String>)> {
     table
         .lines()
@@ -23,7 +24,8 @@ pub fn rows(table: &str) -> Vec<(String, Option<String>)> {
             if cells.len() != 7 || view == "view" || view.starts_with("---") {
                 return None;
             }
-            let pass = what.strip_prefix("GPU: ").and_then(|p| p.strip_suffix(" pass")).map(str::to_string);
+            let gpu = what.strip_prefix("GPU: ").and_then(|p| p.strip_suffix(" pass"));
+            let pass = gpu.or_else(|| what.strip_prefix("CPU: ")).map(str::to_string);
             Some((view.to_string(), pass))
         })
         .collect()

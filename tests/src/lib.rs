@@ -35,6 +35,7 @@ pub fn chapters() -> Vec<Entry> {
         entry::<instancing::InstancingChapter>(),
         entry::<skybox::SkyboxChapter>(),
         entry::<water::WaterChapter>(),
+        entry::<lighting::LightingChapter>(),
     ]
 }
 
@@ -158,7 +159,9 @@ impl<C: Chapter> Live for LiveChapter<C> {
         let offscreen = Offscreen::new(&gpu.device, target());
         let timer = PassTimer::off();
         draw_frame(gpu, &mut self.chapter, &offscreen.view, time, view, &timer);
-        Ok((read_texture(gpu, &offscreen.texture)?, timer.take_labels()))
+        let mut passes = timer.take_labels();
+        passes.extend(timer.take_cpu().into_iter().map(|(label, _)| label));
+        Ok((read_texture(gpu, &offscreen.texture)?, passes))
     }
 }
 

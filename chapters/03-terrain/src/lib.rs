@@ -548,7 +548,7 @@ impl Chapter for TerrainChapter {
         ui.add(egui::Slider::new(&mut self.controller.speed, 5.0..=400.0).logarithmic(true).text("speed (m/s)"));
     }
 
-    fn stats(&self) -> String {
+    fn stats(&mut self, _gpu: &Gpu) -> String {
         self.terrain.stats(self.drawn)
     }
 

@@ -227,7 +227,7 @@ impl Chapter for FogChapter {
         ui.add(egui::Slider::new(&mut self.controller.speed, 5.0..=400.0).logarithmic(true).text("speed (m/s)"));
     }
 
-    fn stats(&self) -> String {
+    fn stats(&mut self, _gpu: &Gpu) -> String {
         format!("far plane {:.0} m; {}", self.camera.far, self.terrain.stats(self.drawn))
     }
 

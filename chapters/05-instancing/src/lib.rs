@@ -609,7 +609,7 @@ impl Chapter for InstancingChapter {
         ui.add(egui::Slider::new(&mut self.controller.speed, 2.0..=200.0).logarithmic(true).text("speed (m/s)"));
     }
 
-    fn stats(&self) -> String {
+    fn stats(&mut self, _gpu: &Gpu) -> String {
         let calls = self.draw_calls;
         format!(
             "{} rocks, {:?}; {} draw calls ({} terrain chunks + {} for the rocks); {} vertices per rock, {} bytes per instance",

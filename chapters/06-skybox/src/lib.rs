@@ -401,7 +401,7 @@ impl Chapter for SkyboxChapter {
         ui.add(egui::Slider::new(&mut self.controller.speed, 2.0..=200.0).logarithmic(true).text("speed (m/s)"));
     }
 
-    fn stats(&self) -> String {
+    fn stats(&mut self, _gpu: &Gpu) -> String {
         let calls = self.draw_calls;
         format!(
             "time of day {:.3}; {} rocks; {} draw calls ({} terrain chunks, {} for the rocks, 1 for the sky)",

@@ -603,7 +603,7 @@ impl Chapter for WaterChapter {
         ui.add(egui::Slider::new(&mut self.controller.speed, 2.0..=100.0).logarithmic(true).text("speed (m/s)"));
     }
 
-    fn stats(&self) -> String {
+    fn stats(&mut self, _gpu: &Gpu) -> String {
         format!(
             "pictures {}×{}; {} rocks in each picture",
             self.pictures_size.0,
