@@ -4,12 +4,16 @@
 use crate::{Camera, Gpu, GpuNeeds, Input, PassTimer, ShaderError};
 
 /// A named picture a chapter can show: the default scene, a preset, or a
-/// debug view such as the depth buffer. Every view is also a snapshot.
+/// debug view such as the depth buffer. Every view is a snapshot and a
+/// figure, except bench views.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub struct View {
     pub name: &'static str,
     pub about: &'static str,
     pub kind: ViewKind,
+    /// Compared with a reference image by the tests. False for views that
+    /// exist to be measured (`View::bench`).
+    pub snapshot: bool,
 }
 
 /// What choosing a view does to the camera. Either way, what a view shows
@@ -26,11 +30,20 @@ pub enum ViewKind {
 
 impl View {
     pub const fn mode(name: &'static str, about: &'static str) -> Self {
-        Self { name, about, kind: ViewKind::Mode }
+        Self { name, about, kind: ViewKind::Mode, snapshot: true }
     }
 
     pub const fn preset(name: &'static str, about: &'static str) -> Self {
-        Self { name, about, kind: ViewKind::Preset }
+        Self { name, about, kind: ViewKind::Preset, snapshot: true }
+    }
+
+    /// A mode that exists to be measured by `--bench` (a workload, such as
+    /// a thousand lights looped over naively), not to be looked at: it is
+    /// selectable like any view, but not a snapshot. What it computes must
+    /// be checked some other way (chapter 08 compares its naive loop with
+    /// the culled one in a test).
+    pub const fn bench(name: &'static str, about: &'static str) -> Self {
+        Self { name, about, kind: ViewKind::Mode, snapshot: false }
     }
 }
 
@@ -135,6 +148,9 @@ pub trait Chapter: Sized + 'static {
     /// Frames `--bench` measures per view unless `--frames` says otherwise:
     /// fewer for chapters whose frames take a second on a software rasteriser.
     const BENCH_FRAMES: u32 = 100;
+    /// A view the others are compared with: `--bench` then also prints each
+    /// view's median frame as a multiple of this one's.
+    const BENCH_BASELINE: Option<&'static str> = None;
     /// Chapter-specific keys for the F1 help, as (key, what it does).
     const KEYS: &'static [(&'static str, &'static str)] = &[];
 

@@ -75,8 +75,10 @@ fn run_headless<C: Chapter>(args: &Args) -> anyhow::Result<()> {
             println!("| {view} | {what} | {:.2} | {:.2} | {:.2} |", s.min, s.median, s.p95);
         };
         let mut notes = Vec::new();
+        let mut medians = Vec::new();
         for view in views {
             let report = headless::bench::<C>(&gpu, &request(view), frames)?;
+            medians.push((report.view, report.frame.median));
             row(report.view, "frame (CPU+GPU)", report.frame);
             for (pass, stats) in &report.passes {
                 row(report.view, &format!("GPU: {pass} pass"), *stats);
@@ -88,6 +90,15 @@ fn run_headless<C: Chapter>(args: &Args) -> anyhow::Result<()> {
             notes.push(format!("- {}: setup (`Chapter::new`) {:.0} ms{extra}", report.view, report.setup_ms));
         }
         println!("\n{}", notes.join("\n"));
+        let baseline = C::BENCH_BASELINE.and_then(|name| medians.iter().find(|(view, _)| *view == name));
+        if let Some(&(name, base)) = baseline {
+            println!("\nEach view's median frame against `{name}`'s:\n");
+            println!("| view | median frame ms | × `{name}` |");
+            println!("|---|---:|---:|");
+            for (view, median) in &medians {
+                println!("| {view} | {median:.2} | {:.2} |", median / base);
+            }
+        }
     }
     Ok(())
 }

@@ -21,6 +21,8 @@ struct Frame {
     options: vec4<u32>,
     // x: near, y: far, z: ln(far / near); w: how much emissive glow shows (night).
     depth: vec4<f32>,
+    // Clusters across, down and deep (clusters.rs: GRID).
+    grid: vec4<u32>,
 };
 @group(0) @binding(0) var<uniform> frame: Frame;
 
@@ -100,11 +102,12 @@ fn cluster_at(world: vec3<f32>) -> i32 {
     if abs(ndc.x) > 1.0 || abs(ndc.y) > 1.0 {
         return -1;
     }
-    let x = min(u32((ndc.x + 1.0) * 0.5 * 16.0), 15u);
-    let y = min(u32((1.0 - ndc.y) * 0.5 * 9.0), 8u);
-    let slice = floor(log(depth / frame.depth.x) / frame.depth.z * 24.0);
-    let z = u32(clamp(slice, 0.0, 23.0));
-    return i32((z * 9u + y) * 16u + x);
+    let grid = frame.grid;
+    let x = min(u32((ndc.x + 1.0) * 0.5 * f32(grid.x)), grid.x - 1u);
+    let y = min(u32((1.0 - ndc.y) * 0.5 * f32(grid.y)), grid.y - 1u);
+    let slice = floor(log(depth / frame.depth.x) / frame.depth.z * f32(grid.z));
+    let z = u32(clamp(slice, 0.0, f32(grid.z - 1u)));
+    return i32((z * grid.y + y) * grid.x + x);
 }
 
 // The lights to loop over at `world`: (first, count, from a cluster list?).

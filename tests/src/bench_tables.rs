@@ -52,10 +52,12 @@ pub fn check_table(path: &str, table: &str, chapter: &str, views: &[View], drawn
         }
     }
     for (view, pass) in &rows {
-        let Some((_, passes)) = drawn.iter().find(|(v, _)| v == view) else {
+        if !views.iter().any(|v| v.name == view) {
             problems.push(format!("{path}: `{view}` is not a view of {chapter}; {regenerate}"));
             continue;
-        };
+        }
+        // Bench views are not rendered by the snapshot run: their passes are not known here.
+        let Some((_, passes)) = drawn.iter().find(|(v, _)| v == view) else { continue };
         if let Some(pass) = pass
             && !passes.contains(&pass.as_str())
         {
@@ -88,7 +90,8 @@ mod tests {
         let drawn = [("day", vec!["plain and sky"]), ("dusk", vec!["plain and sky"])];
         let problems = check_table("t.md", TABLE, "sky", two, &drawn);
         assert!(problems.len() == 1 && problems[0].contains("no row for the view `dusk`"), "{problems:?}");
-        let problems = check_table("t.md", TABLE, "sky", &[View::mode("noon", "")], &[("noon", vec![])]);
+        let noon: &[View] = &[View::mode("noon", "")];
+        let problems = check_table("t.md", TABLE, "sky", noon, &[("noon", vec![])]);
         assert!(problems.iter().any(|p| p.contains("`day` is not a view of sky")), "{problems:?}");
     }
 

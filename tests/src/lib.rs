@@ -186,7 +186,7 @@ impl Entry {
         let mut chapter = (self.open)(&gpu)?;
         let mut results = Vec::new();
         let mut passes = Vec::new();
-        for (i, view) in self.views.iter().enumerate() {
+        for (i, view) in self.views.iter().enumerate().filter(|(_, v)| v.snapshot) {
             chapter.show(i);
             chapter.reset_camera(i);
             let outcome =
@@ -211,7 +211,7 @@ impl Entry {
     pub fn bless(&self) -> anyhow::Result<Vec<PathBuf>> {
         let gpu = self.gpu()?;
         let mut written = Vec::new();
-        for (i, view) in self.views.iter().enumerate() {
+        for (i, view) in self.views.iter().enumerate().filter(|(_, v)| v.snapshot) {
             let path = reference_path(self.name, view.name);
             std::fs::create_dir_all(path.parent().expect("reference paths have a folder"))?;
             let mut chapter = (self.open)(&gpu)?;
@@ -247,6 +247,9 @@ impl Entry {
         }
         for (i, view) in self.views.iter().enumerate() {
             problems.extend(self.camera_rules(live.as_mut(), i));
+            if !view.snapshot {
+                continue;
+            }
             live.show(i);
             live.reset_camera(i);
             let (after_the_others, _) = live.render(&gpu, i, self.time)?;

@@ -506,6 +506,19 @@ mod tests {
         }
     }
 
+    /// The numbers the book quotes: change the layout, and this test says
+    /// which page to change too.
+    #[test]
+    fn the_night_has_339_lights_as_book_page_08_says() {
+        let city = City::new();
+        let lamps = city.fixed_lights.iter().filter(|l| matches!(l.kind, LightKind::Spot { .. })).count();
+        let buildings = city.fixed_lights.len() - lamps;
+        let traffic = city.traffic(0.0, 0.0);
+        assert_eq!((lamps, buildings, city.cars.len(), city.drones.len()), (288, 27, 10, 4));
+        assert_eq!(traffic.lights.len(), 2 * 10 + 4);
+        assert_eq!(city.fixed_lights.len() + traffic.lights.len(), 339);
+    }
+
     #[test]
     fn every_car_path_is_closed_and_the_same_every_time() {
         let (a, b) = (City::new(), City::new());

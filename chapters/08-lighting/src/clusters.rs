@@ -6,13 +6,13 @@
 use common::Camera;
 use common::glam::{Mat4, Vec3, Vec4Swizzles};
 
-use crate::lights::Light;
+use crate::lights::{Light, LightKind};
 
 // ANCHOR: grid
-/// Clusters across, down, and deep. Tiles are a sixteenth of the screen's
-/// width and a ninth of its height; depth slices grow with distance, so
-/// that every cluster is about as deep as it is wide.
-pub const GRID: [u32; 3] = [16, 9, 24];
+/// Clusters across, down, and deep: tiles of 40 × 40 pixels at 1280 × 720;
+/// depth slices that grow with distance, so that every cluster is about as
+/// deep as it is wide.
+pub const GRID: [u32; 3] = [64, 36, 48];
 pub const CLUSTERS: usize = (GRID[0] * GRID[1] * GRID[2]) as usize;
 
 /// The depth slice a view-space distance falls in: slices are spaced
@@ -50,28 +50,39 @@ pub struct ClusterLists {
     pub indices: Vec<u32>,
 }
 
-/// Builds every cluster's list. Each light marks the clusters inside the
-/// box its sphere of influence projects to: the depth slices its sphere
-/// spans, and the tiles covered by the projection of the sphere's
-/// bounding box, cut off at the near plane so that every corner projects
-/// (conservative: never too small).
+/// Builds every cluster's list. Each light is tested against the clusters
+/// inside the box its sphere of influence projects to (the depth slices its
+/// sphere spans, and the tiles its bounding box covers, cut off at the near
+/// plane so that every corner projects), and listed in those it may reach:
+/// where the cluster's box comes within its range and, for a spot light,
+/// reaches in front of it. Conservative: never left out where it shines.
 pub fn cull(camera: &Camera, lights: &[Light]) -> ClusterLists {
     let view = camera.view();
     let projection = camera.projection();
-    let mut covered: Vec<Option<[std::ops::Range<u32>; 3]>> = Vec::with_capacity(lights.len());
+    let boxes = cluster_boxes(camera);
+    let mut listed: Vec<Vec<u32>> = Vec::with_capacity(lights.len());
     let mut counts = vec![0u32; CLUSTERS];
     for light in lights {
-        let span = light_span(&view, &projection, camera, light);
-        if let Some([xs, ys, zs]) = &span {
-            for z in zs.clone() {
+        let mut clusters = Vec::new();
+        if let Some([xs, ys, zs]) = light_span(&view, &projection, camera, light) {
+            let centre = view.transform_point3(light.position);
+            let facing = match light.kind {
+                LightKind::Point => None,
+                LightKind::Spot { direction, .. } => Some(view.transform_vector3(direction)),
+            };
+            for z in zs {
                 for y in ys.clone() {
                     for x in xs.clone() {
-                        counts[((z * GRID[1] + y) * GRID[0] + x) as usize] += 1;
+                        let cluster = ((z * GRID[1] + y) * GRID[0] + x) as usize;
+                        if reaches(centre, light.range, facing, &boxes[cluster]) {
+                            counts[cluster] += 1;
+                            clusters.push(cluster as u32);
+                        }
                     }
                 }
             }
         }
-        covered.push(span);
+        listed.push(clusters);
     }
     // Prefix sums: where each cluster's list starts.
     let mut ranges = Vec::with_capacity(CLUSTERS);
@@ -81,19 +92,30 @@ pub fn cull(camera: &Camera, lights: &[Light]) -> ClusterLists {
         start += count;
     }
     let mut indices = vec![0u32; start as usize];
-    for (light, span) in covered.iter().enumerate() {
-        let Some([xs, ys, zs]) = span else { continue };
-        for z in zs.clone() {
-            for y in ys.clone() {
-                for x in xs.clone() {
-                    let range = &mut ranges[((z * GRID[1] + y) * GRID[0] + x) as usize];
-                    indices[(range[0] + range[1]) as usize] = light as u32;
-                    range[1] += 1;
-                }
-            }
+    for (light, clusters) in listed.iter().enumerate() {
+        for &cluster in clusters {
+            let range = &mut ranges[cluster as usize];
+            indices[(range[0] + range[1]) as usize] = light as u32;
+            range[1] += 1;
         }
     }
     ClusterLists { ranges, indices }
+}
+
+/// Whether a light at `centre` (view space) with `range` can reach into a
+/// cluster's box: the box comes within the range of the centre, and, for a
+/// spot light facing `facing`, some of the box lies in front of it (behind
+/// a spot, its cone factor is exactly zero).
+fn reaches(centre: Vec3, range: f32, facing: Option<Vec3>, (low, high): &(Vec3, Vec3)) -> bool {
+    let nearest = centre.clamp(*low, *high);
+    if nearest.distance_squared(centre) >= range * range {
+        return false;
+    }
+    facing.is_none_or(|axis| {
+        // The box's corner furthest along the axis, measured from the light.
+        let corner = Vec3::select(axis.cmpge(Vec3::ZERO), *high, *low);
+        axis.dot(corner - centre) > 0.0
+    })
 }
 
 /// The clusters (x, y and z ranges) a light's sphere of influence may
@@ -128,6 +150,34 @@ fn light_span(view: &Mat4, projection: &Mat4, camera: &Camera, light: &Light) ->
     let (y0, y1) = (tile((1.0 - high.y) * 0.5, GRID[1]), tile((1.0 - low.y) * 0.5, GRID[1]));
     Some([x0..x1 + 1, y0..y1 + 1, z0..z1 + 1])
 }
+/// Every cluster's bounding box in view space, in cluster order.
+fn cluster_boxes(camera: &Camera) -> Vec<(Vec3, Vec3)> {
+    let (tan_y, tan_x) = ((camera.fov_y / 2.0).tan(), (camera.fov_y / 2.0).tan() * camera.aspect);
+    let depth_at = |s: u32| camera.near * (camera.far / camera.near).powf(s as f32 / GRID[2] as f32);
+    let mut boxes = Vec::with_capacity(CLUSTERS);
+    for z in 0..GRID[2] {
+        let (near, far) = (depth_at(z), depth_at(z + 1));
+        for y in 0..GRID[1] {
+            // NDC y runs up, tile rows run down.
+            let (top, bottom) = (1.0 - 2.0 * y as f32 / GRID[1] as f32, 1.0 - 2.0 * (y + 1) as f32 / GRID[1] as f32);
+            for x in 0..GRID[0] {
+                let (left, right) =
+                    (-1.0 + 2.0 * x as f32 / GRID[0] as f32, -1.0 + 2.0 * (x + 1) as f32 / GRID[0] as f32);
+                let mut low = Vec3::splat(f32::INFINITY);
+                let mut high = Vec3::splat(f32::NEG_INFINITY);
+                for depth in [near, far] {
+                    for (nx, ny) in [(left, top), (right, top), (left, bottom), (right, bottom)] {
+                        let corner = Vec3::new(nx * depth * tan_x, ny * depth * tan_y, -depth);
+                        low = low.min(corner);
+                        high = high.max(corner);
+                    }
+                }
+                boxes.push((low, high));
+            }
+        }
+    }
+    boxes
+}
 // ANCHOR_END: cull
 
 #[cfg(test)]
@@ -144,15 +194,24 @@ mod tests {
         }
     }
 
-    /// `count` lights over the city's square, ranges up to `max_range` metres.
+    /// `count` lights over the city's square, ranges up to `max_range`
+    /// metres; every third a spot light pointing some way or other.
     fn lights(count: usize, max_range: f32) -> Vec<Light> {
         let mut rng = Rng::new(3);
         (0..count)
-            .map(|_| Light {
-                position: Vec3::new(rng.range(-150.0, 150.0), rng.range(0.0, 40.0), rng.range(-150.0, 150.0)),
-                colour: Vec3::ONE,
-                range: rng.range(3.0, max_range),
-                kind: LightKind::Point,
+            .map(|i| {
+                let direction = Vec3::new(rng.range(-1.0, 1.0), rng.range(-1.0, 0.5), rng.range(-1.0, 1.0));
+                let outer = rng.range(0.3, 1.4);
+                Light {
+                    position: Vec3::new(rng.range(-150.0, 150.0), rng.range(0.0, 40.0), rng.range(-150.0, 150.0)),
+                    colour: Vec3::ONE,
+                    range: rng.range(3.0, max_range),
+                    kind: if i % 3 == 0 {
+                        LightKind::Spot { direction: direction.normalize(), inner: outer * 0.6, outer }
+                    } else {
+                        LightKind::Point
+                    },
+                }
             })
             .collect()
     }
@@ -172,7 +231,7 @@ mod tests {
             let [start, count] = lists.ranges[cluster];
             let listed = &lists.indices[start as usize..(start + count) as usize];
             for (i, light) in lights.iter().enumerate() {
-                if light.position.distance(point) < light.range {
+                if light.reaching(point).length() > 0.0 {
                     assert!(listed.contains(&(i as u32)), "light {i} reaches {point} but is not in cluster {cluster}");
                     checked += 1;
                 }

@@ -36,15 +36,15 @@ pub const VIEWS: &[View] = &[
     View::mode("bloom-only", "the blurred bright light the bloom adds, alone"),
     View::mode("light-tiles", "lights each fragment visits, as a heat map (black 0, blue few, red 24 or more)"),
     View::preset("follow", "at night, behind a car, with its headlights on the road"),
-    View::mode("lights-1", "bench: the night city with 1 light, culled"),
-    View::mode("lights-16", "bench: 16 lights, culled per cluster"),
-    View::mode("lights-64", "bench: 64 lights, culled per cluster"),
-    View::mode("lights-256", "bench: 256 lights, culled per cluster"),
-    View::mode("lights-1024", "bench: 1024 lights, culled per cluster"),
-    View::mode("naive-16", "bench: 16 lights, every fragment visits every light"),
-    View::mode("naive-64", "bench: 64 lights, every fragment visits every light"),
-    View::mode("naive-256", "bench: 256 lights, every fragment visits every light"),
-    View::mode("naive-1024", "bench: 1024 lights, every fragment visits every light"),
+    View::bench("lights-1", "bench: the night city with 1 light, culled"),
+    View::bench("lights-16", "bench: 16 lights, culled per cluster"),
+    View::bench("lights-64", "bench: 64 lights, culled per cluster"),
+    View::bench("lights-256", "bench: 256 lights, culled per cluster"),
+    View::bench("lights-1024", "bench: 1024 lights, culled per cluster"),
+    View::bench("naive-16", "bench: 16 lights, every fragment visits every light"),
+    View::bench("naive-64", "bench: 64 lights, every fragment visits every light"),
+    View::bench("naive-256", "bench: 256 lights, every fragment visits every light"),
+    View::bench("naive-1024", "bench: 1024 lights, every fragment visits every light"),
 ];
 // ANCHOR_END: views
 
@@ -241,6 +241,7 @@ struct FrameUniform {
     ambient: [f32; 4],
     options: [u32; 4],
     depth: [f32; 4],
+    grid: [u32; 4],
 }
 // ANCHOR_END: frame_uniform
 
@@ -341,6 +342,7 @@ impl SceneLights {
                 u32::from(options.heat_map),
             ],
             depth: [camera.near, camera.far, (camera.far / camera.near).ln(), day.night],
+            grid: [clusters::GRID[0], clusters::GRID[1], clusters::GRID[2], 0],
         };
         gpu.queue.write_buffer(&self.frame, 0, bytemuck::bytes_of(&frame));
         let gpu_lights: Vec<GpuLight> = lights[..count].iter().map(Light::to_gpu).collect();
@@ -698,12 +700,17 @@ pub fn follow_camera(car: &paths::Pose, aspect: f32) -> Camera {
 
 // ANCHOR: frame_lights
 /// The lights of this frame: the moving ones (cars, drones), then the
-/// still ones, then beacons, up to the view's count.
-pub fn frame_lights(city: &City, traffic: &Traffic, beacons: &[Light], count: LightCount) -> Vec<Light> {
-    let all = traffic.lights.iter().chain(&city.fixed_lights);
+/// still ones (street lamps and lit buildings, which come on as night falls,
+/// `night` from 0 by day to 1), then beacons, up to the view's count. A
+/// light that is off is not in the list at all: it would cost the loop
+/// without adding anything.
+pub fn frame_lights(city: &City, traffic: &Traffic, beacons: &[Light], count: LightCount, night: f32) -> Vec<Light> {
+    let dimmed = |light: &Light| Light { colour: light.colour * night, ..*light };
+    let fixed = city.fixed_lights.iter().filter(|_| night > 0.0).map(dimmed);
+    let all = traffic.lights.iter().copied().chain(fixed);
     match count {
-        LightCount::City => all.copied().collect(),
-        LightCount::First(n) => all.chain(beacons).take(n.min(MAX_LIGHTS) as usize).copied().collect(),
+        LightCount::City => all.collect(),
+        LightCount::First(n) => all.chain(beacons.iter().copied()).take(n.min(MAX_LIGHTS) as usize).collect(),
     }
 }
 // ANCHOR_END: frame_lights
@@ -757,7 +764,8 @@ impl Chapter for LightingChapter {
     const TITLE: &'static str = "08 · Lighting";
     const VIEWS: &'static [View] = VIEWS;
     const SNAPSHOT_TIME: f32 = 6.0;
-    const BENCH_FRAMES: u32 = 20;
+    const BENCH_FRAMES: u32 = 5;
+    const BENCH_BASELINE: Option<&'static str> = Some("lights-1");
     const KEYS: &'static [(&'static str, &'static str)] = &[
         ("W A S D / arrows", "move (leaves the car you follow)"),
         ("E / Space, Q / Shift+Space", "rise, fall"),
@@ -890,7 +898,7 @@ impl Chapter for LightingChapter {
         let camera = self.camera;
 
         // The frame's lights, culled into cluster lists on the CPU.
-        let lights = frame_lights(&self.city, &traffic, &self.beacons, s.lights);
+        let lights = frame_lights(&self.city, &traffic, &self.beacons, s.lights, day.night);
         self.last_lists = if s.culling {
             frame.timer.cpu("light culling", || clusters::cull(&camera, &lights))
         } else {
@@ -1032,9 +1040,10 @@ impl Chapter for LightingChapter {
             self.last_light_count,
             self.settings.culling,
         );
+        let count = self.last_light_count;
         format!(
-            "{} lights; lights visited per covered pixel: {}; bloom in {:?}",
-            self.last_light_count,
+            "{count} light{}; lights visited per covered pixel: {}; bloom in {:?}",
+            if count == 1 { "" } else { "s" },
             per_pixel.map_or("n/a".into(), |v| format!("{v:.2}")),
             self.bloom.format
         )

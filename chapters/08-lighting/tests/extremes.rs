@@ -1,0 +1,44 @@
+//! The overlay's sliders at their ends: no light at all and the most
+//! lights under every shading model; the bloom's threshold, strength and
+//! spread at their limits under every display; exposure at both ends; and
+//! a 1 × 1 target. Nothing may produce a validation error or a NaN.
+
+use common::headless::{OFFSCREEN_FORMAT, Offscreen, draw_frame, read_floats};
+use common::{Chapter, Gpu, PassTimer, Target, chapter::view_index, show_view};
+use lighting::{Display, LightCount, LightingChapter, MAX_LIGHTS, Settings, Shading};
+
+/// Draws one frame with `settings` at `width` × `height`, inside a
+/// validation error scope, and checks the bloom for NaNs.
+fn draw(gpu: &Gpu, (width, height): (u32, u32), settings: Settings, case: &str) {
+    let target = Target { format: OFFSCREEN_FORMAT, width, height };
+    let mut chapter = LightingChapter::new(gpu, target).unwrap();
+    show_view(&mut chapter, view_index::<LightingChapter>("night").unwrap());
+    chapter.settings = settings;
+    let offscreen = Offscreen::new(&gpu.device, target);
+    gpu.catch_validation(|| draw_frame(gpu, &mut chapter, &offscreen.view, 6.0, 1, &PassTimer::off()))
+        .unwrap_or_else(|e| panic!("{case}: {e}"));
+    let bloom = read_floats(gpu, chapter.bloom.output().texture()).unwrap();
+    assert!(bloom.iter().flatten().all(|v| v.is_finite()), "{case}: the bloom holds a NaN or an infinity");
+}
+
+#[test]
+fn sliders_at_their_ends_draw_without_errors_or_nans() {
+    let gpu = Gpu::headless(LightingChapter::gpu_needs()).expect("an adapter (lavapipe will do)");
+    let night = Settings::for_view("night");
+    let small = (96, 54);
+    for lights in [LightCount::First(0), LightCount::First(MAX_LIGHTS), LightCount::City] {
+        for shading in [Shading::Flat, Shading::Gouraud, Shading::Phong] {
+            draw(&gpu, small, Settings { lights, shading, ..night }, &format!("{lights:?}, {shading:?}"));
+        }
+    }
+    for (threshold, strength, spread, exposure) in [(0.2, 2.0, 0.0, 0.1), (4.0, 0.0, 1.0, 4.0), (0.2, 2.0, 1.0, 4.0)] {
+        for display in [Display::Scene, Display::BloomOnly, Display::LightTiles] {
+            let mut s = Settings { display, exposure, ..night };
+            (s.bloom.threshold, s.bloom.strength, s.bloom.spread) = (threshold, strength, spread);
+            draw(&gpu, small, s, &format!("{display:?}, bloom {threshold}/{strength}/{spread}, exposure {exposure}"));
+        }
+    }
+    for lights in [LightCount::City, LightCount::First(MAX_LIGHTS)] {
+        draw(&gpu, (1, 1), Settings { lights, ..night }, &format!("1 × 1, {lights:?}"));
+    }
+}
