@@ -3,7 +3,6 @@
 // per instance. The three shading models differ only in where they call the
 // same `light_surface`: once per face, per vertex, or per fragment.
 #import lighting::lights::{frame, Surface, light_surface, heat}
-#import common::fullscreen::{FullscreenOutput, fullscreen_triangle, uv_to_ndc}
 
 // 32 bytes, as GpuMaterial in lib.rs. Emissive light is already scaled by
 // how much it shows now (lamps only at night).
@@ -132,30 +131,3 @@ fn fs_flat(in: FlatOutput) -> @location(0) vec4<f32> {
     return vec4<f32>(in.colour, 1.0);
 }
 // ANCHOR_END: flat
-
-// The sky: a gradient from the horizon to the zenith, and the sun, drawn at
-// the far plane behind everything (chapter 06's trick).
-struct Sky {
-    clip_to_world: mat4x4<f32>,
-    horizon: vec4<f32>,
-    zenith: vec4<f32>,
-};
-@group(1) @binding(1) var<uniform> sky: Sky;
-
-@vertex
-fn vs_fullscreen(@builtin(vertex_index) index: u32) -> FullscreenOutput {
-    return fullscreen_triangle(index, 1.0);
-}
-
-@fragment
-fn fs_sky(in: FullscreenOutput) -> @location(0) vec4<f32> {
-    if frame.options.w == 1u {
-        return vec4<f32>(0.0, 0.0, 0.0, 1.0);
-    }
-    let far = sky.clip_to_world * vec4<f32>(uv_to_ndc(in.uv), 1.0, 1.0);
-    let direction = normalize(far.xyz / far.w);
-    var colour = mix(sky.horizon.rgb, sky.zenith.rgb, smoothstep(0.0, 0.6, direction.y));
-    let towards_sun = max(dot(direction, frame.sun_direction.xyz), 0.0);
-    colour += frame.sun_colour.rgb * (8.0 * smoothstep(0.9995, 0.9998, towards_sun) + 0.15 * pow(towards_sun, 64.0));
-    return vec4<f32>(colour, 1.0);
-}

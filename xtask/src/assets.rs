@@ -6,6 +6,9 @@ use std::path::Path;
 
 use anyhow::Context as _;
 
+mod materials;
+pub mod models;
+
 /// Cube face order as WebGPU expects it, with the direction through pixel
 /// (u, v) of each face, u and v in −1..1 (v down the image).
 type FaceDirection = fn(f32, f32) -> [f32; 3];
@@ -100,11 +103,17 @@ fn night_sky(_: [f32; 3], pixel_id: u32) -> [f32; 3] {
 /// Value noise that tiles: the lattice wraps every `period` cells, so the
 /// texture's right edge meets its left and its bottom its top.
 fn tileable_noise(x: f32, y: f32, period: i32, salt: u32) -> f32 {
+    tileable_noise2(x, y, (period, period), salt)
+}
+
+/// [`tileable_noise`] with its own period across and down, for noise
+/// stretched one way (brushed metal).
+fn tileable_noise2(x: f32, y: f32, (period_x, period_y): (i32, i32), salt: u32) -> f32 {
     let (cx, cy) = (x.floor() as i32, y.floor() as i32);
     let (fx, fy) = (x - cx as f32, y - cy as f32);
     let (sx, sy) = (fx * fx * (3.0 - 2.0 * fx), fy * fy * (3.0 - 2.0 * fy));
     let corner = |dx: i32, dy: i32| {
-        let (ix, iy) = ((cx + dx).rem_euclid(period) as u32, (cy + dy).rem_euclid(period) as u32);
+        let (ix, iy) = ((cx + dx).rem_euclid(period_x) as u32, (cy + dy).rem_euclid(period_y) as u32);
         hash(ix.wrapping_mul(73_856_093) ^ iy.wrapping_mul(19_349_663) ^ salt.wrapping_mul(83_492_791))
     };
     let top = corner(0, 0) + (corner(1, 0) - corner(0, 0)) * sx;
@@ -179,9 +188,18 @@ same bytes.
 | `skybox/night/{px,nx,py,ny,pz,nz}.png` | star field, 6 × 256² cube faces | near black, stars where a per-pixel hash exceeds 0.9967, all the way round |
 | `water/dudv.png` | DuDv distortion map, 256², tileable | two independent tileable value-noise fields (3 octaves, periods 4, 8, 16) in red and green, 0.5 meaning no distortion |
 | `water/normal.png` | water normal map, 256², tileable | normals of a third tileable noise field by wrapped central differences; red = x, green = z, blue = up |
+";
 
+const PROVENANCE_NOTES: &str = "
 Faces are in WebGPU's order (+x, −x, +y, −y, +z, −z); the direction
 through pixel (u, v) of each face is in `FACES` in the generator.
+
+The city's textures (`textures/`, chapter 09) are 256², tileable, painted
+in `xtask/src/assets/materials.rs`: albedo in sRGB (its alpha, where used,
+marks what glows at night), normal maps in tangent space with the OpenGL
+convention (red +u, green up the image, blue out of the surface). The
+models (`models/`) are Wavefront OBJ with MTL materials whose texture paths
+are relative to the MTL file.
 ";
 
 pub fn generate() -> anyhow::Result<()> {
@@ -193,7 +211,10 @@ fn paint_all(root: &Path) -> anyhow::Result<()> {
     paint_cubemap(&root.join("skybox/day"), |d, _| day_sky(d))?;
     paint_cubemap(&root.join("skybox/night"), night_sky)?;
     paint_water(&root.join("water"))?;
-    std::fs::write(root.join("README.md"), PROVENANCE)?;
+    materials::paint(&root.join("textures"))?;
+    models::write(&root.join("models"))?;
+    let readme = format!("{PROVENANCE}{}{}{PROVENANCE_NOTES}", materials::provenance(), models::provenance());
+    std::fs::write(root.join("README.md"), readme)?;
     println!("wrote {}", root.join("README.md").display());
     Ok(())
 }
@@ -231,6 +252,6 @@ mod tests {
             }
         }
         std::fs::remove_dir_all(fresh).unwrap();
-        assert_eq!(checked, 15, "12 cube faces, 2 water maps and the README");
+        assert_eq!(checked, 31, "12 cube faces, 2 water maps, 5 × 2 city textures, 3 models with their MTL, and the README");
     }
 }

@@ -182,20 +182,22 @@ impl City {
         ));
         let lines: Vec<f32> = (0..=6).map(|i| -HALF + i as f32 * BLOCK).collect();
         for &line in &lines {
-            // Roads both ways; the second set sits 1 cm higher, so crossings do not fight for depth.
+            // Roads both ways; the second set sits 1 cm higher, so crossings
+            // do not fight for depth. Each is built along x and the first set
+            // turned a quarter, so that a road's length runs along its box's
+            // own x (chapter 09's road texture runs that way).
             let length = 2.0 * HALF + ROAD_WIDTH;
-            pieces.push(piece(
-                Shape::Cube,
-                Vec3::new(line, 0.04, 0.0),
-                Vec3::new(ROAD_WIDTH, 0.08, length),
-                Material::Road,
-            ));
-            pieces.push(piece(
-                Shape::Cube,
-                Vec3::new(0.0, 0.05, line),
-                Vec3::new(length, 0.08, ROAD_WIDTH),
-                Material::Road,
-            ));
+            let road = |position, turn: f32| Piece {
+                shape: Shape::Cube,
+                model: Mat4::from_scale_rotation_translation(
+                    Vec3::new(length, 0.08, ROAD_WIDTH),
+                    Quat::from_rotation_y(turn),
+                    position,
+                ),
+                material: Material::Road,
+            };
+            pieces.push(road(Vec3::new(line, 0.04, 0.0), FRAC_PI_2));
+            pieces.push(road(Vec3::new(0.0, 0.05, line), 0.0));
         }
         street_lamps(&lines, &mut pieces, &mut lights);
         let sphere_building = Vec3::new(30.0, 0.0, -30.0);
@@ -388,15 +390,26 @@ fn drones() -> Vec<Drone> {
 /// paths, drones bobbing with spinning propellers at theirs. A pure
 /// function of the two clocks' times.
 pub struct Traffic {
-    pub pieces: Vec<Piece>,
+    /// Each car's body, glass and lamps (chapter 09 draws a model instead).
+    pub car_parts: Vec<Piece>,
+    /// Each drone's body, arms and spinning propellers.
+    pub drone_parts: Vec<Piece>,
     pub lights: Vec<Light>,
     /// Where each car is, for a camera that follows one.
     pub cars: Vec<Pose>,
 }
 
+impl Traffic {
+    /// Every moving piece: the cars' parts, then the drones'.
+    pub fn pieces(&self) -> Vec<Piece> {
+        self.car_parts.iter().chain(&self.drone_parts).copied().collect()
+    }
+}
+
 impl City {
     pub fn traffic(&self, car_time: f32, drone_time: f32) -> Traffic {
         let mut pieces = Vec::new();
+        let mut drone_parts = Vec::new();
         let mut lights = Vec::new();
         let mut poses = Vec::new();
         for car in &self.cars {
@@ -449,13 +462,13 @@ impl City {
                 model: place * Mat4::from_scale_rotation_translation(scale, rotation, offset),
                 material,
             };
-            pieces.push(part(Shape::Sphere, Vec3::ZERO, Quat::IDENTITY, Vec3::new(2.2, 0.7, 2.2), Material::Drone));
-            pieces.push(part(Shape::Sphere, Vec3::Y * -0.4, Quat::IDENTITY, Vec3::splat(0.45), Material::Neon));
+            drone_parts.push(part(Shape::Sphere, Vec3::ZERO, Quat::IDENTITY, Vec3::new(2.2, 0.7, 2.2), Material::Drone));
+            drone_parts.push(part(Shape::Sphere, Vec3::Y * -0.4, Quat::IDENTITY, Vec3::splat(0.45), Material::Neon));
             for arm in 0..4 {
                 let angle = FRAC_PI_4 + FRAC_PI_2 * arm as f32;
                 let (s, c) = angle.sin_cos();
                 let turn = Quat::from_rotation_y(-angle);
-                pieces.push(part(
+                drone_parts.push(part(
                     Shape::Cube,
                     Vec3::new(c, 0.0, s) * 1.6,
                     turn,
@@ -465,8 +478,8 @@ impl City {
                 // Propellers spin fast, alternate ones the other way.
                 let spin = Quat::from_rotation_y(if arm % 2 == 0 { 40.0 } else { -40.0 } * t);
                 let tip = Vec3::new(c, 0.0, s) * 2.7 + Vec3::Y * 0.3;
-                pieces.push(part(Shape::Cube, tip, spin, Vec3::new(1.6, 0.04, 0.16), Material::Metal));
-                pieces.push(part(
+                drone_parts.push(part(Shape::Cube, tip, spin, Vec3::new(1.6, 0.04, 0.16), Material::Metal));
+                drone_parts.push(part(
                     Shape::Cylinder,
                     tip - Vec3::Y * 0.15,
                     Quat::IDENTITY,
@@ -476,7 +489,7 @@ impl City {
             }
             lights.push(point(centre - Vec3::Y * 0.8, Vec3::new(0.3, 0.8, 1.0) * 25.0, 12.0));
         }
-        Traffic { pieces, lights, cars: poses }
+        Traffic { car_parts: pieces, drone_parts, lights, cars: poses }
     }
 }
 // ANCHOR_END: moving

@@ -488,18 +488,18 @@ impl ToneMap {
 // ANCHOR_END: tonemap
 
 /// The HDR picture the scene is drawn into, and its depth buffer (which
-/// `stats` reads back).
-struct HdrTarget {
-    colour: wgpu::TextureView,
-    depth_texture: wgpu::Texture,
-    depth: wgpu::TextureView,
+/// `stats` reads back). Chapter 09 draws its textured city into one too.
+pub struct HdrTarget {
+    pub colour: wgpu::TextureView,
+    pub depth_texture: wgpu::Texture,
+    pub depth: wgpu::TextureView,
 }
 
 /// 16-bit floats per channel: room for light far brighter than white.
 pub const HDR_FORMAT: wgpu::TextureFormat = wgpu::TextureFormat::Rgba16Float;
 
 impl HdrTarget {
-    fn new(device: &wgpu::Device, width: u32, height: u32) -> Self {
+    pub fn new(device: &wgpu::Device, width: u32, height: u32) -> Self {
         let texture = |label, format, usage| {
             device.create_texture(&wgpu::TextureDescriptor {
                 label: Some(label),
@@ -523,7 +523,8 @@ impl HdrTarget {
     }
 }
 
-/// `Sky` in city.wgsl.
+// ANCHOR: sky
+/// `Sky` in sky.wgsl.
 #[repr(C)]
 #[derive(Clone, Copy, bytemuck::Pod, bytemuck::Zeroable)]
 struct SkyUniform {
@@ -532,15 +533,93 @@ struct SkyUniform {
     zenith: [f32; 4],
 }
 
+/// The sky over the city: a gradient from the horizon to the zenith by
+/// time of day, and the sun. Drawn last in a scene pass whose group 0 is a
+/// [`SceneLights`] (for the sun); it binds its own group 1.
+pub struct CitySky {
+    uniform: wgpu::Buffer,
+    group: wgpu::BindGroup,
+    layout: wgpu::PipelineLayout,
+    pipeline: wgpu::RenderPipeline,
+}
+
+impl CitySky {
+    pub fn new(gpu: &Gpu, lights: &SceneLights) -> Result<Self, ShaderError> {
+        let device = &gpu.device;
+        let size = std::mem::size_of::<SkyUniform>();
+        let group_layout = device.create_bind_group_layout(&wgpu::BindGroupLayoutDescriptor {
+            label: Some("sky"),
+            entries: &[uniform_entry(0, wgpu::ShaderStages::FRAGMENT, size)],
+        });
+        let uniform = device.create_buffer(&wgpu::BufferDescriptor {
+            label: Some("sky"),
+            size: size as u64,
+            usage: wgpu::BufferUsages::UNIFORM | wgpu::BufferUsages::COPY_DST,
+            mapped_at_creation: false,
+        });
+        let group = device.create_bind_group(&wgpu::BindGroupDescriptor {
+            label: Some("sky"),
+            layout: &group_layout,
+            entries: &[wgpu::BindGroupEntry { binding: 0, resource: uniform.as_entire_binding() }],
+        });
+        let layout = device.create_pipeline_layout(&wgpu::PipelineLayoutDescriptor {
+            label: Some("sky"),
+            bind_group_layouts: &[Some(&lights.layout), Some(&group_layout)],
+            immediate_size: 0,
+        });
+        let pipeline = Self::pipeline(gpu, &layout)?;
+        Ok(Self { uniform, group, layout, pipeline })
+    }
+
+    fn pipeline(gpu: &Gpu, layout: &wgpu::PipelineLayout) -> Result<wgpu::RenderPipeline, ShaderError> {
+        let module = shader!("lighting/sky.wgsl", imports: ["lighting/lights.wgsl", "common/fullscreen.wgsl"])
+            .module(&gpu.device)?;
+        // At the far plane, behind everything drawn before it.
+        let depth = wgpu::DepthStencilState {
+            format: common::texture::DEPTH_FORMAT,
+            depth_write_enabled: Some(false),
+            depth_compare: Some(wgpu::CompareFunction::LessEqual),
+            stencil: Default::default(),
+            bias: Default::default(),
+        };
+        gpu.catch_validation(|| {
+            fullscreen::pipeline(&gpu.device, "sky", layout, &module, "fs_sky", HDR_FORMAT.into(), Some(depth))
+        })
+        .map_err(ShaderError)
+    }
+
+    pub fn reload_shaders(&mut self, gpu: &Gpu) -> Result<(), ShaderError> {
+        self.pipeline = Self::pipeline(gpu, &self.layout)?;
+        Ok(())
+    }
+
+    /// The sky as `camera` sees it at this time of day.
+    pub fn write(&self, gpu: &Gpu, camera: &Camera, day: &Daylight) {
+        let turn_only = Mat4::look_to_rh(Vec3::ZERO, camera.forward(), Vec3::Y);
+        let sky = SkyUniform {
+            clip_to_world: (camera.projection() * turn_only).inverse().to_cols_array_2d(),
+            horizon: day.horizon.extend(1.0).into(),
+            zenith: day.zenith.extend(1.0).into(),
+        };
+        gpu.queue.write_buffer(&self.uniform, 0, bytemuck::bytes_of(&sky));
+    }
+
+    pub fn draw(&self, pass: &mut wgpu::RenderPass<'_>) {
+        pass.set_pipeline(&self.pipeline);
+        pass.set_bind_group(1, &self.group, &[]);
+        pass.draw(0..3, 0..1);
+    }
+}
+// ANCHOR_END: sky
+
 fn city_shader() -> ShaderFile {
-    shader!("lighting/city.wgsl", imports: ["lighting/lights.wgsl", "common/fullscreen.wgsl"])
+    shader!("lighting/city.wgsl", imports: ["lighting/lights.wgsl"])
 }
 
 struct Pipelines {
     flat: wgpu::RenderPipeline,
     gouraud: wgpu::RenderPipeline,
     phong: wgpu::RenderPipeline,
-    sky: wgpu::RenderPipeline,
 }
 
 fn build_pipelines(gpu: &Gpu, layout: &wgpu::PipelineLayout) -> Result<Pipelines, ShaderError> {
@@ -568,18 +647,10 @@ fn build_pipelines(gpu: &Gpu, layout: &wgpu::PipelineLayout) -> Result<Pipelines
             cache: None,
         })
     };
-    let sky_depth = wgpu::DepthStencilState {
-        format: common::texture::DEPTH_FORMAT,
-        depth_write_enabled: Some(false),
-        depth_compare: Some(wgpu::CompareFunction::LessEqual),
-        stencil: Default::default(),
-        bias: Default::default(),
-    };
     gpu.catch_validation(|| Pipelines {
         flat: mesh("flat", "vs_flat", "fs_flat"),
         gouraud: mesh("gouraud", "vs_gouraud", "fs_gouraud"),
         phong: mesh("phong", "vs_phong", "fs_phong"),
-        sky: fullscreen::pipeline(&gpu.device, "sky", layout, &module, "fs_sky", HDR_FORMAT.into(), Some(sky_depth)),
     })
     .map_err(ShaderError)
 }
@@ -746,7 +817,7 @@ pub struct LightingChapter {
     meshes: CityMeshes,
     scene_lights: SceneLights,
     materials: wgpu::Buffer,
-    sky: wgpu::Buffer,
+    sky: CitySky,
     city_group: wgpu::BindGroup,
     layout: wgpu::PipelineLayout,
     pipelines: Pipelines,
@@ -787,26 +858,14 @@ impl Chapter for LightingChapter {
             contents: bytemuck::cast_slice(&materials(0.0, true)),
             usage: wgpu::BufferUsages::STORAGE | wgpu::BufferUsages::COPY_DST,
         });
-        let sky = device.create_buffer(&wgpu::BufferDescriptor {
-            label: Some("sky"),
-            size: std::mem::size_of::<SkyUniform>() as u64,
-            usage: wgpu::BufferUsages::UNIFORM | wgpu::BufferUsages::COPY_DST,
-            mapped_at_creation: false,
-        });
         let city_layout = device.create_bind_group_layout(&wgpu::BindGroupLayoutDescriptor {
             label: Some("city"),
-            entries: &[
-                storage_entry(0, wgpu::ShaderStages::VERTEX_FRAGMENT),
-                uniform_entry(1, wgpu::ShaderStages::FRAGMENT, std::mem::size_of::<SkyUniform>()),
-            ],
+            entries: &[storage_entry(0, wgpu::ShaderStages::VERTEX_FRAGMENT)],
         });
         let city_group = device.create_bind_group(&wgpu::BindGroupDescriptor {
             label: Some("city"),
             layout: &city_layout,
-            entries: &[
-                wgpu::BindGroupEntry { binding: 0, resource: materials.as_entire_binding() },
-                wgpu::BindGroupEntry { binding: 1, resource: sky.as_entire_binding() },
-            ],
+            entries: &[wgpu::BindGroupEntry { binding: 0, resource: materials.as_entire_binding() }],
         });
         let layout = device.create_pipeline_layout(&wgpu::PipelineLayoutDescriptor {
             label: Some("city"),
@@ -814,6 +873,7 @@ impl Chapter for LightingChapter {
             immediate_size: 0,
         });
         let pipelines = build_pipelines(gpu, &layout)?;
+        let sky = CitySky::new(gpu, &scene_lights)?;
         let hdr = HdrTarget::new(device, target.width, target.height);
         let bloom = Bloom::new(gpu, target.width, target.height)?;
         let mut tone_map = ToneMap::new(gpu, target.format)?;
@@ -908,15 +968,9 @@ impl Chapter for LightingChapter {
         let options =
             LoopOptions { culling: s.culling, highlight: s.highlight, heat_map: s.display == Display::LightTiles };
         self.scene_lights.write(gpu, &camera, &day, &lights, &self.last_lists, options);
-        self.meshes.write(gpu, &traffic.pieces);
+        self.meshes.write(gpu, &traffic.pieces());
         gpu.queue.write_buffer(&self.materials, 0, bytemuck::cast_slice(&materials(day.night, s.highlights)));
-        let turn_only = Mat4::look_to_rh(Vec3::ZERO, camera.forward(), Vec3::Y);
-        let sky = SkyUniform {
-            clip_to_world: (camera.projection() * turn_only).inverse().to_cols_array_2d(),
-            horizon: day.horizon.extend(1.0).into(),
-            zenith: day.zenith.extend(1.0).into(),
-        };
-        gpu.queue.write_buffer(&self.sky, 0, bytemuck::bytes_of(&sky));
+        self.sky.write(gpu, &camera, &day);
 
         // The scene, in HDR.
         {
@@ -937,8 +991,7 @@ impl Chapter for LightingChapter {
                 Shading::Phong => &self.pipelines.phong,
             });
             self.meshes.draw(&mut pass, s.shading == Shading::Flat);
-            pass.set_pipeline(&self.pipelines.sky);
-            pass.draw(0..3, 0..1);
+            self.sky.draw(&mut pass);
         }
 
         // Bloom, then tone mapping to the target.
@@ -1051,6 +1104,7 @@ impl Chapter for LightingChapter {
 
     fn reload_shaders(&mut self, gpu: &Gpu) -> Result<(), ShaderError> {
         let pipelines = build_pipelines(gpu, &self.layout)?;
+        self.sky.reload_shaders(gpu)?;
         self.bloom.reload_shaders(gpu)?;
         self.tone_map.reload_shaders(gpu)?;
         self.pipelines = pipelines;

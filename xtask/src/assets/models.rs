@@ -1,0 +1,517 @@
+//! Models for chapters 09 and 11, written as Wavefront OBJ with MTL
+//! materials: a car with body, glass, tyres and lights; a stepped office
+//! tower; the boat that chapter 11 sails. Built from code like everything
+//! under `assets/`, and written the way exporters write them: several
+//! objects, quads and n-gons, some faces with relative (negative) indices.
+//!
+//! Conventions: metres, y up, the car's and the boat's front towards −z,
+//! standing on y = 0. Texture coordinates follow OBJ (v up the image).
+
+use std::fmt::Write as _;
+use std::path::Path;
+
+use glam::{Vec2, Vec3};
+
+/// An OBJ file and its MTL being written. Indices are 1-based, as OBJ's are.
+#[derive(Default)]
+pub struct ObjWriter {
+    obj: String,
+    current_material: String,
+    positions: usize,
+    uvs: usize,
+    normals: usize,
+}
+
+/// One corner of a face: indices of its position, uv and normal.
+#[derive(Clone, Copy)]
+pub struct Corner {
+    pub position: usize,
+    pub uv: Option<usize>,
+    pub normal: Option<usize>,
+}
+
+impl ObjWriter {
+    pub fn new(header: &str, mtl: Option<&str>) -> Self {
+        let mut writer = Self::default();
+        for line in header.lines() {
+            let _ = writeln!(writer.obj, "# {line}");
+        }
+        if let Some(mtl) = mtl {
+            let _ = writeln!(writer.obj, "mtllib {mtl}");
+        }
+        writer
+    }
+
+    pub fn object(&mut self, name: &str) {
+        let _ = writeln!(self.obj, "o {name}");
+        self.current_material.clear();
+    }
+
+    /// Switches material (written only when it changes).
+    pub fn material(&mut self, name: &str) {
+        if self.current_material != name {
+            let _ = writeln!(self.obj, "usemtl {name}");
+            self.current_material = name.to_string();
+        }
+    }
+
+    pub fn position(&mut self, p: Vec3) -> usize {
+        let _ = writeln!(self.obj, "v {} {} {}", f(p.x), f(p.y), f(p.z));
+        self.positions += 1;
+        self.positions
+    }
+
+    pub fn uv(&mut self, t: Vec2) -> usize {
+        let _ = writeln!(self.obj, "vt {} {}", f(t.x), f(t.y));
+        self.uvs += 1;
+        self.uvs
+    }
+
+    pub fn normal(&mut self, n: Vec3) -> usize {
+        let n = n.normalize();
+        let _ = writeln!(self.obj, "vn {} {} {}", f(n.x), f(n.y), f(n.z));
+        self.normals += 1;
+        self.normals
+    }
+
+    /// A face, counter-clockwise seen from outside. With `relative`, its
+    /// indices are written counting back from the latest of each kind.
+    pub fn face(&mut self, corners: &[Corner], relative: bool) {
+        let index = |i: usize, count: usize| if relative { format!("{}", i as i64 - count as i64 - 1) } else { i.to_string() };
+        let words: Vec<String> = corners
+            .iter()
+            .map(|c| {
+                let p = index(c.position, self.positions);
+                match (c.uv, c.normal) {
+                    (Some(t), Some(n)) => format!("{p}/{}/{}", index(t, self.uvs), index(n, self.normals)),
+                    (Some(t), None) => format!("{p}/{}", index(t, self.uvs)),
+                    (None, Some(n)) => format!("{p}//{}", index(n, self.normals)),
+                    (None, None) => p,
+                }
+            })
+            .collect();
+        let _ = writeln!(self.obj, "f {}", words.join(" "));
+    }
+
+    /// A flat polygon (any number of sides) with one normal and uvs from a
+    /// planar projection: `uv_of(point)`.
+    pub fn flat_polygon(&mut self, points: &[Vec3], uv_of: impl Fn(Vec3) -> Vec2) {
+        let normal = polygon_normal(points);
+        let n = self.normal(normal);
+        let corners: Vec<Corner> = points
+            .iter()
+            .map(|&p| {
+                let position = self.position(p);
+                let uv = self.uv(uv_of(p));
+                Corner { position, uv: Some(uv), normal: Some(n) }
+            })
+            .collect();
+        self.face(&corners, false);
+    }
+
+    /// A box from `low` to `high` as six quads, uvs in metres / `tile`.
+    pub fn cuboid(&mut self, low: Vec3, high: Vec3, tile: f32) {
+        let c = |x: f32, y: f32, z: f32| Vec3::new(x, y, z);
+        let (a, b) = (low, high);
+        let faces = [
+            [c(b.x, a.y, b.z), c(b.x, a.y, a.z), c(b.x, b.y, a.z), c(b.x, b.y, b.z)],
+            [c(a.x, a.y, a.z), c(a.x, a.y, b.z), c(a.x, b.y, b.z), c(a.x, b.y, a.z)],
+            [c(a.x, b.y, b.z), c(b.x, b.y, b.z), c(b.x, b.y, a.z), c(a.x, b.y, a.z)],
+            [c(a.x, a.y, a.z), c(b.x, a.y, a.z), c(b.x, a.y, b.z), c(a.x, a.y, b.z)],
+            [c(a.x, a.y, b.z), c(b.x, a.y, b.z), c(b.x, b.y, b.z), c(a.x, b.y, b.z)],
+            [c(b.x, a.y, a.z), c(a.x, a.y, a.z), c(a.x, b.y, a.z), c(b.x, b.y, a.z)],
+        ];
+        for quad in faces {
+            // u along the quad's first edge, v along its last, in metres.
+            let (origin, u_axis, v_axis) = (quad[0], (quad[1] - quad[0]).normalize(), (quad[3] - quad[0]).normalize());
+            self.flat_polygon(&quad, |p| Vec2::new((p - origin).dot(u_axis), (p - origin).dot(v_axis)) / tile);
+        }
+    }
+
+    pub fn write(self, path: &Path) -> anyhow::Result<()> {
+        std::fs::write(path, self.obj).map_err(|e| anyhow::anyhow!("cannot write {}: {e}", path.display()))
+    }
+}
+
+/// Numbers as exporters write them: six decimals, no "-0".
+fn f(x: f32) -> String {
+    let text = format!("{x:.6}");
+    if text.trim_start_matches('-').trim_start_matches(['0', '.']).is_empty() { "0.000000".into() } else { text }
+}
+
+/// Newell's method: the normal of a planar polygon, counter-clockwise.
+fn polygon_normal(points: &[Vec3]) -> Vec3 {
+    let mut n = Vec3::ZERO;
+    for (i, p) in points.iter().enumerate() {
+        let q = points[(i + 1) % points.len()];
+        n += Vec3::new((p.y - q.y) * (p.z + q.z), (p.z - q.z) * (p.x + q.x), (p.x - q.x) * (p.y + q.y));
+    }
+    n.normalize()
+}
+
+/// A prism: the polygon `profile` in the (z, y) plane, swept across x from
+/// `x0` to `x1`. Its two ends are n-gons; its sides are quads, smooth where
+/// the profile turns less than 30°, creased where it turns more.
+fn extrude_profile(obj: &mut ObjWriter, profile: &[Vec2], x0: f32, x1: f32, tile: f32) {
+    let at = |p: Vec2, x: f32| Vec3::new(x, p.y, p.x);
+    // The profile runs clockwise in (z, y) seen from +x, so the +x end reads
+    // counter-clockwise from outside after reversing.
+    let right: Vec<Vec3> = profile.iter().rev().map(|&p| at(p, x1)).collect();
+    obj.flat_polygon(&right, |p| Vec2::new(-p.z, p.y) / tile);
+    let left: Vec<Vec3> = profile.iter().map(|&p| at(p, x0)).collect();
+    obj.flat_polygon(&left, |p| Vec2::new(p.z, p.y) / tile);
+    let count = profile.len();
+    let edge_normal = |i: usize| {
+        let d = profile[(i + 1) % count] - profile[i];
+        // Outward in (z, y) for a clockwise profile seen from +x.
+        Vec3::new(0.0, -d.x, d.y).normalize()
+    };
+    let mut along = 0.0;
+    for i in 0..count {
+        let j = (i + 1) % count;
+        let here = edge_normal(i);
+        let smooth = |k: usize| {
+            let other = edge_normal(k);
+            if here.dot(other) > 30f32.to_radians().cos() { (here + other).normalize() } else { here }
+        };
+        let (n_i, n_j) = (smooth((i + count - 1) % count), smooth(j));
+        let length = (profile[j] - profile[i]).length();
+        let quad = [
+            (profile[i], x1, n_i, along),
+            (profile[j], x1, n_j, along + length),
+            (profile[j], x0, n_j, along + length),
+            (profile[i], x0, n_i, along),
+        ];
+        let corners: Vec<Corner> = quad
+            .iter()
+            .map(|&(p, x, n, s)| {
+                let position = obj.position(at(p, x));
+                let uv = obj.uv(Vec2::new(s, x - x0) / tile);
+                let normal = obj.normal(n);
+                Corner { position, uv: Some(uv), normal: Some(normal) }
+            })
+            .collect();
+        obj.face(&corners, false);
+        along += length;
+    }
+}
+
+/// A cylinder along x (a wheel), centred at `centre`, written with relative
+/// indices as some exporters do.
+fn wheel(obj: &mut ObjWriter, centre: Vec3, radius: f32, width: f32, segments: usize) {
+    let ring = |i: usize| {
+        let angle = std::f32::consts::TAU * i as f32 / segments as f32;
+        Vec2::new(angle.cos(), angle.sin())
+    };
+    // The tread: quads, smooth normals, written with negative indices.
+    for i in 0..segments {
+        let (a, b) = (ring(i), ring(i + 1));
+        let mut corners = Vec::new();
+        for (r, x, u) in [(a, -1.0, i), (a, 1.0, i), (b, 1.0, i + 1), (b, -1.0, i + 1)] {
+            let position = obj.position(centre + Vec3::new(x * width / 2.0, r.y * radius, r.x * radius));
+            let uv = obj.uv(Vec2::new(u as f32 / segments as f32, (x + 1.0) / 2.0));
+            let normal = obj.normal(Vec3::new(0.0, r.y, r.x));
+            corners.push(Corner { position, uv: Some(uv), normal: Some(normal) });
+        }
+        obj.face(&corners, true);
+    }
+    // The two hubs: n-gons.
+    for side in [-1.0f32, 1.0] {
+        let mut points: Vec<Vec3> =
+            (0..segments).map(|i| centre + Vec3::new(side * width / 2.0, ring(i).y * radius, ring(i).x * radius)).collect();
+        if side > 0.0 {
+            points.reverse();
+        }
+        obj.flat_polygon(&points, |p| Vec2::new(p.z - centre.z, p.y - centre.y) / (2.0 * radius) + 0.5);
+    }
+}
+
+const CAR_MTL: &str = "\
+# The car's materials (chapter 09). Kd, Ks, Ns as usual; Ke is light of the
+# material's own. Texture paths are relative to this file.
+newmtl body
+Kd 0.550 0.080 0.050
+Ks 0.800 0.800 0.800
+Ns 80
+map_Kd ../../textures/metal/albedo.png
+map_Bump ../../textures/metal/normal.png
+
+newmtl glass
+Kd 0.050 0.130 0.180
+Ks 0.900 0.900 0.900
+Ns 96
+
+newmtl tyre
+Kd 0.020 0.020 0.020
+Ks 0.100 0.100 0.100
+Ns 8
+
+newmtl headlight
+Kd 1.000 1.000 1.000
+Ks 0.500 0.500 0.500
+Ns 32
+Ke 8.000 7.500 6.500
+
+newmtl taillight
+Kd 0.400 0.020 0.020
+Ks 0.500 0.500 0.500
+Ns 32
+Ke 5.000 0.200 0.100
+";
+
+/// The car: 4.4 m long, 1.9 m wide, its front towards −z.
+fn car() -> String {
+    let mut obj = ObjWriter::new("A car for chapter 09, written by `cargo xtask assets`.", Some("car.mtl"));
+    obj.object("body");
+    obj.material("body");
+    // Side profile (z, y), clockwise seen from +x: rear bumper, boot, roof
+    // line under the glass, bonnet, nose, and back along the sill.
+    let body = [
+        (2.20, 0.30),
+        (2.25, 0.70),
+        (2.05, 0.95),
+        (1.20, 0.98),
+        (-0.70, 0.98),
+        (-1.80, 0.85),
+        (-2.20, 0.72),
+        (-2.25, 0.45),
+        (-2.10, 0.30),
+    ]
+    .map(|(z, y)| Vec2::new(z, y));
+    extrude_profile(&mut obj, &body, -0.95, 0.95, 4.0);
+    obj.object("cabin");
+    obj.material("glass");
+    let cabin = [(1.30, 0.98), (0.85, 1.45), (-0.15, 1.45), (-0.75, 0.98)].map(|(z, y)| Vec2::new(z, y));
+    extrude_profile(&mut obj, &cabin, -0.82, 0.82, 4.0);
+    obj.object("wheels");
+    obj.material("tyre");
+    for (x, z) in [(-0.85, -1.40), (0.85, -1.40), (-0.85, 1.40), (0.85, 1.40)] {
+        wheel(&mut obj, Vec3::new(x, 0.33, z), 0.33, 0.26, 16);
+    }
+    obj.object("lights");
+    obj.material("headlight");
+    for side in [-1.0, 1.0] {
+        obj.cuboid(Vec3::new(side * 0.55 - 0.15, 0.58, -2.27), Vec3::new(side * 0.55 + 0.15, 0.70, -2.20), 1.0);
+    }
+    obj.material("taillight");
+    for side in [-1.0, 1.0] {
+        obj.cuboid(Vec3::new(side * 0.60 - 0.18, 0.62, 2.20), Vec3::new(side * 0.60 + 0.18, 0.72, 2.28), 1.0);
+    }
+    obj.obj
+}
+
+const TOWER_MTL: &str = "\
+# The tower's materials (chapter 09). The facade's albedo alpha marks lit
+# windows: chapter 09 reads it as where Ke glows.
+newmtl facade
+Kd 1.000 1.000 1.000
+Ks 0.300 0.300 0.300
+Ns 48
+Ke 3.000 2.300 1.400
+map_Kd ../../textures/facade/albedo.png
+map_Bump ../../textures/facade/normal.png
+
+newmtl roof
+Kd 1.000 1.000 1.000
+Ks 0.100 0.100 0.100
+Ns 12
+map_Kd ../../textures/concrete/albedo.png
+bump ../../textures/concrete/normal.png
+
+newmtl antenna
+Kd 1.000 1.000 1.000
+Ks 0.600 0.600 0.600
+Ns 96
+map_Kd ../../textures/metal/albedo.png
+norm ../../textures/metal/normal.png
+";
+
+/// A tower in three setbacks, 100 m tall with its antenna, on y = 0.
+fn tower() -> String {
+    let mut obj = ObjWriter::new("An office tower for chapter 09, written by `cargo xtask assets`.", Some("tower.mtl"));
+    let stages = [(24.0, 0.0, 48.0), (18.0, 48.0, 72.0), (12.0, 72.0, 88.0)];
+    for (i, &(width, bottom, top)) in stages.iter().enumerate() {
+        let half = width / 2.0;
+        obj.object(&format!("stage{}", i + 1));
+        obj.material("facade");
+        // The walls, one 16 m facade tile per 16 m, starting at the ground.
+        let corners = [Vec2::new(half, half), Vec2::new(half, -half), Vec2::new(-half, -half), Vec2::new(-half, half)];
+        for k in 0..4 {
+            let (a, b) = (corners[k], corners[(k + 1) % 4]);
+            let quad = [Vec3::new(a.x, bottom, a.y), Vec3::new(b.x, bottom, b.y), Vec3::new(b.x, top, b.y), Vec3::new(a.x, top, a.y)];
+            let start = quad[0];
+            let along = (quad[1] - quad[0]).normalize();
+            obj.flat_polygon(&quad, |p| Vec2::new((p - start).dot(along), p.y) / 16.0);
+        }
+        obj.material("roof");
+        let roof: Vec<Vec3> = corners.iter().map(|c| Vec3::new(c.x, top, c.y)).collect();
+        obj.flat_polygon(&roof, |p| Vec2::new(p.x, -p.z) / 4.0);
+    }
+    obj.object("antenna");
+    obj.material("antenna");
+    obj.cuboid(Vec3::new(-0.4, 88.0, -0.4), Vec3::new(0.4, 100.0, 0.4), 4.0);
+    obj.obj
+}
+
+const BOAT_MTL: &str = "\
+# The boat's materials (chapters 09 and 11).
+newmtl hull
+Kd 0.800 0.780 0.740
+Ks 0.400 0.400 0.400
+Ns 40
+
+newmtl stripe
+Kd 0.060 0.160 0.420
+Ks 0.400 0.400 0.400
+Ns 40
+
+newmtl deck
+Kd 0.420 0.270 0.150
+Ks 0.100 0.100 0.100
+Ns 10
+
+newmtl cabin
+Kd 1.000 1.000 1.000
+Ks 0.200 0.200 0.200
+Ns 24
+map_Kd ../../textures/metal/albedo.png
+map_Bump ../../textures/metal/normal.png
+
+newmtl mast
+Kd 0.700 0.700 0.720
+Ks 0.700 0.700 0.700
+Ns 80
+";
+
+/// The boat: 8 m long, 2.6 m in the beam, its keel at y = 0 and its bow
+/// towards −z. The hull is lofted through cross-sections, smooth-shaded.
+fn boat() -> String {
+    let mut obj = ObjWriter::new("A boat for chapters 09 and 11, written by `cargo xtask assets`.", Some("boat.mtl"));
+    const STATIONS: usize = 16;
+    const AROUND: usize = 8;
+    let (length, beam, depth) = (8.0f32, 2.6f32, 1.2f32);
+    // At t in 0..1 from bow to stern: half the beam and how far the keel
+    // falls below the gunwale. Pointed at the bow, full at the stern.
+    let section = |t: f32| {
+        let width = (beam / 2.0) * (1.0 - (1.0 - t).powi(2)).sqrt().max(0.02) * (1.0 - 0.15 * t * t);
+        let keel = depth * (0.35 + 0.65 * (std::f32::consts::PI * t.min(0.85) / 0.85 / 2.0).sin()).min(1.0);
+        (width, keel)
+    };
+    // Point k of a section: round the bilge from the keel (k = 0) up the side
+    // to the gunwale (k = AROUND), on the side given by `side`.
+    let point = |t: f32, k: usize, side: f32| {
+        let (width, keel) = section(t);
+        let angle = std::f32::consts::FRAC_PI_2 * k as f32 / AROUND as f32;
+        let z = -length / 2.0 + length * t;
+        Vec3::new(side * width * angle.sin(), depth - keel * angle.cos(), z)
+    };
+    // Normals by differences along the hull and around the section.
+    let normal = |t: f32, k: usize, side: f32| {
+        let dt = 1e-3;
+        let along = point((t + dt).min(1.0), k, side) - point((t - dt).max(0.0), k, side);
+        let around = point(t, (k + 1).min(AROUND), side) - point(t, k.saturating_sub(1), side);
+        let n = if side > 0.0 { around.cross(along) } else { along.cross(around) };
+        if n.length() > 1e-6 { n.normalize() } else { Vec3::new(side, 0.0, 0.0) }
+    };
+    obj.object("hull");
+    for side in [-1.0f32, 1.0] {
+        for s in 0..STATIONS {
+            for k in 0..AROUND {
+                let material = if k == AROUND - 1 { "stripe" } else { "hull" };
+                obj.material(material);
+                let quad = [(s, k), (s + 1, k), (s + 1, k + 1), (s, k + 1)];
+                let mut corners: Vec<Corner> = quad
+                    .iter()
+                    .map(|&(s, k)| {
+                        let t = s as f32 / STATIONS as f32;
+                        let position = obj.position(point(t, k, side));
+                        let uv = obj.uv(Vec2::new(t, k as f32 / AROUND as f32));
+                        let n = obj.normal(normal(t, k, side));
+                        Corner { position, uv: Some(uv), normal: Some(n) }
+                    })
+                    .collect();
+                if side > 0.0 {
+                    corners.reverse();
+                }
+                obj.face(&corners, false);
+            }
+        }
+    }
+    // The transom: the flat stern, an n-gon.
+    let mut transom: Vec<Vec3> = (0..=AROUND).map(|k| point(1.0, AROUND - k, -1.0)).collect();
+    transom.extend((1..=AROUND).map(|k| point(1.0, k, 1.0)));
+    transom.dedup_by(|a, b| a.distance(*b) < 1e-4);
+    obj.material("hull");
+    obj.flat_polygon(&transom, |p| Vec2::new(p.x, p.y) / 4.0);
+    obj.object("deck");
+    obj.material("deck");
+    // The deck: one n-gon along the gunwale, down the port side from bow to
+    // stern and back up the starboard side (counter-clockwise from above).
+    let mut deck: Vec<Vec3> = (0..=STATIONS).map(|s| point(s as f32 / STATIONS as f32, AROUND, -1.0)).collect();
+    deck.extend((0..=STATIONS).rev().map(|s| point(s as f32 / STATIONS as f32, AROUND, 1.0)));
+    deck.dedup_by(|a, b| a.distance(*b) < 1e-4);
+    obj.flat_polygon(&deck, |p| Vec2::new(p.x, -p.z) / 2.0);
+    obj.object("cabin");
+    obj.material("cabin");
+    obj.cuboid(Vec3::new(-0.8, depth, 0.4), Vec3::new(0.8, depth + 1.1, 2.6), 4.0);
+    obj.object("mast");
+    obj.material("mast");
+    obj.cuboid(Vec3::new(-0.06, depth, -1.06), Vec3::new(0.06, depth + 7.0, -0.94), 4.0);
+    obj.obj
+}
+
+/// (folder, file stem, OBJ text, MTL text, what it is).
+fn models() -> [(&'static str, String, &'static str, &'static str); 3] {
+    [
+        ("car", car(), CAR_MTL, "a car, 4.4 m: an extruded body and glass cabin (n-gon ends), four wheels written with relative indices, head and tail lights (`Ke`); body in metal panels"),
+        ("tower", tower(), TOWER_MTL, "an office tower, 100 m in three setbacks, facade, concrete roofs and a metal antenna (`map_Bump`, `bump` and `norm` each used once)"),
+        ("boat", boat(), BOAT_MTL, "the boat chapter 11 sails, 8 m: a hull lofted through 17 cross-sections, a stripe, an n-gon deck and transom, cabin and mast"),
+    ]
+}
+
+/// The provenance table's rows for these files.
+pub fn provenance() -> String {
+    models().iter().map(|(name, _, _, what)| format!("| `models/{name}/{name}.{{obj,mtl}}` | {what} | built from code in `xtask/src/assets/models.rs` |\n")).collect()
+}
+
+/// Writes every model and its materials under `dir`.
+pub fn write(dir: &Path) -> anyhow::Result<()> {
+    for (name, obj, mtl, _) in models() {
+        let folder = dir.join(name);
+        std::fs::create_dir_all(&folder)?;
+        let obj_path = folder.join(format!("{name}.obj"));
+        std::fs::write(&obj_path, obj).map_err(|e| anyhow::anyhow!("cannot write {}: {e}", obj_path.display()))?;
+        let mtl_path = folder.join(format!("{name}.mtl"));
+        std::fs::write(&mtl_path, mtl).map_err(|e| anyhow::anyhow!("cannot write {}: {e}", mtl_path.display()))?;
+        println!("wrote {} and {}", obj_path.display(), mtl_path.display());
+    }
+    Ok(())
+}
+
+/// A sphere of about a million triangles (708 × 708 quads), for measuring
+/// how big models load; not committed, written where the bench asks.
+pub fn million_triangles(path: &Path) -> anyhow::Result<()> {
+    let (columns, rows) = (708usize, 708usize);
+    let mut obj = ObjWriter::new("About a million triangles: a UV sphere, for the chapter 09 bench.", None);
+    obj.object("sphere");
+    for row in 0..=rows {
+        for column in 0..=columns {
+            let (u, v) = (column as f32 / columns as f32, row as f32 / rows as f32);
+            let (sin_lon, cos_lon) = (std::f32::consts::TAU * u).sin_cos();
+            let (sin_lat, cos_lat) = (std::f32::consts::PI * v).sin_cos();
+            let n = Vec3::new(sin_lat * sin_lon, cos_lat, sin_lat * cos_lon);
+            obj.position(n);
+            obj.uv(Vec2::new(u, 1.0 - v));
+            obj.normal(if n.length() > 0.0 { n } else { Vec3::Y });
+        }
+    }
+    let index = |column: usize, row: usize| row * (columns + 1) + column + 1;
+    for row in 0..rows {
+        for column in 0..columns {
+            let quad = [index(column, row), index(column, row + 1), index(column + 1, row + 1), index(column + 1, row)];
+            let corners: Vec<Corner> = quad.iter().map(|&i| Corner { position: i, uv: Some(i), normal: Some(i) }).collect();
+            obj.face(&corners, false);
+        }
+    }
+    obj.write(path)
+}
