@@ -65,6 +65,10 @@ pub struct Args {
     /// surface size, camera) as one line to PATH.
     #[arg(long, value_name = "PATH", hide = true)]
     pub probe: Option<PathBuf>,
+
+    /// The chapter's own flags (`Chapter::FLAGS`), as given.
+    #[arg(skip)]
+    pub chapter_flags: crate::chapter::FlagValues,
 }
 
 impl Args {
@@ -78,11 +82,22 @@ impl Args {
         args: impl IntoIterator<Item = impl Into<std::ffi::OsString> + Clone>,
     ) -> Result<Self, clap::Error> {
         let names: Vec<&'static str> = C::VIEWS.iter().map(|v| v.name).collect();
-        let command = Self::command()
+        let mut command = Self::command()
             .name(C::NAME)
             .about(format!("{}: opens a window; with --screenshot or --bench, renders headless.", C::TITLE))
             .mut_arg("view", |arg| arg.value_parser(clap::builder::PossibleValuesParser::new(names)));
-        Self::from_arg_matches(&command.try_get_matches_from(args)?)
+        for flag in C::FLAGS {
+            command =
+                command.arg(clap::Arg::new(flag.name).long(flag.name).value_name(flag.value_name).help(flag.help));
+        }
+        let matches = command.try_get_matches_from(args)?;
+        let mut parsed = Self::from_arg_matches(&matches)?;
+        for flag in C::FLAGS {
+            if let Some(value) = matches.get_one::<String>(flag.name) {
+                parsed.chapter_flags.0.push((flag.name, value.clone()));
+            }
+        }
+        Ok(parsed)
     }
 
     /// Index of the chosen view (0 when none was given).

@@ -135,6 +135,26 @@ pub fn uniform_entry(binding: u32, visibility: wgpu::ShaderStages, size: usize) 
     }
 }
 
+/// A flag of one chapter's own, beside the ones every chapter has
+/// (`--model PATH` in chapter 09): `--help` lists it.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct ChapterFlag {
+    /// Without the dashes: `"model"` for `--model`.
+    pub name: &'static str,
+    pub value_name: &'static str,
+    pub help: &'static str,
+}
+
+/// The values given for a chapter's own flags, by flag name.
+#[derive(Clone, Debug, Default, PartialEq, Eq)]
+pub struct FlagValues(pub Vec<(&'static str, String)>);
+
+impl FlagValues {
+    pub fn get(&self, name: &str) -> Option<&str> {
+        self.0.iter().find(|(n, _)| *n == name).map(|(_, v)| v.as_str())
+    }
+}
+
 /// One technique of the book, runnable in a window or headless.
 pub trait Chapter: Sized + 'static {
     /// The package name, used for the window title, files and `--help`.
@@ -153,6 +173,8 @@ pub trait Chapter: Sized + 'static {
     const BENCH_BASELINE: Option<&'static str> = None;
     /// Chapter-specific keys for the F1 help, as (key, what it does).
     const KEYS: &'static [(&'static str, &'static str)] = &[];
+    /// Flags of this chapter's own; their values reach [`Chapter::apply_flags`].
+    const FLAGS: &'static [ChapterFlag] = &[];
 
     /// Device features the chapter requires or can use.
     fn gpu_needs() -> GpuNeeds {
@@ -161,6 +183,13 @@ pub trait Chapter: Sized + 'static {
 
     /// Builds buffers, textures and pipelines for `target`.
     fn new(gpu: &Gpu, target: Target) -> anyhow::Result<Self>;
+
+    /// Takes the values of the chapter's own [`Chapter::FLAGS`], right after
+    /// `new`. A value it cannot use is an [`crate::args::UsageError`] that
+    /// names the flag: the program exits with code 2.
+    fn apply_flags(&mut self, _gpu: &Gpu, _flags: &FlagValues) -> anyhow::Result<()> {
+        Ok(())
+    }
 
     /// The target changed size (window resize); recreate size-dependent
     /// resources such as the depth buffer.
@@ -205,6 +234,14 @@ pub trait Chapter: Sized + 'static {
     fn reload_shaders(&mut self, _gpu: &Gpu) -> Result<(), ShaderError> {
         Ok(())
     }
+}
+
+/// Creates chapter `C` for `target` and gives it its flags: how every
+/// runner (window, screenshot, bench) makes one.
+pub fn create<C: Chapter>(gpu: &Gpu, target: Target, flags: &FlagValues) -> anyhow::Result<C> {
+    let mut chapter = C::new(gpu, target)?;
+    chapter.apply_flags(gpu, flags)?;
+    Ok(chapter)
 }
 
 /// Switches `chapter` to `view` as the overlay and `--view` do: the view's

@@ -52,7 +52,7 @@ fn run_headless<C: Chapter>(args: &Args) -> anyhow::Result<()> {
     let request = |view| RenderRequest { width: args.size.width, height: args.size.height, time, view };
 
     if let Some(path) = &args.screenshot {
-        let image = headless::render_image::<C>(&gpu, &request(args.view_index::<C>()))?;
+        let image = headless::render_image_with::<C>(&gpu, &request(args.view_index::<C>()), &args.chapter_flags)?;
         image.save(path).with_context(|| format!("cannot write {}", path.display()))?;
         println!("{}", path.display());
     }
@@ -77,7 +77,7 @@ fn run_headless<C: Chapter>(args: &Args) -> anyhow::Result<()> {
         let mut notes = Vec::new();
         let mut medians = Vec::new();
         for view in views {
-            let report = headless::bench::<C>(&gpu, &request(view), frames)?;
+            let report = headless::bench::<C>(&gpu, &request(view), frames, &args.chapter_flags)?;
             medians.push((report.view, report.frame.median));
             row(report.view, "frame (CPU+GPU)", report.frame);
             for (pass, stats) in &report.passes {

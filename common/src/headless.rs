@@ -5,6 +5,7 @@ use std::time::Instant;
 
 use anyhow::{Context as _, bail};
 
+use crate::chapter::FlagValues;
 use crate::{Chapter, Frame, Gpu, PassTimer, Stats, Target};
 
 /// Offscreen pictures are 8-bit RGBA with sRGB encoding, like a PNG.
@@ -46,7 +47,17 @@ impl Offscreen {
 /// Copies a texture's bytes to the CPU, rows unpadded, `bytes_per_texel`
 /// bytes a texel (depth textures: the depth aspect).
 pub fn read_bytes(gpu: &Gpu, texture: &wgpu::Texture, bytes_per_texel: u32) -> anyhow::Result<Vec<u8>> {
-    let (width, height) = (texture.width(), texture.height());
+    read_level_bytes(gpu, texture, 0, bytes_per_texel)
+}
+
+/// [`read_bytes`] for one mip level (`level` 0 is the full-size picture).
+pub fn read_level_bytes(
+    gpu: &Gpu,
+    texture: &wgpu::Texture,
+    level: u32,
+    bytes_per_texel: u32,
+) -> anyhow::Result<Vec<u8>> {
+    let (width, height) = ((texture.width() >> level).max(1), (texture.height() >> level).max(1));
     let row_bytes = bytes_per_texel * width;
     let padded_row_bytes = row_bytes.next_multiple_of(wgpu::COPY_BYTES_PER_ROW_ALIGNMENT);
     let buffer = gpu.device.create_buffer(&wgpu::BufferDescriptor {
@@ -62,7 +73,7 @@ pub fn read_bytes(gpu: &Gpu, texture: &wgpu::Texture, bytes_per_texel: u32) -> a
     };
     let mut encoder = gpu.device.create_command_encoder(&Default::default());
     encoder.copy_texture_to_buffer(
-        wgpu::TexelCopyTextureInfo { texture, mip_level: 0, origin: wgpu::Origin3d::ZERO, aspect },
+        wgpu::TexelCopyTextureInfo { texture, mip_level: level, origin: wgpu::Origin3d::ZERO, aspect },
         wgpu::TexelCopyBufferInfo {
             buffer: &buffer,
             layout: wgpu::TexelCopyBufferLayout {
@@ -71,7 +82,7 @@ pub fn read_bytes(gpu: &Gpu, texture: &wgpu::Texture, bytes_per_texel: u32) -> a
                 rows_per_image: Some(height),
             },
         },
-        texture.size(),
+        wgpu::Extent3d { width, height, depth_or_array_layers: 1 },
     );
     gpu.queue.submit([encoder.finish()]);
     let slice = buffer.slice(..);
@@ -208,8 +219,17 @@ pub fn capture<C: Chapter>(
 
 /// Creates the chapter offscreen and renders one picture.
 pub fn render_image<C: Chapter>(gpu: &Gpu, request: &RenderRequest) -> anyhow::Result<image::RgbaImage> {
+    render_image_with::<C>(gpu, request, &FlagValues::default())
+}
+
+/// [`render_image`] with values for the chapter's own flags.
+pub fn render_image_with<C: Chapter>(
+    gpu: &Gpu,
+    request: &RenderRequest,
+    flags: &FlagValues,
+) -> anyhow::Result<image::RgbaImage> {
     let target = Target { format: OFFSCREEN_FORMAT, width: request.width, height: request.height };
-    let mut chapter = C::new(gpu, target)?;
+    let mut chapter = crate::chapter::create::<C>(gpu, target, flags)?;
     crate::chapter::show_view(&mut chapter, request.view);
     capture(gpu, &mut chapter, target, request.time, request.view)
 }
@@ -234,10 +254,15 @@ pub struct BenchReport {
 
 /// Renders `frames` frames offscreen (after a few warm-up frames) and
 /// measures each. The scene time stays fixed so every frame does the same work.
-pub fn bench<C: Chapter>(gpu: &Gpu, request: &RenderRequest, frames: u32) -> anyhow::Result<BenchReport> {
+pub fn bench<C: Chapter>(
+    gpu: &Gpu,
+    request: &RenderRequest,
+    frames: u32,
+    flags: &FlagValues,
+) -> anyhow::Result<BenchReport> {
     let target = Target { format: OFFSCREEN_FORMAT, width: request.width, height: request.height };
     let setup = Instant::now();
-    let mut chapter = C::new(gpu, target)?;
+    let mut chapter = crate::chapter::create::<C>(gpu, target, flags)?;
     let setup_ms = setup.elapsed().as_secs_f64() * 1e3;
     crate::chapter::show_view(&mut chapter, request.view);
     let offscreen = Offscreen::new(&gpu.device, target);

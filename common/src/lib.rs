@@ -8,6 +8,7 @@ pub mod args;
 pub mod camera;
 pub mod chapter;
 mod cli;
+pub mod files;
 pub mod fullscreen;
 pub mod gpu;
 pub mod headless;
@@ -22,7 +23,7 @@ pub mod timing;
 mod window;
 
 pub use camera::{Camera, FlyController};
-pub use chapter::{Chapter, Frame, Target, View, ViewKind, show_view};
+pub use chapter::{Chapter, ChapterFlag, FlagValues, Frame, Target, View, ViewKind, show_view};
 pub use cli::run;
 pub use gpu::{Gpu, GpuNeeds, NoAdapter};
 pub use input::Input;

@@ -204,3 +204,20 @@ mod tests {
         assert!(Stats::of(&[]).is_none());
     }
 }
+
+/// Runs `work` once and says how long it took, in milliseconds: for what a
+/// chapter measures outside frames (loading a model, making mipmaps).
+pub fn measure<T>(work: impl FnOnce() -> T) -> (T, f64) {
+    let start = Instant::now();
+    let value = work();
+    (value, start.elapsed().as_secs_f64() * 1e3)
+}
+
+/// The most memory this process has held at once so far, in bytes (its
+/// peak resident set, `VmHWM`), where the system says; `None` elsewhere.
+pub fn peak_memory() -> Option<u64> {
+    let status = std::fs::read_to_string("/proc/self/status").ok()?;
+    let line = status.lines().find(|l| l.starts_with("VmHWM:"))?;
+    let kib: u64 = line.split_whitespace().nth(1)?.parse().ok()?;
+    Some(kib * 1024)
+}

@@ -216,7 +216,8 @@ impl<C: Chapter> Running<C> {
         surface.configure(&gpu.device, &config);
 
         let view = args.view_index::<C>();
-        let mut chapter = C::new(&gpu, Target { format, width: config.width, height: config.height })?;
+        let target = Target { format, width: config.width, height: config.height };
+        let mut chapter = crate::chapter::create::<C>(&gpu, target, &args.chapter_flags)?;
         show_view(&mut chapter, view);
         let overlay = Overlay::new(&window, &gpu, overlay_format);
 

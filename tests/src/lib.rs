@@ -36,6 +36,7 @@ pub fn chapters() -> Vec<Entry> {
         entry::<skybox::SkyboxChapter>(),
         entry::<water::WaterChapter>(),
         entry::<lighting::LightingChapter>(),
+        entry::<textures::TexturesChapter>(),
     ]
 }
 

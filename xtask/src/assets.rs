@@ -252,6 +252,9 @@ mod tests {
             }
         }
         std::fs::remove_dir_all(fresh).unwrap();
-        assert_eq!(checked, 31, "12 cube faces, 2 water maps, 5 × 2 city textures, 3 models with their MTL, and the README");
+        assert_eq!(
+            checked, 31,
+            "12 cube faces, 2 water maps, 5 × 2 city textures, 3 models with their MTL, and the README"
+        );
     }
 }

@@ -462,7 +462,13 @@ impl City {
                 model: place * Mat4::from_scale_rotation_translation(scale, rotation, offset),
                 material,
             };
-            drone_parts.push(part(Shape::Sphere, Vec3::ZERO, Quat::IDENTITY, Vec3::new(2.2, 0.7, 2.2), Material::Drone));
+            drone_parts.push(part(
+                Shape::Sphere,
+                Vec3::ZERO,
+                Quat::IDENTITY,
+                Vec3::new(2.2, 0.7, 2.2),
+                Material::Drone,
+            ));
             drone_parts.push(part(Shape::Sphere, Vec3::Y * -0.4, Quat::IDENTITY, Vec3::splat(0.45), Material::Neon));
             for arm in 0..4 {
                 let angle = FRAC_PI_4 + FRAC_PI_2 * arm as f32;

@@ -27,8 +27,7 @@ struct Painting {
 
 impl Painting {
     fn new(strength: f32, paint: impl Fn(u32, u32) -> ([f32; 3], f32, f32)) -> Self {
-        let mut painting =
-            Painting { colour: Vec::new(), glow: Vec::new(), height: Vec::new(), strength };
+        let mut painting = Painting { colour: Vec::new(), glow: Vec::new(), height: Vec::new(), strength };
         for y in 0..SIZE {
             for x in 0..SIZE {
                 let (colour, glow, height) = paint(x, y);
@@ -144,7 +143,8 @@ fn metal() -> Painting {
         let rivet = 1.0 - smoothstep(1.0, 2.2, r1.min(r2));
         let (u, v) = (x as f32 / SIZE as f32, y as f32 / SIZE as f32);
         // Brushing: noise stretched 16 times along u.
-        let brushed = tileable_noise2(u * 4.0, v * 128.0, (4, 128), 31) * 0.6 + tileable_noise2(u * 8.0, v * 256.0, (8, 256), 32) * 0.4;
+        let brushed = tileable_noise2(u * 4.0, v * 128.0, (4, 128), 31) * 0.6
+            + tileable_noise2(u * 8.0, v * 256.0, (8, 256), 32) * 0.4;
         let tint = 0.9 + 0.2 * hash((x / panel + 2 * (y / panel)).wrapping_mul(97));
         let base = scale(srgb([150, 156, 166]), tint * (0.85 + 0.25 * brushed));
         let colour = scale(base, 1.0 - 0.5 * seam + 0.15 * rivet);
@@ -187,12 +187,12 @@ fn facade() -> Painting {
         let mullion = glass && (cx - 32.0).abs() < 1.0;
         let (u, v) = (x as f32 / SIZE as f32, y as f32 / SIZE as f32);
         let grain = tileable_fbm(u, v, 51);
-        let panel = scale(srgb([176, 172, 164]), 0.85 + 0.25 * grain);
-        let metal = srgb([70, 74, 82]);
+        let panel = scale(srgb([122, 120, 114]), 0.85 + 0.25 * grain);
+        let metal = srgb([52, 56, 64]);
         // Glass reflects the sky: lighter towards the top of each pane.
         let sky = mix(srgb([92, 112, 134]), srgb([36, 46, 60]), (cy - 12.0) / 34.0);
         let lit = hash(window_id.wrapping_mul(0x2c1b_3c6d) ^ 0x51);
-        let glow = if glass && !mullion && lit > 0.4 { 0.55 + 0.45 * hash(window_id ^ 0x77) } else { 0.0 };
+        let glow = if glass && !mullion && lit > 0.55 { 0.55 + 0.45 * hash(window_id ^ 0x77) } else { 0.0 };
         let (colour, height) = if mullion || frame {
             (metal, 0.6)
         } else if glass {
@@ -207,10 +207,22 @@ fn facade() -> Painting {
 /// (folder name, painter, what it is, for the provenance table).
 const MATERIALS: [(&str, fn() -> Painting, &str); 5] = [
     ("brick", brick, "running-bond brick, 4 bricks × 16 courses per tile, recessed mortar, a shade per brick"),
-    ("concrete", concrete, "cast concrete: mottled grey (tileable value noise), formwork joints every half tile, tie holes"),
+    (
+        "concrete",
+        concrete,
+        "cast concrete: mottled grey (tileable value noise), formwork joints every half tile, tie holes",
+    ),
     ("metal", metal, "metal cladding: 2 × 2 panels with grooved seams, rivets along their edges, brushed along u"),
-    ("road", road, "asphalt with edge lines and a dashed centre line; u along the road, v across it, one tile 12 m square"),
-    ("facade", facade, "office facade, 4 × 4 windows in metal frames; alpha marks the windows lit at night (a hash per window)"),
+    (
+        "road",
+        road,
+        "asphalt with edge lines and a dashed centre line; u along the road, v across it, one tile 12 m square",
+    ),
+    (
+        "facade",
+        facade,
+        "office facade, 4 × 4 windows in metal frames; alpha marks the windows lit at night (a hash per window)",
+    ),
 ];
 
 /// The provenance table's rows for these files.

@@ -77,7 +77,8 @@ impl ObjWriter {
     /// A face, counter-clockwise seen from outside. With `relative`, its
     /// indices are written counting back from the latest of each kind.
     pub fn face(&mut self, corners: &[Corner], relative: bool) {
-        let index = |i: usize, count: usize| if relative { format!("{}", i as i64 - count as i64 - 1) } else { i.to_string() };
+        let index =
+            |i: usize, count: usize| if relative { format!("{}", i as i64 - count as i64 - 1) } else { i.to_string() };
         let words: Vec<String> = corners
             .iter()
             .map(|c| {
@@ -217,8 +218,9 @@ fn wheel(obj: &mut ObjWriter, centre: Vec3, radius: f32, width: f32, segments: u
     }
     // The two hubs: n-gons.
     for side in [-1.0f32, 1.0] {
-        let mut points: Vec<Vec3> =
-            (0..segments).map(|i| centre + Vec3::new(side * width / 2.0, ring(i).y * radius, ring(i).x * radius)).collect();
+        let mut points: Vec<Vec3> = (0..segments)
+            .map(|i| centre + Vec3::new(side * width / 2.0, ring(i).y * radius, ring(i).x * radius))
+            .collect();
         if side > 0.0 {
             points.reverse();
         }
@@ -338,7 +340,12 @@ fn tower() -> String {
         let corners = [Vec2::new(half, half), Vec2::new(half, -half), Vec2::new(-half, -half), Vec2::new(-half, half)];
         for k in 0..4 {
             let (a, b) = (corners[k], corners[(k + 1) % 4]);
-            let quad = [Vec3::new(a.x, bottom, a.y), Vec3::new(b.x, bottom, b.y), Vec3::new(b.x, top, b.y), Vec3::new(a.x, top, a.y)];
+            let quad = [
+                Vec3::new(a.x, bottom, a.y),
+                Vec3::new(b.x, bottom, b.y),
+                Vec3::new(b.x, top, b.y),
+                Vec3::new(a.x, top, a.y),
+            ];
             let start = quad[0];
             let along = (quad[1] - quad[0]).normalize();
             obj.flat_polygon(&quad, |p| Vec2::new((p - start).dot(along), p.y) / 16.0);
@@ -463,15 +470,37 @@ fn boat() -> String {
 /// (folder, file stem, OBJ text, MTL text, what it is).
 fn models() -> [(&'static str, String, &'static str, &'static str); 3] {
     [
-        ("car", car(), CAR_MTL, "a car, 4.4 m: an extruded body and glass cabin (n-gon ends), four wheels written with relative indices, head and tail lights (`Ke`); body in metal panels"),
-        ("tower", tower(), TOWER_MTL, "an office tower, 100 m in three setbacks, facade, concrete roofs and a metal antenna (`map_Bump`, `bump` and `norm` each used once)"),
-        ("boat", boat(), BOAT_MTL, "the boat chapter 11 sails, 8 m: a hull lofted through 17 cross-sections, a stripe, an n-gon deck and transom, cabin and mast"),
+        (
+            "car",
+            car(),
+            CAR_MTL,
+            "a car, 4.4 m: an extruded body and glass cabin (n-gon ends), four wheels written with relative indices, head and tail lights (`Ke`); body in metal panels",
+        ),
+        (
+            "tower",
+            tower(),
+            TOWER_MTL,
+            "an office tower, 100 m in three setbacks, facade, concrete roofs and a metal antenna (`map_Bump`, `bump` and `norm` each used once)",
+        ),
+        (
+            "boat",
+            boat(),
+            BOAT_MTL,
+            "the boat chapter 11 sails, 8 m: a hull lofted through 17 cross-sections, a stripe, an n-gon deck and transom, cabin and mast",
+        ),
     ]
 }
 
 /// The provenance table's rows for these files.
 pub fn provenance() -> String {
-    models().iter().map(|(name, _, _, what)| format!("| `models/{name}/{name}.{{obj,mtl}}` | {what} | built from code in `xtask/src/assets/models.rs` |\n")).collect()
+    models()
+        .iter()
+        .map(|(name, _, _, what)| {
+            format!(
+                "| `models/{name}/{name}.{{obj,mtl}}` | {what} | built from code in `xtask/src/assets/models.rs` |\n"
+            )
+        })
+        .collect()
 }
 
 /// Writes every model and its materials under `dir`.
@@ -509,7 +538,8 @@ pub fn million_triangles(path: &Path) -> anyhow::Result<()> {
     for row in 0..rows {
         for column in 0..columns {
             let quad = [index(column, row), index(column, row + 1), index(column + 1, row + 1), index(column + 1, row)];
-            let corners: Vec<Corner> = quad.iter().map(|&i| Corner { position: i, uv: Some(i), normal: Some(i) }).collect();
+            let corners: Vec<Corner> =
+                quad.iter().map(|&i| Corner { position: i, uv: Some(i), normal: Some(i) }).collect();
             obj.face(&corners, false);
         }
     }

@@ -1,0 +1,799 @@
+//! Chapter 09: textures. Chapter 08's city gets brick, concrete, metal,
+//! roads and lit windows; its cars become a model loaded from OBJ and MTL
+//! files. On the way: texture coordinates and texel density, sampling and
+//! mipmaps, colour spaces, tangent space and normal maps, and reading
+//! whatever model a learner brings (`--model PATH.obj`).
+
+pub mod builtin;
+pub mod materials;
+pub mod mesh;
+pub mod mipmaps;
+pub mod obj;
+pub mod scenes;
+pub mod tangents;
+
+use std::path::{Path, PathBuf};
+use std::sync::Arc;
+
+use common::args::UsageError;
+use common::chapter::uniform_entry;
+use common::glam::{Mat4, Quat, Vec3};
+use common::{
+    Camera, Chapter, ChapterFlag, FlagValues, FlyController, Frame, Gpu, Input, ShaderError, Target, View, anyhow,
+    egui, shader, wgpu, winit::keyboard::KeyCode,
+};
+use lighting::bloom::{Bloom, BloomSettings};
+use lighting::city::{City, Clocks};
+use lighting::clusters;
+use lighting::lights::{Daylight, Light, TimeOfDay, daylight};
+use lighting::{CitySky, HDR_FORMAT, HdrTarget, Highlight, LightCount, LoopOptions, SceneLights, ToneMap};
+
+use materials::{Materials, SamplerMode};
+use mesh::{GpuModel, ModelData, ModelInstance, TexturedVertex};
+use mipmaps::MipMaker;
+use obj::{LoadedModel, ReadFile};
+
+// ANCHOR: views
+pub const VIEWS: &[View] = &[
+    View::mode("day", "the textured city at noon, from above"),
+    View::mode("night", "the textured city at night: lit windows, lamps, headlights"),
+    View::preset("car", "the car model and its five materials on the stage (or the model given with --model)"),
+    View::preset("normal-maps", "the stage in a low sun: normal maps give brick, panels and concrete their relief"),
+    View::preset("no-normal-maps", "the same without normal maps: flat, as if painted"),
+    View::preset(
+        "face-tangents",
+        "normal maps with one tangent per triangle, as the seed did: the frame jumps at edges",
+    ),
+    View::preset("tbn", "the tangent frame as colours: tangent (left third), bitangent (middle), normal (right)"),
+    View::preset("wrong-colour-space", "albedo read as data and normal maps as sRGB: washed-out colour, bent light"),
+    View::preset("nearest", "a checkerboard to the horizon, nearest texel: blocky near, moiré far"),
+    View::preset("linear", "the same, bilinear: smooth near, still moiré far"),
+    View::preset("mipmaps", "trilinear filtering with mipmaps: no moiré, but the distance turns grey"),
+    View::preset("anisotropic", "anisotropic filtering (16x): the squares stay sharp much further"),
+];
+// ANCHOR_END: views
+
+/// Which set the camera is in.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Scene {
+    /// Chapter 08's city, textured, with car models and the tower.
+    City,
+    /// A model on a stage, with a brick wall and a row of primitives.
+    Stage,
+    /// A checkerboard floor to the horizon, for comparing samplers.
+    Lab,
+}
+
+/// Where tangents come from.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Tangents {
+    /// Averaged per vertex and made orthogonal to its normal.
+    PerVertex,
+    /// One per triangle (the seed's way), on the stage's primitives.
+    PerFace,
+}
+
+/// What a view decides.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Settings {
+    pub time_of_day: TimeOfDay,
+    pub sampler: SamplerMode,
+    pub normal_maps: bool,
+    /// Read normal maps' green as pointing down the image (DirectX's way).
+    pub flip_green: bool,
+    pub tangents: Tangents,
+    /// Albedo read as linear data and normal maps as sRGB: the mistake.
+    pub swapped_colour_spaces: bool,
+    /// Show the tangent frame as colours instead of the picture.
+    pub show_frame: bool,
+    pub bloom: bool,
+    pub exposure: f32,
+}
+
+impl Settings {
+    pub fn for_view(name: &str) -> Self {
+        let mut s = Self {
+            time_of_day: TimeOfDay::Noon,
+            sampler: SamplerMode::Anisotropic,
+            normal_maps: true,
+            flip_green: false,
+            tangents: Tangents::PerVertex,
+            swapped_colour_spaces: false,
+            show_frame: false,
+            bloom: true,
+            exposure: 1.0,
+        };
+        match name {
+            "night" => s.time_of_day = TimeOfDay::Night,
+            "car" | "normal-maps" | "no-normal-maps" | "face-tangents" | "tbn" | "wrong-colour-space" => {
+                s.time_of_day = TimeOfDay::Morning;
+                s.normal_maps = name != "no-normal-maps";
+                s.tangents = if name == "face-tangents" { Tangents::PerFace } else { Tangents::PerVertex };
+                s.show_frame = name == "tbn";
+                s.swapped_colour_spaces = name == "wrong-colour-space";
+            }
+            "nearest" | "linear" | "mipmaps" | "anisotropic" => {
+                s.sampler = match name {
+                    "nearest" => SamplerMode::Nearest,
+                    "linear" => SamplerMode::Linear,
+                    "mipmaps" => SamplerMode::Mipmaps,
+                    _ => SamplerMode::Anisotropic,
+                };
+                // Black and white squares: no bloom, and an exposure that
+                // keeps white below the shoulder of the tone curve.
+                s.bloom = false;
+                s.exposure = 0.5;
+            }
+            _ => {}
+        }
+        s
+    }
+}
+
+/// Where each view puts the camera, and in which scene.
+pub fn view_camera(view: &str, aspect: f32) -> (Scene, Camera) {
+    let at = |eye: Vec3, target: Vec3| Camera { near: 0.1, far: 900.0, ..Camera::looking_at(eye, target, aspect) };
+    match view {
+        "car" | "wrong-colour-space" => (Scene::Stage, at(Vec3::new(-5.2, 2.4, 6.4), Vec3::new(0.0, 0.9, 0.0))),
+        // The left of the stage: the wall, the sphere, the torus and the
+        // cone, in a low sun from the side.
+        "normal-maps" | "no-normal-maps" | "face-tangents" => {
+            (Scene::Stage, at(Vec3::new(-2.2, 1.5, 0.9), Vec3::new(-6.4, 0.9, -3.6)))
+        }
+        "tbn" => (Scene::Stage, at(Vec3::new(0.0, 4.2, 10.5), Vec3::new(0.0, 1.0, -2.0))),
+        "nearest" | "linear" | "mipmaps" | "anisotropic" => (
+            Scene::Lab,
+            Camera {
+                near: 0.1,
+                far: 1500.0,
+                ..Camera::looking_at(Vec3::new(0.0, 1.7, 0.0), Vec3::new(0.0, 0.0, -30.0), aspect)
+            },
+        ),
+        _ => (Scene::City, lighting::aerial_camera(aspect)),
+    }
+}
+
+// ANCHOR: view_options
+/// `ViewOptions` in textured.wgsl.
+#[repr(C)]
+#[derive(Clone, Copy, bytemuck::Pod, bytemuck::Zeroable)]
+struct ViewOptions {
+    display: u32,
+    normal_maps: u32,
+    flip_green: u32,
+    target_width: f32,
+}
+// ANCHOR_END: view_options
+
+// ANCHOR: renderer
+/// Draws textured models lit by chapter 08's lights: one pipeline, group 0
+/// the [`SceneLights`], group 1 a material, group 2 the sampler and view
+/// options. A piece with explicit inputs: the models, their instances and
+/// the materials; chapter 11 draws its boat with it.
+pub struct TexturedRenderer {
+    pipeline_layout: wgpu::PipelineLayout,
+    pipeline: wgpu::RenderPipeline,
+    options: wgpu::Buffer,
+    /// One group per sampler mode, in `SamplerMode::ALL`'s order.
+    sampler_groups: Vec<wgpu::BindGroup>,
+    /// Whether the adapter filters anisotropically.
+    pub anisotropy: bool,
+}
+
+/// One model drawn with a range of this frame's instances.
+pub struct Draw<'a> {
+    pub model: &'a GpuModel,
+    pub instances: std::ops::Range<u32>,
+}
+
+impl TexturedRenderer {
+    pub fn new(gpu: &Gpu, lights: &SceneLights, materials: &Materials) -> Result<Self, ShaderError> {
+        let device = &gpu.device;
+        let layout = device.create_bind_group_layout(&wgpu::BindGroupLayoutDescriptor {
+            label: Some("view"),
+            entries: &[
+                wgpu::BindGroupLayoutEntry {
+                    binding: 0,
+                    visibility: wgpu::ShaderStages::FRAGMENT,
+                    ty: wgpu::BindingType::Sampler(wgpu::SamplerBindingType::Filtering),
+                    count: None,
+                },
+                uniform_entry(1, wgpu::ShaderStages::FRAGMENT, std::mem::size_of::<ViewOptions>()),
+            ],
+        });
+        let options = device.create_buffer(&wgpu::BufferDescriptor {
+            label: Some("view options"),
+            size: std::mem::size_of::<ViewOptions>() as u64,
+            usage: wgpu::BufferUsages::UNIFORM | wgpu::BufferUsages::COPY_DST,
+            mapped_at_creation: false,
+        });
+        let anisotropy =
+            gpu.adapter.get_downlevel_capabilities().flags.contains(wgpu::DownlevelFlags::ANISOTROPIC_FILTERING);
+        let sampler_groups = SamplerMode::ALL
+            .iter()
+            .map(|mode| {
+                let sampler = device.create_sampler(&mode.descriptor(anisotropy));
+                device.create_bind_group(&wgpu::BindGroupDescriptor {
+                    label: Some("view"),
+                    layout: &layout,
+                    entries: &[
+                        wgpu::BindGroupEntry { binding: 0, resource: wgpu::BindingResource::Sampler(&sampler) },
+                        wgpu::BindGroupEntry { binding: 1, resource: options.as_entire_binding() },
+                    ],
+                })
+            })
+            .collect();
+        let pipeline_layout = device.create_pipeline_layout(&wgpu::PipelineLayoutDescriptor {
+            label: Some("textured"),
+            bind_group_layouts: &[Some(&lights.layout), Some(&materials.layout), Some(&layout)],
+            immediate_size: 0,
+        });
+        let pipeline = Self::pipeline(gpu, &pipeline_layout)?;
+        Ok(Self { pipeline_layout, pipeline, options, sampler_groups, anisotropy })
+    }
+
+    fn pipeline(gpu: &Gpu, layout: &wgpu::PipelineLayout) -> Result<wgpu::RenderPipeline, ShaderError> {
+        let module = shader!("textures/textured.wgsl", imports: ["lighting/lights.wgsl"]).module(&gpu.device)?;
+        gpu.catch_validation(|| {
+            gpu.device.create_render_pipeline(&wgpu::RenderPipelineDescriptor {
+                label: Some("textured"),
+                layout: Some(layout),
+                vertex: wgpu::VertexState {
+                    module: &module,
+                    entry_point: Some("vs_main"),
+                    buffers: &[Some(TexturedVertex::LAYOUT), Some(ModelInstance::LAYOUT)],
+                    compilation_options: Default::default(),
+                },
+                primitive: wgpu::PrimitiveState { cull_mode: Some(wgpu::Face::Back), ..Default::default() },
+                depth_stencil: common::texture::depth_test(),
+                multisample: Default::default(),
+                fragment: Some(wgpu::FragmentState {
+                    module: &module,
+                    entry_point: Some("fs_main"),
+                    targets: &[Some(HDR_FORMAT.into())],
+                    compilation_options: Default::default(),
+                }),
+                multiview_mask: None,
+                cache: None,
+            })
+        })
+        .map_err(ShaderError)
+    }
+
+    pub fn reload_shaders(&mut self, gpu: &Gpu) -> Result<(), ShaderError> {
+        self.pipeline = Self::pipeline(gpu, &self.pipeline_layout)?;
+        Ok(())
+    }
+
+    /// Draws `draws` into `pass`, whose group 0 must already be the scene's
+    /// lights; `instances` holds every draw's instances.
+    pub fn draw(
+        &self,
+        gpu: &Gpu,
+        pass: &mut wgpu::RenderPass<'_>,
+        settings: &Settings,
+        target_width: u32,
+        materials: &Materials,
+        instances: &wgpu::Buffer,
+        draws: &[Draw],
+    ) {
+        let options = ViewOptions {
+            display: u32::from(settings.show_frame),
+            normal_maps: u32::from(settings.normal_maps),
+            flip_green: u32::from(settings.flip_green),
+            target_width: target_width as f32,
+        };
+        gpu.queue.write_buffer(&self.options, 0, bytemuck::bytes_of(&options));
+        let mode = SamplerMode::ALL.iter().position(|m| *m == settings.sampler).unwrap_or(0);
+        pass.set_pipeline(&self.pipeline);
+        pass.set_bind_group(2, &self.sampler_groups[mode], &[]);
+        pass.set_vertex_buffer(1, instances.slice(..));
+        for draw in draws {
+            if draw.instances.is_empty() {
+                continue;
+            }
+            pass.set_vertex_buffer(0, draw.model.vertices.slice(..));
+            pass.set_index_buffer(draw.model.indices.slice(..), wgpu::IndexFormat::Uint32);
+            for part in &draw.model.parts {
+                let material = &materials.list[draw.model.first_material + part.material];
+                let group = if settings.swapped_colour_spaces { &material.swapped_group } else { &material.group };
+                pass.set_bind_group(1, group, &[]);
+                pass.draw_indexed(part.indices.clone(), 0, draw.instances.clone());
+            }
+        }
+    }
+}
+// ANCHOR_END: renderer
+
+/// The CPU side of every built-in model, made once per device and shared
+/// by every instance of the chapter (`Gpu::cached`): tangents for a whole
+/// city take a while in a debug build.
+pub struct BuiltinModels {
+    pub city: ModelData,
+    pub stage: ModelData,
+    pub stage_face_tangents: ModelData,
+    pub lab: ModelData,
+    pub car: LoadedModel,
+    pub tower: LoadedModel,
+}
+
+impl BuiltinModels {
+    fn load() -> anyhow::Result<Self> {
+        let read: ReadFile = &builtin::read;
+        let stage = scenes::stage_set();
+        Ok(Self {
+            city: scenes::textured_city(&City::new()),
+            stage_face_tangents: stage.with_face_tangents(),
+            stage,
+            lab: scenes::lab_floor(),
+            car: obj::load(Path::new("models/car/car.obj"), read)?,
+            tower: obj::load(Path::new("models/tower/tower.obj"), read)?,
+        })
+    }
+}
+
+/// The featured model on the stage: the car, or the learner's.
+pub struct Featured {
+    pub name: String,
+    pub model: GpuModel,
+    pub placement: Mat4,
+    pub triangles: usize,
+    pub objects: usize,
+    /// Scale applied to fit the stage, and the load time and memory (for
+    /// a learner's model).
+    pub scale: f32,
+    pub load_ms: Option<f64>,
+    pub peak_memory: Option<u64>,
+}
+
+/// Everything drawable, on the GPU.
+struct Models {
+    city: GpuModel,
+    drones: GpuModel,
+    car: GpuModel,
+    tower: GpuModel,
+    stage: GpuModel,
+    stage_face_tangents: GpuModel,
+    lab: GpuModel,
+}
+
+pub struct TexturesChapter {
+    pub settings: Settings,
+    pub scene: Scene,
+    pub camera: Camera,
+    pub controller: FlyController,
+    pub city: City,
+    pub clocks: Clocks,
+    last_time: f32,
+    mips: MipMaker,
+    materials: Materials,
+    models: Models,
+    pub featured: Featured,
+    renderer: TexturedRenderer,
+    instances: wgpu::Buffer,
+    scene_lights: SceneLights,
+    sky: CitySky,
+    hdr: HdrTarget,
+    bloom: Bloom,
+    tone_map: ToneMap,
+    target: Target,
+    /// What loading had to warn about, one line each.
+    pub warnings: Vec<String>,
+    /// Textures and the time their upload and mipmaps took (GPU included).
+    mip_report: (usize, u64, f64),
+    last_lights: usize,
+}
+
+/// Uploads `model`'s materials and then the model.
+fn upload_model(
+    gpu: &Gpu,
+    mips: &mut MipMaker,
+    materials: &mut Materials,
+    encoder: &mut wgpu::CommandEncoder,
+    read: ReadFile,
+    model: &ModelData,
+    label: &str,
+) -> GpuModel {
+    let first = materials.list.len();
+    for desc in &model.materials {
+        materials.add(gpu, mips, encoder, read, desc);
+    }
+    GpuModel::upload(&gpu.device, model, first, label)
+}
+
+impl TexturesChapter {
+    /// The city at this moment: lights, and the instances and draws for the
+    /// textured city, the tower, the car models and the drones.
+    fn city_frame(
+        &mut self,
+        gpu: &Gpu,
+        time: f32,
+        day: &Daylight,
+        instances: &mut Vec<ModelInstance>,
+    ) -> (Vec<Light>, Vec<(Which, std::ops::Range<u32>)>) {
+        let traffic = self.city.traffic(self.clocks.cars.time(time), self.clocks.drones.time(time));
+        let lights = lighting::frame_lights(&self.city, &traffic, &[], LightCount::City, day.night);
+        let drones = scenes::bake(&traffic.drone_parts);
+        self.models.drones.update(&gpu.device, &gpu.queue, &drones);
+        let mut draws = Vec::new();
+        let mut push = |which, list: Vec<ModelInstance>| {
+            let start = instances.len() as u32;
+            instances.extend(list);
+            draws.push((which, start..instances.len() as u32));
+        };
+        push(Which::City, vec![ModelInstance::new(Mat4::IDENTITY, 1.0)]);
+        push(Which::Drones, vec![ModelInstance::new(Mat4::IDENTITY, 1.0)]);
+        // The tower's windows light up as night falls.
+        push(Which::Tower, vec![ModelInstance::new(scenes::tower_placement(), day.night)]);
+        let cars = traffic
+            .cars
+            .iter()
+            .map(|pose| {
+                ModelInstance::new(
+                    Mat4::from_rotation_translation(Quat::from_rotation_y(pose.heading), pose.position),
+                    1.0,
+                )
+            })
+            .collect();
+        push(Which::Car, cars);
+        (lights, draws)
+    }
+}
+
+/// Which model a draw uses.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+enum Which {
+    City,
+    Drones,
+    Tower,
+    Car,
+    Featured,
+    Stage,
+    StageFaceTangents,
+    Lab,
+}
+
+impl Chapter for TexturesChapter {
+    const NAME: &'static str = env!("CARGO_PKG_NAME");
+    const TITLE: &'static str = "09 · Textures";
+    const VIEWS: &'static [View] = VIEWS;
+    const SNAPSHOT_TIME: f32 = 6.0;
+    const BENCH_FRAMES: u32 = 5;
+    const BENCH_BASELINE: Option<&'static str> = Some("no-normal-maps");
+    const KEYS: &'static [(&'static str, &'static str)] = &[
+        ("W A S D / arrows", "move"),
+        ("E / Space, Q / Shift+Space", "rise, fall"),
+        ("left drag, or Tab to lock", "look around"),
+        ("[", "pause or resume the drones"),
+        ("]", "pause or resume the cars"),
+    ];
+    const FLAGS: &'static [ChapterFlag] = &[ChapterFlag {
+        name: "model",
+        value_name: "PATH.obj",
+        help: "Show this OBJ model (with its MTL and textures beside it) on the stage instead of the car",
+    }];
+
+    fn gpu_needs() -> common::GpuNeeds {
+        common::GpuNeeds { required: wgpu::Features::empty(), optional: Bloom::OPTIONAL_FEATURES }
+    }
+
+    fn new(gpu: &Gpu, target: Target) -> anyhow::Result<Self> {
+        let device = &gpu.device;
+        let builtin: Arc<anyhow::Result<BuiltinModels>> = gpu.cached((), BuiltinModels::load);
+        let builtin = match builtin.as_ref() {
+            Ok(models) => models,
+            Err(error) => anyhow::bail!("the built-in models: {error:#}"),
+        };
+        let read: ReadFile = &builtin::read;
+        let mut mips = MipMaker::new(gpu)?;
+        let ((materials, models, warnings), mip_ms) = common::timing::measure(|| {
+            let mut encoder = device.create_command_encoder(&Default::default());
+            let mut materials = Materials::new(gpu, &mut mips, &mut encoder);
+            materials.insert_image(
+                gpu,
+                &mut mips,
+                &mut encoder,
+                Path::new(scenes::CHECKER),
+                &materials::checkerboard(),
+            );
+            let mut up = |model: &ModelData, label| {
+                upload_model(gpu, &mut mips, &mut materials, &mut encoder, read, model, label)
+            };
+            let city = up(&builtin.city, "city");
+            let drones = GpuModel::upload(device, &ModelData::default(), city.first_material, "drones");
+            let models = Models {
+                drones,
+                car: up(&builtin.car.model, "car"),
+                tower: up(&builtin.tower.model, "tower"),
+                stage: up(&builtin.stage, "stage"),
+                stage_face_tangents: up(&builtin.stage_face_tangents, "stage, face tangents"),
+                lab: up(&builtin.lab, "lab"),
+                city,
+            };
+            gpu.queue.submit([encoder.finish()]);
+            let _ = device.poll(wgpu::PollType::wait_indefinitely());
+            let mut warnings = builtin.car.warnings.clone();
+            warnings.extend(builtin.tower.warnings.iter().cloned());
+            warnings.extend(materials.warnings.drain(..));
+            (materials, models, warnings)
+        });
+        let mip_report = (materials.list.len(), materials.texels, mip_ms);
+        let scene_lights = SceneLights::new(device);
+        let renderer = TexturedRenderer::new(gpu, &scene_lights, &materials)?;
+        let sky = CitySky::new(gpu, &scene_lights)?;
+        let hdr = HdrTarget::new(device, target.width, target.height);
+        let bloom = Bloom::new(gpu, target.width, target.height)?;
+        let mut tone_map = ToneMap::new(gpu, target.format)?;
+        tone_map.set_inputs(device, &hdr.colour, bloom.output());
+        let instances = device.create_buffer(&wgpu::BufferDescriptor {
+            label: Some("instances"),
+            size: 64 * std::mem::size_of::<ModelInstance>() as u64,
+            usage: wgpu::BufferUsages::VERTEX | wgpu::BufferUsages::COPY_DST,
+            mapped_at_creation: false,
+        });
+        let (placement, scale) = scenes::stage_placement(builtin.car.model.bounds());
+        let featured = Featured {
+            name: "the car (assets/models/car/car.obj)".into(),
+            // The car's own buffers again, with the car's materials.
+            model: GpuModel::upload(device, &builtin.car.model, models.car.first_material, "featured"),
+            placement,
+            triangles: builtin.car.model.triangle_count(),
+            objects: builtin.car.objects,
+            scale,
+            load_ms: None,
+            peak_memory: None,
+        };
+        for warning in &warnings {
+            eprintln!("warning: {warning}");
+        }
+        let (scene, camera) = view_camera("day", target.aspect());
+        Ok(Self {
+            settings: Settings::for_view("day"),
+            scene,
+            camera,
+            controller: FlyController { speed: 12.0, ..Default::default() },
+            city: City::new(),
+            clocks: Clocks::default(),
+            last_time: 0.0,
+            mips,
+            materials,
+            models,
+            featured,
+            renderer,
+            instances,
+            scene_lights,
+            sky,
+            hdr,
+            bloom,
+            tone_map,
+            target,
+            warnings,
+            mip_report,
+            last_lights: 0,
+        })
+    }
+
+    // ANCHOR: model_flag
+    fn apply_flags(&mut self, gpu: &Gpu, flags: &FlagValues) -> anyhow::Result<()> {
+        let Some(path) = flags.get("model") else { return Ok(()) };
+        let path = PathBuf::from(path);
+        let read: ReadFile = &|p: &Path| common::files::read(p);
+        let (loaded, load_ms) = common::timing::measure(|| obj::load(&path, read));
+        let loaded = loaded.map_err(|e| UsageError(format!("--model: {e}")))?;
+        let mut encoder = gpu.device.create_command_encoder(&Default::default());
+        let model = upload_model(gpu, &mut self.mips, &mut self.materials, &mut encoder, read, &loaded.model, "model");
+        gpu.queue.submit([encoder.finish()]);
+        let (placement, scale) = scenes::stage_placement(loaded.model.bounds());
+        let mut warnings = loaded.warnings;
+        warnings.extend(self.materials.warnings.drain(..));
+        for warning in &warnings {
+            eprintln!("warning: {warning}");
+        }
+        self.warnings.extend(warnings);
+        self.featured = Featured {
+            name: path.display().to_string(),
+            model,
+            placement,
+            triangles: loaded.model.triangle_count(),
+            objects: loaded.objects,
+            scale,
+            load_ms: Some(load_ms),
+            peak_memory: common::timing::peak_memory(),
+        };
+        Ok(())
+    }
+    // ANCHOR_END: model_flag
+
+    fn resize(&mut self, gpu: &Gpu, target: Target) {
+        self.target = target;
+        self.camera.aspect = target.aspect();
+        self.hdr = HdrTarget::new(&gpu.device, target.width, target.height);
+        self.bloom.resize(&gpu.device, target.width, target.height);
+        self.tone_map.set_inputs(&gpu.device, &self.hdr.colour, self.bloom.output());
+    }
+
+    fn select_view(&mut self, view: usize) {
+        self.settings = Settings::for_view(VIEWS[view].name);
+    }
+
+    fn reset_camera(&mut self, view: usize) {
+        (self.scene, self.camera) = view_camera(VIEWS[view].name, self.target.aspect());
+    }
+
+    fn camera_mut(&mut self) -> Option<&mut Camera> {
+        Some(&mut self.camera)
+    }
+
+    fn update(&mut self, input: &Input, dt: f32) {
+        if input.pressed(KeyCode::BracketLeft) {
+            self.clocks.drones.set_paused(!self.clocks.drones.is_paused(), self.last_time);
+        }
+        if input.pressed(KeyCode::BracketRight) {
+            self.clocks.cars.set_paused(!self.clocks.cars.is_paused(), self.last_time);
+        }
+        self.controller.update(&mut self.camera, input, dt);
+    }
+
+    // ANCHOR: render
+    fn render(&mut self, gpu: &Gpu, frame: &mut Frame) {
+        self.last_time = frame.time;
+        let s = self.settings;
+        let day = daylight(s.time_of_day.phase(frame.time, 120.0));
+        let camera = self.camera;
+
+        // This frame's lights, instances and draws, by scene.
+        let mut instances = Vec::new();
+        let (lights, draws) = match self.scene {
+            Scene::City => self.city_frame(gpu, frame.time, &day, &mut instances),
+            Scene::Stage => {
+                instances.push(ModelInstance::new(Mat4::IDENTITY, 1.0));
+                instances.push(ModelInstance::new(self.featured.placement, 1.0));
+                let set = if s.tangents == Tangents::PerFace { Which::StageFaceTangents } else { Which::Stage };
+                (scenes::stage_lights(), vec![(set, 0..1), (Which::Featured, 1..2)])
+            }
+            Scene::Lab => {
+                instances.push(ModelInstance::new(Mat4::IDENTITY, 1.0));
+                (Vec::new(), vec![(Which::Lab, 0..1)])
+            }
+        };
+        let lists = frame.timer.cpu("light culling", || clusters::cull(&camera, &lights));
+        self.last_lights = lights.len();
+        let options = LoopOptions { culling: true, highlight: Highlight::BlinnPhong, heat_map: false };
+        self.scene_lights.write(gpu, &camera, &day, &lights, &lists, options);
+        self.sky.write(gpu, &camera, &day);
+        let bytes = (instances.len() * std::mem::size_of::<ModelInstance>()) as u64;
+        if bytes > self.instances.size() {
+            self.instances = gpu.device.create_buffer(&wgpu::BufferDescriptor {
+                label: Some("instances"),
+                size: bytes.next_power_of_two(),
+                usage: wgpu::BufferUsages::VERTEX | wgpu::BufferUsages::COPY_DST,
+                mapped_at_creation: false,
+            });
+        }
+        gpu.queue.write_buffer(&self.instances, 0, bytemuck::cast_slice(&instances));
+        let models = &self.models;
+        let draws: Vec<Draw> = draws
+            .into_iter()
+            .map(|(which, instances)| Draw {
+                model: match which {
+                    Which::City => &models.city,
+                    Which::Drones => &models.drones,
+                    Which::Tower => &models.tower,
+                    Which::Car => &models.car,
+                    Which::Featured => &self.featured.model,
+                    Which::Stage => &models.stage,
+                    Which::StageFaceTangents => &models.stage_face_tangents,
+                    Which::Lab => &models.lab,
+                },
+                instances,
+            })
+            .collect();
+
+        // The scene, in HDR, then the sky behind it.
+        {
+            let mut pass = common::chapter::scene_pass(
+                frame.encoder,
+                frame.timer,
+                "scene",
+                &self.hdr.colour,
+                wgpu::Color::BLACK,
+                &self.hdr.depth,
+            );
+            pass.set_bind_group(0, &self.scene_lights.group, &[]);
+            self.renderer.draw(gpu, &mut pass, &s, self.target.width, &self.materials, &self.instances, &draws);
+            if !s.show_frame {
+                self.sky.draw(&mut pass);
+            }
+        }
+
+        // Bloom, then tone mapping to the target (chapter 08's).
+        let bloom = s.bloom && !s.show_frame;
+        let bloom_settings = BloomSettings::default();
+        if bloom {
+            self.bloom.render(gpu, frame.encoder, frame.timer, &self.hdr.colour, &bloom_settings);
+        }
+        let strength = if bloom { bloom_settings.strength } else { 0.0 };
+        // The tangent frame is shown as it is, not tone-mapped.
+        let mode = if s.show_frame { 2 } else { 0 };
+        self.tone_map.draw(gpu, frame, s.exposure, strength, mode);
+    }
+    // ANCHOR_END: render
+
+    fn ui(&mut self, ui: &mut egui::Ui) {
+        let aspect = self.target.aspect();
+        ui.horizontal(|ui| {
+            ui.label("go to");
+            for (label, view) in [("city", "day"), ("stage", "car"), ("sampling lab", "mipmaps")] {
+                if ui.button(label).clicked() {
+                    (self.scene, self.camera) = view_camera(view, aspect);
+                }
+            }
+        });
+        let s = &mut self.settings;
+        ui.horizontal_wrapped(|ui| {
+            ui.label("time of day");
+            for time in TimeOfDay::ALL {
+                ui.radio_value(&mut s.time_of_day, time, format!("{time:?}").to_lowercase());
+            }
+        });
+        ui.horizontal_wrapped(|ui| {
+            ui.label("sampler");
+            for (mode, label) in [
+                (SamplerMode::Nearest, "nearest"),
+                (SamplerMode::Linear, "bilinear"),
+                (SamplerMode::Mipmaps, "trilinear (mipmaps)"),
+                (SamplerMode::Anisotropic, "anisotropic 16x"),
+            ] {
+                ui.radio_value(&mut s.sampler, mode, label);
+            }
+        });
+        if !self.renderer.anisotropy {
+            ui.label("this adapter cannot filter anisotropically: 'anisotropic' is trilinear here");
+        }
+        ui.checkbox(&mut s.normal_maps, "normal maps");
+        ui.checkbox(&mut s.flip_green, "read normal maps' green as down the image (DirectX)");
+        ui.horizontal(|ui| {
+            ui.label("tangents on the stage's primitives");
+            ui.radio_value(&mut s.tangents, Tangents::PerVertex, "per vertex");
+            ui.radio_value(&mut s.tangents, Tangents::PerFace, "per face");
+        });
+        ui.checkbox(&mut s.swapped_colour_spaces, "swap colour spaces (albedo as data, normal maps as sRGB)");
+        ui.checkbox(&mut s.show_frame, "show the tangent frame (T | B | N)");
+        ui.checkbox(&mut s.bloom, "bloom");
+        ui.add(egui::Slider::new(&mut s.exposure, 0.1..=4.0).logarithmic(true).text("exposure"));
+        let f = &self.featured;
+        ui.label(format!(
+            "model: {}: {} triangles, {} objects, scaled ×{:.3} to fit",
+            f.name, f.triangles, f.objects, f.scale
+        ));
+        for warning in &self.warnings {
+            ui.colored_label(egui::Color32::from_rgb(230, 180, 60), warning);
+        }
+    }
+
+    fn stats(&mut self, _gpu: &Gpu) -> String {
+        let (count, texels, ms) = self.mip_report;
+        let f = &self.featured;
+        let load = match (f.load_ms, f.peak_memory) {
+            (Some(ms), Some(bytes)) => format!(", loaded in {ms:.0} ms, peak memory {} MB", bytes / (1 << 20)),
+            (Some(ms), None) => format!(", loaded in {ms:.0} ms"),
+            _ => String::new(),
+        };
+        format!(
+            "{count} materials, {:.1} M texels uploaded with mip chains in {ms:.0} ms (GPU included); model {}: {} triangles{load}; {} lights; anisotropic filtering {}",
+            texels as f64 / 1e6,
+            f.name,
+            f.triangles,
+            self.last_lights,
+            if self.renderer.anisotropy { "available" } else { "not available" },
+        )
+    }
+
+    fn reload_shaders(&mut self, gpu: &Gpu) -> Result<(), ShaderError> {
+        self.renderer.reload_shaders(gpu)?;
+        self.sky.reload_shaders(gpu)?;
+        self.bloom.reload_shaders(gpu)?;
+        self.tone_map.reload_shaders(gpu)?;
+        Ok(())
+    }
+}

@@ -1,0 +1,325 @@
+//! Materials on the GPU: their textures uploaded in the right colour space
+//! with a full mip chain, the samplers this chapter compares, and one bind
+//! group per material. A texture that cannot be read becomes a checker,
+//! with a warning, and the model still shows.
+
+use std::collections::HashMap;
+use std::path::{Path, PathBuf};
+use std::rc::Rc;
+
+use common::chapter::uniform_entry;
+use common::glam::Vec3;
+use common::image::RgbaImage;
+use common::wgpu::util::DeviceExt as _;
+use common::{Gpu, texture::ColorSpace, wgpu};
+
+use crate::mesh::MaterialDesc;
+use crate::mipmaps::{Averaging, MipMaker, level_count};
+use crate::obj::ReadFile;
+
+// ANCHOR: samplers
+/// The ways of reading a texture this chapter compares.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum SamplerMode {
+    /// The nearest texel of the full-size picture: blocky up close, and
+    /// far away a random pick among many texels (aliasing).
+    Nearest,
+    /// The four nearest texels blended: smooth up close, still aliased far away.
+    Linear,
+    /// Trilinear: blended within the two mip levels whose texels are
+    /// nearest the pixel's size, and between them.
+    Mipmaps,
+    /// Trilinear, with up to 16 samples along the direction a pixel's
+    /// footprint is stretched in (anisotropic filtering).
+    Anisotropic,
+}
+
+impl SamplerMode {
+    pub const ALL: [SamplerMode; 4] =
+        [SamplerMode::Nearest, SamplerMode::Linear, SamplerMode::Mipmaps, SamplerMode::Anisotropic];
+
+    /// The sampler. `anisotropy` is false where the adapter cannot filter
+    /// anisotropically: `Anisotropic` is then plain trilinear.
+    pub fn descriptor(self, anisotropy: bool) -> wgpu::SamplerDescriptor<'static> {
+        use wgpu::FilterMode::Linear;
+        let repeat = wgpu::AddressMode::Repeat;
+        let base = wgpu::SamplerDescriptor {
+            label: Some("surface"),
+            address_mode_u: repeat,
+            address_mode_v: repeat,
+            ..Default::default()
+        };
+        let only_level_0 = 0.0;
+        match self {
+            SamplerMode::Nearest => wgpu::SamplerDescriptor { lod_max_clamp: only_level_0, ..base },
+            SamplerMode::Linear => {
+                wgpu::SamplerDescriptor { mag_filter: Linear, min_filter: Linear, lod_max_clamp: only_level_0, ..base }
+            }
+            SamplerMode::Mipmaps | SamplerMode::Anisotropic => wgpu::SamplerDescriptor {
+                mag_filter: Linear,
+                min_filter: Linear,
+                mipmap_filter: wgpu::MipmapFilterMode::Linear,
+                anisotropy_clamp: if self == SamplerMode::Anisotropic && anisotropy { 16 } else { 1 },
+                ..base
+            },
+        }
+    }
+}
+// ANCHOR_END: samplers
+
+/// A texture with a full mip chain, and views of it read both ways: as it
+/// should be, and in the other colour space (the mistake one view shows).
+pub struct GpuTexture {
+    pub texture: wgpu::Texture,
+    pub view: wgpu::TextureView,
+    pub swapped_view: wgpu::TextureView,
+}
+
+// ANCHOR: upload
+/// Uploads `image` into a texture whose texels are sRGB-encoded colours or
+/// plain data, and records the passes that fill its mip chain.
+pub fn upload(
+    gpu: &Gpu,
+    mips: &mut MipMaker,
+    encoder: &mut wgpu::CommandEncoder,
+    image: &RgbaImage,
+    space: ColorSpace,
+    label: &str,
+) -> GpuTexture {
+    let (format, other) = match space {
+        ColorSpace::Srgb => (wgpu::TextureFormat::Rgba8UnormSrgb, wgpu::TextureFormat::Rgba8Unorm),
+        ColorSpace::Linear => (wgpu::TextureFormat::Rgba8Unorm, wgpu::TextureFormat::Rgba8UnormSrgb),
+    };
+    let size = wgpu::Extent3d { width: image.width(), height: image.height(), depth_or_array_layers: 1 };
+    let texture = gpu.device.create_texture(&wgpu::TextureDescriptor {
+        label: Some(label),
+        size,
+        mip_level_count: level_count(image.width(), image.height()),
+        sample_count: 1,
+        dimension: wgpu::TextureDimension::D2,
+        format,
+        usage: wgpu::TextureUsages::TEXTURE_BINDING
+            | wgpu::TextureUsages::COPY_DST
+            | wgpu::TextureUsages::COPY_SRC
+            | wgpu::TextureUsages::RENDER_ATTACHMENT,
+        // The same bytes may also be viewed in the other colour space.
+        view_formats: &[other],
+    });
+    gpu.queue.write_texture(
+        texture.as_image_copy(),
+        image.as_raw(),
+        wgpu::TexelCopyBufferLayout { offset: 0, bytes_per_row: Some(4 * image.width()), rows_per_image: None },
+        size,
+    );
+    let averaging = if space == ColorSpace::Srgb { Averaging::Colour } else { Averaging::Normals };
+    mips.generate(&gpu.device, encoder, &texture, averaging);
+    let view = texture.create_view(&Default::default());
+    let swapped_view = texture.create_view(&wgpu::TextureViewDescriptor { format: Some(other), ..Default::default() });
+    GpuTexture { texture, view, swapped_view }
+}
+// ANCHOR_END: upload
+
+/// The texture of a missing or unreadable file: a magenta and black checker
+/// of 8 × 8 squares, impossible to mistake for a real surface.
+pub fn missing_checker() -> RgbaImage {
+    RgbaImage::from_fn(64, 64, |x, y| {
+        let on = (x / 8 + y / 8) % 2 == 0;
+        common::image::Rgba(if on { [255, 0, 255, 255] } else { [16, 16, 16, 255] })
+    })
+}
+
+/// Chapter 02's ground, as a texture: black and white squares, 8 × 8 of
+/// them in 256² texels, the hardest picture to sample from afar.
+pub fn checkerboard() -> RgbaImage {
+    RgbaImage::from_fn(256, 256, |x, y| {
+        let c = if (x / 32 + y / 32) % 2 == 0 { 235 } else { 20 };
+        common::image::Rgba([c, c, c, 255])
+    })
+}
+
+/// `Material` in textured.wgsl: 64 bytes.
+#[repr(C)]
+#[derive(Clone, Copy, Debug, bytemuck::Pod, bytemuck::Zeroable)]
+struct MaterialUniform {
+    diffuse: [f32; 3],
+    specular: f32,
+    emissive: [f32; 3],
+    shininess: f32,
+    /// x: has a normal map, y: has an albedo map (its alpha masks the
+    /// emissive light), z: emits only at night, w: unused.
+    flags: [u32; 4],
+}
+
+/// One material's bind groups: as it should be, and with its textures read
+/// in the wrong colour spaces.
+pub struct GpuMaterial {
+    pub desc: MaterialDesc,
+    pub group: wgpu::BindGroup,
+    pub swapped_group: wgpu::BindGroup,
+}
+
+/// Every material of every model, and the textures they share.
+pub struct Materials {
+    pub layout: wgpu::BindGroupLayout,
+    pub list: Vec<GpuMaterial>,
+    textures: HashMap<(PathBuf, bool), Rc<GpuTexture>>,
+    white: Rc<GpuTexture>,
+    flat_normal: Rc<GpuTexture>,
+    missing: Rc<GpuTexture>,
+    /// Textures that could not be read, one line each.
+    pub warnings: Vec<String>,
+    /// Texels uploaded, level 0 only, for the stats.
+    pub texels: u64,
+}
+
+fn texture_entry(binding: u32) -> wgpu::BindGroupLayoutEntry {
+    wgpu::BindGroupLayoutEntry {
+        binding,
+        visibility: wgpu::ShaderStages::FRAGMENT,
+        ty: wgpu::BindingType::Texture {
+            sample_type: wgpu::TextureSampleType::Float { filterable: true },
+            view_dimension: wgpu::TextureViewDimension::D2,
+            multisampled: false,
+        },
+        count: None,
+    }
+}
+
+impl Materials {
+    pub fn new(gpu: &Gpu, mips: &mut MipMaker, encoder: &mut wgpu::CommandEncoder) -> Self {
+        let layout = gpu.device.create_bind_group_layout(&wgpu::BindGroupLayoutDescriptor {
+            label: Some("material"),
+            entries: &[
+                texture_entry(0),
+                texture_entry(1),
+                uniform_entry(2, wgpu::ShaderStages::FRAGMENT, std::mem::size_of::<MaterialUniform>()),
+            ],
+        });
+        let one = |rgba: [u8; 4]| RgbaImage::from_pixel(1, 1, common::image::Rgba(rgba));
+        let white = Rc::new(upload(gpu, mips, encoder, &one([255; 4]), ColorSpace::Srgb, "white"));
+        let flat_normal = Rc::new(upload(gpu, mips, encoder, &one([128, 128, 255, 255]), ColorSpace::Linear, "flat"));
+        let missing = Rc::new(upload(gpu, mips, encoder, &missing_checker(), ColorSpace::Srgb, "missing texture"));
+        Self {
+            layout,
+            list: Vec::new(),
+            textures: HashMap::new(),
+            white,
+            flat_normal,
+            missing,
+            warnings: Vec::new(),
+            texels: 0,
+        }
+    }
+
+    /// Uploads an image made in code under a name materials can refer to
+    /// (the checkerboard).
+    pub fn insert_image(
+        &mut self,
+        gpu: &Gpu,
+        mips: &mut MipMaker,
+        encoder: &mut wgpu::CommandEncoder,
+        name: &Path,
+        image: &RgbaImage,
+    ) {
+        self.texels += u64::from(image.width()) * u64::from(image.height());
+        let texture = upload(gpu, mips, encoder, image, ColorSpace::Srgb, &name.display().to_string());
+        self.textures.insert((name.to_path_buf(), true), Rc::new(texture));
+    }
+
+    /// The texture at `path`, read and uploaded once however many materials
+    /// use it; a checker, with a warning naming the file, if it cannot be
+    /// read or decoded.
+    fn texture(
+        &mut self,
+        gpu: &Gpu,
+        mips: &mut MipMaker,
+        encoder: &mut wgpu::CommandEncoder,
+        read: ReadFile,
+        path: &Path,
+        colour: bool,
+        material: &str,
+    ) -> Rc<GpuTexture> {
+        if let Some(texture) = self.textures.get(&(path.to_path_buf(), colour)) {
+            return texture.clone();
+        }
+        let decoded = read(path).map_err(|e| e.to_string()).and_then(|bytes| {
+            common::texture::decode_named(&path.display().to_string(), &bytes).map_err(|e| format!("{e:#}"))
+        });
+        let texture = match decoded {
+            Ok(image) => {
+                self.texels += u64::from(image.width()) * u64::from(image.height());
+                let space = if colour { ColorSpace::Srgb } else { ColorSpace::Linear };
+                Rc::new(upload(gpu, mips, encoder, &image, space, &path.display().to_string()))
+            }
+            Err(reason) => {
+                self.warnings.push(format!("material {material}: {reason}; showing a checker instead"));
+                self.missing.clone()
+            }
+        };
+        self.textures.insert((path.to_path_buf(), colour), texture.clone());
+        texture
+    }
+
+    /// Adds a material and returns its index.
+    pub fn add(
+        &mut self,
+        gpu: &Gpu,
+        mips: &mut MipMaker,
+        encoder: &mut wgpu::CommandEncoder,
+        read: ReadFile,
+        desc: &MaterialDesc,
+    ) -> usize {
+        let albedo = match &desc.albedo_map {
+            Some(path) => self.texture(gpu, mips, encoder, read, path, true, &desc.name),
+            None => self.white.clone(),
+        };
+        let normal = match &desc.normal_map {
+            Some(path) => self.texture(gpu, mips, encoder, read, path, false, &desc.name),
+            None => self.flat_normal.clone(),
+        };
+        let uniform = MaterialUniform {
+            diffuse: desc.diffuse.into(),
+            specular: desc.specular,
+            emissive: desc.emissive.into(),
+            shininess: desc.shininess,
+            flags: [
+                u32::from(desc.normal_map.is_some()),
+                u32::from(desc.albedo_map.is_some()),
+                u32::from(desc.at_night),
+                0,
+            ],
+        };
+        let buffer = gpu.device.create_buffer_init(&wgpu::util::BufferInitDescriptor {
+            label: Some(&desc.name),
+            contents: bytemuck::bytes_of(&uniform),
+            usage: wgpu::BufferUsages::UNIFORM,
+        });
+        let group = |albedo: &wgpu::TextureView, normal: &wgpu::TextureView| {
+            gpu.device.create_bind_group(&wgpu::BindGroupDescriptor {
+                label: Some(&desc.name),
+                layout: &self.layout,
+                entries: &[
+                    wgpu::BindGroupEntry { binding: 0, resource: wgpu::BindingResource::TextureView(albedo) },
+                    wgpu::BindGroupEntry { binding: 1, resource: wgpu::BindingResource::TextureView(normal) },
+                    wgpu::BindGroupEntry { binding: 2, resource: buffer.as_entire_binding() },
+                ],
+            })
+        };
+        let material = GpuMaterial {
+            desc: desc.clone(),
+            group: group(&albedo.view, &normal.view),
+            swapped_group: group(&albedo.swapped_view, &normal.swapped_view),
+        };
+        self.list.push(material);
+        self.list.len() - 1
+    }
+}
+
+/// A colour as a person picks it (sRGB, 0..255) to linear light, for
+/// material colours written in code.
+pub fn srgb(r: u8, g: u8, b: u8) -> Vec3 {
+    Vec3::new(r as f32, g as f32, b as f32).map(|c| {
+        let c = c / 255.0;
+        if c <= 0.040_45 { c / 12.92 } else { ((c + 0.055) / 1.055).powf(2.4) }
+    })
+}

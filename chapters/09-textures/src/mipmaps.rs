@@ -1,0 +1,185 @@
+//! Mipmaps, made on the GPU when a texture loads: each level half the size
+//! of the one above, drawn by a full-screen pass that averages the level
+//! above in 2 × 2 blocks. Render passes rather than a compute shader,
+//! because a compute shader cannot write an sRGB texture (storage textures
+//! have no sRGB formats), and a render target can: the averaging then
+//! happens in linear light, as it must.
+
+use std::collections::HashMap;
+
+use common::{Gpu, ShaderError, fullscreen, shader, wgpu};
+
+/// Levels in a full chain for a `width × height` texture, down to 1 × 1.
+pub fn level_count(width: u32, height: u32) -> u32 {
+    32 - width.max(height).max(1).leading_zeros()
+}
+
+/// How a level is averaged from the one above.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum Averaging {
+    /// Colours (and the albedo's alpha), averaged as they are.
+    Colour,
+    /// Tangent-space normals: averaged, then made unit length again.
+    Normals,
+}
+
+// ANCHOR: maker
+/// Builds the mip chains of textures: one small pipeline per format and
+/// kind of averaging, made when first needed.
+pub struct MipMaker {
+    module: wgpu::ShaderModule,
+    layout: wgpu::BindGroupLayout,
+    pipeline_layout: wgpu::PipelineLayout,
+    sampler: wgpu::Sampler,
+    pipelines: HashMap<(wgpu::TextureFormat, Averaging), wgpu::RenderPipeline>,
+}
+
+impl MipMaker {
+    pub fn new(gpu: &Gpu) -> Result<Self, ShaderError> {
+        let device = &gpu.device;
+        let module = shader!("textures/mipmap.wgsl", imports: ["common/fullscreen.wgsl"]).module(device)?;
+        let layout = device.create_bind_group_layout(&wgpu::BindGroupLayoutDescriptor {
+            label: Some("mip level above"),
+            entries: &[
+                wgpu::BindGroupLayoutEntry {
+                    binding: 0,
+                    visibility: wgpu::ShaderStages::FRAGMENT,
+                    ty: wgpu::BindingType::Texture {
+                        sample_type: wgpu::TextureSampleType::Float { filterable: true },
+                        view_dimension: wgpu::TextureViewDimension::D2,
+                        multisampled: false,
+                    },
+                    count: None,
+                },
+                wgpu::BindGroupLayoutEntry {
+                    binding: 1,
+                    visibility: wgpu::ShaderStages::FRAGMENT,
+                    ty: wgpu::BindingType::Sampler(wgpu::SamplerBindingType::Filtering),
+                    count: None,
+                },
+            ],
+        });
+        let pipeline_layout = device.create_pipeline_layout(&wgpu::PipelineLayoutDescriptor {
+            label: Some("mipmaps"),
+            bind_group_layouts: &[Some(&layout)],
+            immediate_size: 0,
+        });
+        let sampler = device.create_sampler(&wgpu::SamplerDescriptor {
+            label: Some("mipmaps"),
+            mag_filter: wgpu::FilterMode::Linear,
+            min_filter: wgpu::FilterMode::Linear,
+            ..Default::default()
+        });
+        Ok(Self { module, layout, pipeline_layout, sampler, pipelines: HashMap::new() })
+    }
+
+    /// Records the passes that fill levels 1.. of `texture` from level 0.
+    /// The texture needs `RENDER_ATTACHMENT` and `TEXTURE_BINDING` usage.
+    pub fn generate(
+        &mut self,
+        device: &wgpu::Device,
+        encoder: &mut wgpu::CommandEncoder,
+        texture: &wgpu::Texture,
+        averaging: Averaging,
+    ) {
+        let format = texture.format();
+        let pipeline = self.pipelines.entry((format, averaging)).or_insert_with(|| {
+            let entry = match averaging {
+                Averaging::Colour => "fs_colour",
+                Averaging::Normals => "fs_normal",
+            };
+            fullscreen::pipeline(device, "mip level", &self.pipeline_layout, &self.module, entry, format.into(), None)
+        });
+        let level_view = |level| {
+            texture.create_view(&wgpu::TextureViewDescriptor {
+                base_mip_level: level,
+                mip_level_count: Some(1),
+                ..Default::default()
+            })
+        };
+        for level in 1..texture.mip_level_count() {
+            let above = level_view(level - 1);
+            let group = device.create_bind_group(&wgpu::BindGroupDescriptor {
+                label: Some("mip level above"),
+                layout: &self.layout,
+                entries: &[
+                    wgpu::BindGroupEntry { binding: 0, resource: wgpu::BindingResource::TextureView(&above) },
+                    wgpu::BindGroupEntry { binding: 1, resource: wgpu::BindingResource::Sampler(&self.sampler) },
+                ],
+            });
+            let target = level_view(level);
+            let mut pass = encoder.begin_render_pass(&wgpu::RenderPassDescriptor {
+                label: Some("mip level"),
+                color_attachments: &[Some(wgpu::RenderPassColorAttachment {
+                    view: &target,
+                    depth_slice: None,
+                    resolve_target: None,
+                    ops: wgpu::Operations {
+                        load: wgpu::LoadOp::Clear(wgpu::Color::BLACK),
+                        store: wgpu::StoreOp::Store,
+                    },
+                })],
+                ..Default::default()
+            });
+            pass.set_pipeline(pipeline);
+            pass.set_bind_group(0, &group, &[]);
+            pass.draw(0..3, 0..1);
+        }
+    }
+}
+// ANCHOR_END: maker
+
+// ANCHOR: reference
+/// The CPU's answer for one level of an sRGB picture: each texel the mean
+/// of a 2 × 2 block of the level above, averaged in linear light (alpha as
+/// it is). The test compares the GPU's levels with this.
+pub fn box_filter_srgb(above: &common::image::RgbaImage) -> common::image::RgbaImage {
+    let decode = |c: u8| {
+        let c = c as f32 / 255.0;
+        if c <= 0.040_45 { c / 12.92 } else { ((c + 0.055) / 1.055).powf(2.4) }
+    };
+    let encode = |c: f32| {
+        let c = if c <= 0.003_130_8 { 12.92 * c } else { 1.055 * c.powf(1.0 / 2.4) - 0.055 };
+        (c.clamp(0.0, 1.0) * 255.0).round() as u8
+    };
+    let (width, height) = ((above.width() / 2).max(1), (above.height() / 2).max(1));
+    common::image::RgbaImage::from_fn(width, height, |x, y| {
+        let texels = [(0, 0), (1, 0), (0, 1), (1, 1)].map(|(dx, dy)| above.get_pixel(2 * x + dx, 2 * y + dy).0);
+        let mean = |channel: usize, linear: bool| {
+            let sum: f32 =
+                texels.iter().map(|t| if linear { decode(t[channel]) } else { t[channel] as f32 / 255.0 }).sum();
+            sum / 4.0
+        };
+        common::image::Rgba([
+            encode(mean(0, true)),
+            encode(mean(1, true)),
+            encode(mean(2, true)),
+            (mean(3, false) * 255.0).round() as u8,
+        ])
+    })
+}
+// ANCHOR_END: reference
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn chains_go_down_to_one_texel() {
+        assert_eq!(level_count(256, 256), 9);
+        assert_eq!(level_count(1, 1), 1);
+        assert_eq!(level_count(1000, 600), 10);
+        assert_eq!(level_count(3, 1), 2);
+    }
+
+    #[test]
+    fn the_cpu_box_filter_averages_light_not_numbers() {
+        // Black and white texels average to middle grey in light: 188 in
+        // sRGB, not 128.
+        let image = common::image::RgbaImage::from_fn(2, 2, |x, _| {
+            let c = if x == 0 { 0 } else { 255 };
+            common::image::Rgba([c, c, c, 255])
+        });
+        assert_eq!(box_filter_srgb(&image).get_pixel(0, 0).0, [188, 188, 188, 255]);
+    }
+}
