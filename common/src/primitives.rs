@@ -172,7 +172,8 @@ pub fn pyramid() -> MeshData {
     }
     let base = mesh.vertices.len() as u32;
     for c in corners {
-        mesh.vertices.push(vertex(c, Vec3::NEG_Y, Vec2::new(c.x + 0.5, c.z + 0.5)));
+        // Seen from below, +x is to the right and +z up the image.
+        mesh.vertices.push(vertex(c, Vec3::NEG_Y, Vec2::new(c.x + 0.5, 0.5 - c.z)));
     }
     mesh.indices.extend([base, base + 3, base + 2, base, base + 2, base + 1]);
     mesh
@@ -280,6 +281,76 @@ mod tests {
         check_outward("pyramid", &mesh, |_| Vec3::new(0.0, -0.25, 0.0));
         assert!((signed_volume(&mesh) - 1.0 / 3.0).abs() < 1e-5);
     }
+
+    /// Every vertex sits where its texture coordinates say: `expected`
+    /// gives the position for (u, v) and the vertex's normal.
+    fn check_uv_mapping(name: &str, mesh: &MeshData, expected: impl Fn(Vec2, Vec3) -> Vec3) {
+        for v in &mesh.vertices {
+            let want = expected(Vec2::from(v.uv), Vec3::from(v.normal));
+            let got = Vec3::from(v.position);
+            assert!(got.abs_diff_eq(want, 1e-5), "{name}: uv {:?} is at {got}, not {want}", v.uv);
+        }
+    }
+
+    // ANCHOR: uv_tests
+    #[test]
+    fn texels_map_where_they_should() {
+        let lon = |u: f32| (TAU * u).sin_cos();
+        check_uv_mapping("sphere", &uv_sphere(24, 12), |uv, _| {
+            let ((s, c), (sin_lat, cos_lat)) = (lon(uv.x), (PI * uv.y).sin_cos());
+            0.5 * Vec3::new(sin_lat * s, cos_lat, sin_lat * c)
+        });
+        // Sides: u around from +z towards +x, v down from the top. Caps: the
+        // texture laid flat, u along +x, v along −z.
+        let cap = |uv: Vec2, y: f32| Vec3::new(uv.x - 0.5, y, 0.5 - uv.y);
+        check_uv_mapping("cylinder", &cylinder(24), |uv, n| match n.y {
+            y if y > 0.5 => cap(uv, 0.5),
+            y if y < -0.5 => cap(uv, -0.5),
+            _ => Vec3::new(0.5 * lon(uv.x).0, 0.5 - uv.y, 0.5 * lon(uv.x).1),
+        });
+        check_uv_mapping("cone", &cone(24), |uv, n| {
+            if n.y < -0.5 {
+                cap(uv, -0.5)
+            } else {
+                Vec3::new(0.5 * uv.y * lon(uv.x).0, 0.5 - uv.y, 0.5 * uv.y * lon(uv.x).1)
+            }
+        });
+        check_uv_mapping("torus", &torus(32, 12, 0.15), |uv, _| {
+            let (s, c) = lon(uv.x);
+            let (sin_tube, cos_tube) = (-TAU * uv.y).sin_cos();
+            Vec3::new(0.35 * s, 0.0, 0.35 * c) + 0.15 * Vec3::new(cos_tube * s, sin_tube, cos_tube * c)
+        });
+        check_uv_mapping("plane", &plane(4), |uv, _| Vec3::new(uv.x - 0.5, 0.0, uv.y - 0.5));
+        check_uv_mapping(
+            "pyramid base",
+            &MeshData { vertices: pyramid().vertices[12..].to_vec(), indices: vec![] },
+            |uv, _| Vec3::new(uv.x - 0.5, -0.5, 0.5 - uv.y),
+        );
+    }
+
+    /// Each face of the cube and each side of the pyramid shows the whole
+    /// texture the right way round: seen from outside, u runs to the right
+    /// and v down (so ∂P/∂u × ∂P/∂v points into the face), and on the
+    /// upright faces "up the image" is up.
+    #[test]
+    fn flat_faces_show_the_texture_upright_and_unmirrored() {
+        for (name, mesh) in [("cube", cube()), ("pyramid", pyramid())] {
+            for t in mesh.indices.chunks_exact(3) {
+                let [a, b, c] = [0, 1, 2].map(|k| mesh.vertices[t[k] as usize]);
+                let (p, uv) = ([a, b, c].map(|v| Vec3::from(v.position)), [a, b, c].map(|v| Vec2::from(v.uv)));
+                let (e1, e2, d1, d2) = (p[1] - p[0], p[2] - p[0], uv[1] - uv[0], uv[2] - uv[0]);
+                let det = d1.x * d2.y - d2.x * d1.y;
+                let du = (e1 * d2.y - e2 * d1.y) / det;
+                let dv = (e2 * d1.x - e1 * d2.x) / det;
+                let n = Vec3::from(a.normal);
+                assert!(du.cross(dv).dot(n) < 0.0, "{name}: triangle {t:?} shows its texture mirrored");
+                if n.y.abs() < 0.9 {
+                    assert!(dv.y < 0.0, "{name}: triangle {t:?} shows its texture upside down");
+                }
+            }
+        }
+    }
+    // ANCHOR_END: uv_tests
 
     #[test]
     fn plane_faces_up() {

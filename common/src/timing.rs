@@ -190,21 +190,6 @@ impl Stats {
     }
 }
 
-#[cfg(test)]
-mod tests {
-    use super::*;
-
-    #[test]
-    fn stats_use_nearest_rank() {
-        let samples: Vec<f64> = (1..=100).rev().map(f64::from).collect();
-        let stats = Stats::of(&samples).unwrap();
-        assert_eq!((stats.min, stats.median, stats.p95, stats.count), (1.0, 50.0, 95.0, 100));
-        let one = Stats::of(&[4.0]).unwrap();
-        assert_eq!((one.min, one.median, one.p95), (4.0, 4.0, 4.0));
-        assert!(Stats::of(&[]).is_none());
-    }
-}
-
 /// Runs `work` once and says how long it took, in milliseconds: for what a
 /// chapter measures outside frames (loading a model, making mipmaps).
 pub fn measure<T>(work: impl FnOnce() -> T) -> (T, f64) {
@@ -220,4 +205,19 @@ pub fn peak_memory() -> Option<u64> {
     let line = status.lines().find(|l| l.starts_with("VmHWM:"))?;
     let kib: u64 = line.split_whitespace().nth(1)?.parse().ok()?;
     Some(kib * 1024)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn stats_use_nearest_rank() {
+        let samples: Vec<f64> = (1..=100).rev().map(f64::from).collect();
+        let stats = Stats::of(&samples).unwrap();
+        assert_eq!((stats.min, stats.median, stats.p95, stats.count), (1.0, 50.0, 95.0, 100));
+        let one = Stats::of(&[4.0]).unwrap();
+        assert_eq!((one.min, one.median, one.p95), (4.0, 4.0, 4.0));
+        assert!(Stats::of(&[]).is_none());
+    }
 }

@@ -109,6 +109,23 @@ fn snapshot(args: &[String]) -> anyhow::Result<()> {
     cargo(&cargo_args)
 }
 
+/// Runs a chapter's bench makes besides its views, as (what it shows,
+/// extra flags): chapter 09 loads models given with `--model`.
+fn extra_bench_runs(chapter: &str) -> anyhow::Result<Vec<(String, Vec<String>)>> {
+    if chapter != "textures" {
+        return Ok(Vec::new());
+    }
+    let million = target_dir().join("bench/million.obj");
+    std::fs::create_dir_all(million.parent().expect("a folder"))?;
+    assets::models::million_triangles(&million)?;
+    let boat = root().join("assets/models/boat/boat.obj");
+    let run = |model: &Path| vec!["--view".into(), "car".into(), "--model".into(), model.display().to_string()];
+    Ok(vec![
+        ("The largest of the project's models, the boat".into(), run(&boat)),
+        ("A sphere of 1,002,528 triangles written by the bench".into(), run(&million)),
+    ])
+}
+
 /// Package names of `chapters/*`, in book order.
 fn chapter_names() -> anyhow::Result<Vec<String>> {
     let mut dirs: Vec<PathBuf> =
@@ -162,6 +179,22 @@ fn bench(args: &[String]) -> anyhow::Result<()> {
             "Measured by `cargo xtask bench {chapter}` (release build, `{command}`): {heading}; \
              CPU: {cpu}, {cores} threads.\n\n{rows}"
         );
+        let mut page = page;
+        for (what, args) in extra_bench_runs(chapter)? {
+            let command = format!("{chapter} --bench {}", args.join(" "));
+            println!("\n$ {command}");
+            let output = Command::new(&binary)
+                .args(["--bench", "--size", "1280x720"])
+                .args(&args)
+                .envs(quiet_env())
+                .output()
+                .with_context(|| format!("cannot run {}", binary.display()))?;
+            ensure!(output.status.success(), "{command} failed: {}", String::from_utf8_lossy(&output.stderr));
+            let table = String::from_utf8(output.stdout)?;
+            print!("{table}");
+            let rows = table.split_once('\n').map_or("", |(_, rows)| rows);
+            page.push_str(&format!("\n{what} (`{command}`):\n\n{rows}"));
+        }
         std::fs::write(out_dir.join(format!("{chapter}.md")), page)?;
     }
     println!("\nwrote {}", out_dir.display());

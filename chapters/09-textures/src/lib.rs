@@ -28,7 +28,7 @@ use lighting::clusters;
 use lighting::lights::{Daylight, Light, TimeOfDay, daylight};
 use lighting::{CitySky, HDR_FORMAT, HdrTarget, Highlight, LightCount, LoopOptions, SceneLights, ToneMap};
 
-use materials::{Materials, SamplerMode};
+use materials::{Materials, SamplerMode, Uploader};
 use mesh::{GpuModel, ModelData, ModelInstance, TexturedVertex};
 use mipmaps::MipMaker;
 use obj::{LoadedModel, ReadFile};
@@ -186,6 +186,14 @@ pub struct Draw<'a> {
     pub instances: std::ops::Range<u32>,
 }
 
+/// What a frame draws: models with their instances, and the materials
+/// the models' parts refer to.
+pub struct DrawList<'a> {
+    pub materials: &'a Materials,
+    pub instances: &'a wgpu::Buffer,
+    pub draws: Vec<Draw<'a>>,
+}
+
 impl TexturedRenderer {
     pub fn new(gpu: &Gpu, lights: &SceneLights, materials: &Materials) -> Result<Self, ShaderError> {
         let device = &gpu.device;
@@ -273,9 +281,7 @@ impl TexturedRenderer {
         pass: &mut wgpu::RenderPass<'_>,
         settings: &Settings,
         target_width: u32,
-        materials: &Materials,
-        instances: &wgpu::Buffer,
-        draws: &[Draw],
+        list: &DrawList,
     ) {
         let options = ViewOptions {
             display: u32::from(settings.show_frame),
@@ -287,15 +293,15 @@ impl TexturedRenderer {
         let mode = SamplerMode::ALL.iter().position(|m| *m == settings.sampler).unwrap_or(0);
         pass.set_pipeline(&self.pipeline);
         pass.set_bind_group(2, &self.sampler_groups[mode], &[]);
-        pass.set_vertex_buffer(1, instances.slice(..));
-        for draw in draws {
+        pass.set_vertex_buffer(1, list.instances.slice(..));
+        for draw in &list.draws {
             if draw.instances.is_empty() {
                 continue;
             }
             pass.set_vertex_buffer(0, draw.model.vertices.slice(..));
             pass.set_index_buffer(draw.model.indices.slice(..), wgpu::IndexFormat::Uint32);
             for part in &draw.model.parts {
-                let material = &materials.list[draw.model.first_material + part.material];
+                let material = &list.materials.list[draw.model.first_material + part.material];
                 let group = if settings.swapped_colour_spaces { &material.swapped_group } else { &material.group };
                 pass.set_bind_group(1, group, &[]);
                 pass.draw_indexed(part.indices.clone(), 0, draw.instances.clone());
@@ -385,20 +391,12 @@ pub struct TexturesChapter {
 }
 
 /// Uploads `model`'s materials and then the model.
-fn upload_model(
-    gpu: &Gpu,
-    mips: &mut MipMaker,
-    materials: &mut Materials,
-    encoder: &mut wgpu::CommandEncoder,
-    read: ReadFile,
-    model: &ModelData,
-    label: &str,
-) -> GpuModel {
+fn upload_model(up: &mut Uploader, materials: &mut Materials, model: &ModelData, label: &str) -> GpuModel {
     let first = materials.list.len();
     for desc in &model.materials {
-        materials.add(gpu, mips, encoder, read, desc);
+        materials.add(up, desc);
     }
-    GpuModel::upload(&gpu.device, model, first, label)
+    GpuModel::upload(&up.gpu.device, model, first, label)
 }
 
 impl TexturesChapter {
@@ -487,34 +485,25 @@ impl Chapter for TexturesChapter {
         let read: ReadFile = &builtin::read;
         let mut mips = MipMaker::new(gpu)?;
         let ((materials, models, warnings), mip_ms) = common::timing::measure(|| {
-            let mut encoder = device.create_command_encoder(&Default::default());
-            let mut materials = Materials::new(gpu, &mut mips, &mut encoder);
-            materials.insert_image(
-                gpu,
-                &mut mips,
-                &mut encoder,
-                Path::new(scenes::CHECKER),
-                &materials::checkerboard(),
-            );
-            let mut up = |model: &ModelData, label| {
-                upload_model(gpu, &mut mips, &mut materials, &mut encoder, read, model, label)
-            };
-            let city = up(&builtin.city, "city");
-            let drones = GpuModel::upload(device, &ModelData::default(), city.first_material, "drones");
+            let mut up = Uploader::new(gpu, &mut mips, read);
+            let mut materials = Materials::new(&mut up);
+            materials.insert_image(&mut up, Path::new(scenes::CHECKER), &materials::checkerboard());
+            let mut model = |data: &ModelData, label| upload_model(&mut up, &mut materials, data, label);
+            let city = model(&builtin.city, "city");
             let models = Models {
-                drones,
-                car: up(&builtin.car.model, "car"),
-                tower: up(&builtin.tower.model, "tower"),
-                stage: up(&builtin.stage, "stage"),
-                stage_face_tangents: up(&builtin.stage_face_tangents, "stage, face tangents"),
-                lab: up(&builtin.lab, "lab"),
+                drones: GpuModel::upload(device, &ModelData::default(), city.first_material, "drones"),
+                car: model(&builtin.car.model, "car"),
+                tower: model(&builtin.tower.model, "tower"),
+                stage: model(&builtin.stage, "stage"),
+                stage_face_tangents: model(&builtin.stage_face_tangents, "stage, face tangents"),
+                lab: model(&builtin.lab, "lab"),
                 city,
             };
-            gpu.queue.submit([encoder.finish()]);
+            up.finish();
             let _ = device.poll(wgpu::PollType::wait_indefinitely());
             let mut warnings = builtin.car.warnings.clone();
             warnings.extend(builtin.tower.warnings.iter().cloned());
-            warnings.extend(materials.warnings.drain(..));
+            warnings.append(&mut materials.warnings);
             (materials, models, warnings)
         });
         let mip_report = (materials.list.len(), materials.texels, mip_ms);
@@ -580,12 +569,12 @@ impl Chapter for TexturesChapter {
         let read: ReadFile = &|p: &Path| common::files::read(p);
         let (loaded, load_ms) = common::timing::measure(|| obj::load(&path, read));
         let loaded = loaded.map_err(|e| UsageError(format!("--model: {e}")))?;
-        let mut encoder = gpu.device.create_command_encoder(&Default::default());
-        let model = upload_model(gpu, &mut self.mips, &mut self.materials, &mut encoder, read, &loaded.model, "model");
-        gpu.queue.submit([encoder.finish()]);
+        let mut up = Uploader::new(gpu, &mut self.mips, read);
+        let model = upload_model(&mut up, &mut self.materials, &loaded.model, "model");
+        up.finish();
         let (placement, scale) = scenes::stage_placement(loaded.model.bounds());
         let mut warnings = loaded.warnings;
-        warnings.extend(self.materials.warnings.drain(..));
+        warnings.append(&mut self.materials.warnings);
         for warning in &warnings {
             eprintln!("warning: {warning}");
         }
@@ -700,7 +689,8 @@ impl Chapter for TexturesChapter {
                 &self.hdr.depth,
             );
             pass.set_bind_group(0, &self.scene_lights.group, &[]);
-            self.renderer.draw(gpu, &mut pass, &s, self.target.width, &self.materials, &self.instances, &draws);
+            let list = DrawList { materials: &self.materials, instances: &self.instances, draws };
+            self.renderer.draw(gpu, &mut pass, &s, self.target.width, &list);
             if !s.show_frame {
                 self.sky.draw(&mut pass);
             }

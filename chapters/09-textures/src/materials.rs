@@ -75,17 +75,32 @@ pub struct GpuTexture {
     pub swapped_view: wgpu::TextureView,
 }
 
+/// What uploading textures takes: the GPU, the mip maker, an encoder for
+/// the mip passes, and where files are read from.
+pub struct Uploader<'a> {
+    pub gpu: &'a Gpu,
+    pub mips: &'a mut MipMaker,
+    pub encoder: wgpu::CommandEncoder,
+    pub read: ReadFile<'a>,
+}
+
+impl<'a> Uploader<'a> {
+    pub fn new(gpu: &'a Gpu, mips: &'a mut MipMaker, read: ReadFile<'a>) -> Self {
+        let encoder = gpu.device.create_command_encoder(&Default::default());
+        Self { gpu, mips, encoder, read }
+    }
+
+    /// Submits the recorded mip passes.
+    pub fn finish(self) {
+        self.gpu.queue.submit([self.encoder.finish()]);
+    }
+}
+
 // ANCHOR: upload
 /// Uploads `image` into a texture whose texels are sRGB-encoded colours or
 /// plain data, and records the passes that fill its mip chain.
-pub fn upload(
-    gpu: &Gpu,
-    mips: &mut MipMaker,
-    encoder: &mut wgpu::CommandEncoder,
-    image: &RgbaImage,
-    space: ColorSpace,
-    label: &str,
-) -> GpuTexture {
+pub fn upload(up: &mut Uploader, image: &RgbaImage, space: ColorSpace, label: &str) -> GpuTexture {
+    let gpu = up.gpu;
     let (format, other) = match space {
         ColorSpace::Srgb => (wgpu::TextureFormat::Rgba8UnormSrgb, wgpu::TextureFormat::Rgba8Unorm),
         ColorSpace::Linear => (wgpu::TextureFormat::Rgba8Unorm, wgpu::TextureFormat::Rgba8UnormSrgb),
@@ -112,7 +127,7 @@ pub fn upload(
         size,
     );
     let averaging = if space == ColorSpace::Srgb { Averaging::Colour } else { Averaging::Normals };
-    mips.generate(&gpu.device, encoder, &texture, averaging);
+    up.mips.generate(&gpu.device, &mut up.encoder, &texture, averaging);
     let view = texture.create_view(&Default::default());
     let swapped_view = texture.create_view(&wgpu::TextureViewDescriptor { format: Some(other), ..Default::default() });
     GpuTexture { texture, view, swapped_view }
@@ -186,8 +201,8 @@ fn texture_entry(binding: u32) -> wgpu::BindGroupLayoutEntry {
 }
 
 impl Materials {
-    pub fn new(gpu: &Gpu, mips: &mut MipMaker, encoder: &mut wgpu::CommandEncoder) -> Self {
-        let layout = gpu.device.create_bind_group_layout(&wgpu::BindGroupLayoutDescriptor {
+    pub fn new(up: &mut Uploader) -> Self {
+        let layout = up.gpu.device.create_bind_group_layout(&wgpu::BindGroupLayoutDescriptor {
             label: Some("material"),
             entries: &[
                 texture_entry(0),
@@ -196,9 +211,9 @@ impl Materials {
             ],
         });
         let one = |rgba: [u8; 4]| RgbaImage::from_pixel(1, 1, common::image::Rgba(rgba));
-        let white = Rc::new(upload(gpu, mips, encoder, &one([255; 4]), ColorSpace::Srgb, "white"));
-        let flat_normal = Rc::new(upload(gpu, mips, encoder, &one([128, 128, 255, 255]), ColorSpace::Linear, "flat"));
-        let missing = Rc::new(upload(gpu, mips, encoder, &missing_checker(), ColorSpace::Srgb, "missing texture"));
+        let white = Rc::new(upload(up, &one([255; 4]), ColorSpace::Srgb, "white"));
+        let flat_normal = Rc::new(upload(up, &one([128, 128, 255, 255]), ColorSpace::Linear, "flat"));
+        let missing = Rc::new(upload(up, &missing_checker(), ColorSpace::Srgb, "missing texture"));
         Self {
             layout,
             list: Vec::new(),
@@ -213,43 +228,27 @@ impl Materials {
 
     /// Uploads an image made in code under a name materials can refer to
     /// (the checkerboard).
-    pub fn insert_image(
-        &mut self,
-        gpu: &Gpu,
-        mips: &mut MipMaker,
-        encoder: &mut wgpu::CommandEncoder,
-        name: &Path,
-        image: &RgbaImage,
-    ) {
+    pub fn insert_image(&mut self, up: &mut Uploader, name: &Path, image: &RgbaImage) {
         self.texels += u64::from(image.width()) * u64::from(image.height());
-        let texture = upload(gpu, mips, encoder, image, ColorSpace::Srgb, &name.display().to_string());
+        let texture = upload(up, image, ColorSpace::Srgb, &name.display().to_string());
         self.textures.insert((name.to_path_buf(), true), Rc::new(texture));
     }
 
     /// The texture at `path`, read and uploaded once however many materials
     /// use it; a checker, with a warning naming the file, if it cannot be
     /// read or decoded.
-    fn texture(
-        &mut self,
-        gpu: &Gpu,
-        mips: &mut MipMaker,
-        encoder: &mut wgpu::CommandEncoder,
-        read: ReadFile,
-        path: &Path,
-        colour: bool,
-        material: &str,
-    ) -> Rc<GpuTexture> {
+    fn texture(&mut self, up: &mut Uploader, path: &Path, colour: bool, material: &str) -> Rc<GpuTexture> {
         if let Some(texture) = self.textures.get(&(path.to_path_buf(), colour)) {
             return texture.clone();
         }
-        let decoded = read(path).map_err(|e| e.to_string()).and_then(|bytes| {
+        let decoded = (up.read)(path).map_err(|e| e.to_string()).and_then(|bytes| {
             common::texture::decode_named(&path.display().to_string(), &bytes).map_err(|e| format!("{e:#}"))
         });
         let texture = match decoded {
             Ok(image) => {
                 self.texels += u64::from(image.width()) * u64::from(image.height());
                 let space = if colour { ColorSpace::Srgb } else { ColorSpace::Linear };
-                Rc::new(upload(gpu, mips, encoder, &image, space, &path.display().to_string()))
+                Rc::new(upload(up, &image, space, &path.display().to_string()))
             }
             Err(reason) => {
                 self.warnings.push(format!("material {material}: {reason}; showing a checker instead"));
@@ -261,20 +260,13 @@ impl Materials {
     }
 
     /// Adds a material and returns its index.
-    pub fn add(
-        &mut self,
-        gpu: &Gpu,
-        mips: &mut MipMaker,
-        encoder: &mut wgpu::CommandEncoder,
-        read: ReadFile,
-        desc: &MaterialDesc,
-    ) -> usize {
+    pub fn add(&mut self, up: &mut Uploader, desc: &MaterialDesc) -> usize {
         let albedo = match &desc.albedo_map {
-            Some(path) => self.texture(gpu, mips, encoder, read, path, true, &desc.name),
+            Some(path) => self.texture(up, path, true, &desc.name),
             None => self.white.clone(),
         };
         let normal = match &desc.normal_map {
-            Some(path) => self.texture(gpu, mips, encoder, read, path, false, &desc.name),
+            Some(path) => self.texture(up, path, false, &desc.name),
             None => self.flat_normal.clone(),
         };
         let uniform = MaterialUniform {
@@ -289,6 +281,7 @@ impl Materials {
                 0,
             ],
         };
+        let gpu = up.gpu;
         let buffer = gpu.device.create_buffer_init(&wgpu::util::BufferInitDescriptor {
             label: Some(&desc.name),
             contents: bytemuck::bytes_of(&uniform),

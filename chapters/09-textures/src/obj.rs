@@ -54,6 +54,9 @@ pub fn default_material() -> MaterialDesc {
 /// Loads `path` and the MTL files it names, reading through `read`.
 pub fn load(path: &Path, read: ReadFile) -> Result<LoadedModel, ModelError> {
     let bytes = read(path).map_err(|e| ModelError(e.to_string()))?;
+    if let Some(line) = oversized_index(&bytes) {
+        return Err(ModelError(format!("{}: line {line}: index out of range", path.display())));
+    }
     let folder = path.parent().unwrap_or(Path::new(""));
     let options = tobj::LoadOptions {
         // Quads and n-gons become triangle fans; one index per vertex, so
@@ -73,6 +76,11 @@ pub fn load(path: &Path, read: ReadFile) -> Result<LoadedModel, ModelError> {
         let mtl_path = folder.join(mtl);
         match read(&mtl_path) {
             Ok(text) => {
+                // tobj panics on some malformed colour lines: check first.
+                if let Some((line, what)) = check_mtl(&text) {
+                    *mtl_error.borrow_mut() = Some(format!("{}: line {line}: {what}", mtl_path.display()));
+                    return Err(tobj::LoadError::MaterialParseError);
+                }
                 let loaded = tobj::load_mtl_buf(&mut text.as_slice());
                 match &loaded {
                     Ok((materials, _)) => {
@@ -81,10 +89,7 @@ pub fn load(path: &Path, read: ReadFile) -> Result<LoadedModel, ModelError> {
                             folders.borrow_mut().insert(m.name.clone(), mtl_folder.clone());
                         }
                     }
-                    Err(kind) => {
-                        let line = locate_mtl_error(*kind, &text).map_or(String::new(), |n| format!("line {n}: "));
-                        *mtl_error.borrow_mut() = Some(format!("{}: {line}{kind}", mtl_path.display()));
-                    }
+                    Err(kind) => *mtl_error.borrow_mut() = Some(format!("{}: {kind}", mtl_path.display())),
                 }
                 loaded
             }
@@ -250,37 +255,51 @@ pub fn normalise(path: &Path) -> PathBuf {
 }
 
 // ANCHOR: smooth
-/// Normals for a mesh that has none: each corner gets the area-weighted
-/// average of the faces around its position that meet its own face at less
-/// than `max_angle_degrees`, so curved surfaces come out smooth and sharp
-/// edges stay sharp. Corners that end up with the same normal share a vertex.
+/// Normals for a mesh that has none. Each corner gets the average of the
+/// faces around its position that meet its own face at less than
+/// `max_angle_degrees`, each face weighted by its angle at that position
+/// (Thürmer and Wüthrich 1998: a face split in two then counts the same),
+/// so curved surfaces come out smooth and sharp edges stay sharp. Corners
+/// that end up with the same normal share a vertex.
 pub fn smooth_normals(mesh: &MeshData, max_angle_degrees: f32) -> MeshData {
     let position = |i: u32| Vec3::from(mesh.vertices[i as usize].position);
-    // Per triangle: its normal scaled by twice its area.
     let faces: Vec<Vec3> = mesh
         .indices
         .chunks_exact(3)
-        .map(|t| (position(t[1]) - position(t[0])).cross(position(t[2]) - position(t[0])))
+        .map(|t| (position(t[1]) - position(t[0])).cross(position(t[2]) - position(t[0])).normalize_or_zero())
         .collect();
-    // Which triangles touch each position (by value: uv seams split
-    // vertices that should still be smoothed together).
-    let key = |p: Vec3| p.to_array().map(f32::to_bits);
-    let mut around: HashMap<[u32; 3], Vec<usize>> = HashMap::new();
+    // Each corner's angle, and which corners share a position (by value:
+    // texture seams split vertices that should still be smoothed together).
+    let angle = |corner: usize| {
+        let (t, k) = (corner / 3 * 3, corner % 3);
+        let p = |j: usize| position(mesh.indices[t + (k + j) % 3]);
+        let a = (p(1) - p(0)).angle_between(p(2) - p(0));
+        if a.is_finite() { a } else { 0.0 }
+    };
+    // Positions as keys, rounded to a millionth of the model's size: points
+    // meant to be one (at a texture seam, say) may differ in the last bits.
+    let (low, high) = mesh
+        .vertices
+        .iter()
+        .fold((Vec3::MAX, Vec3::MIN), |(lo, hi), v| (lo.min(v.position.into()), hi.max(v.position.into())));
+    let step = ((high - low).max_element() * 1e-6).max(f32::MIN_POSITIVE);
+    let key = |p: Vec3| ((p - low) / step).round().to_array().map(|c| c as i64);
+    let mut around: HashMap<[i64; 3], Vec<usize>> = HashMap::new();
     for (corner, &i) in mesh.indices.iter().enumerate() {
-        around.entry(key(position(i))).or_default().push(corner / 3);
+        around.entry(key(position(i))).or_default().push(corner);
     }
     let threshold = max_angle_degrees.to_radians().cos();
     let mut out = MeshData::default();
     let mut welded: HashMap<(u32, [u32; 3]), u32> = HashMap::new();
     for (corner, &i) in mesh.indices.iter().enumerate() {
-        let own = faces[corner / 3].normalize_or_zero();
+        let own = faces[corner / 3];
         let sum: Vec3 = around[&key(position(i))]
             .iter()
-            .map(|&f| faces[f])
-            .filter(|f| f.normalize_or_zero().dot(own) >= threshold)
+            .filter(|&&other| faces[other / 3].dot(own) >= threshold)
+            .map(|&other| faces[other / 3] * angle(other))
             .sum();
         let normal = sum.try_normalize().unwrap_or(own);
-        let index = *welded.entry((i, key(normal))).or_insert_with(|| {
+        let index = *welded.entry((i, normal.to_array().map(f32::to_bits))).or_insert_with(|| {
             out.vertices.push(Vertex { normal: normal.into(), ..mesh.vertices[i as usize] });
             out.vertices.len() as u32 - 1
         });
@@ -346,29 +365,47 @@ pub fn locate_obj_error(kind: tobj::LoadError, text: &str) -> Option<usize> {
 /// OBJ statements tobj reads or skips without complaint.
 const KNOWN: [&str; 12] = ["v", "vt", "vn", "f", "l", "p", "o", "g", "s", "mtllib", "usemtl", "vp"];
 
-/// [`locate_obj_error`] for an MTL file.
-pub fn locate_mtl_error(kind: tobj::LoadError, text: &[u8]) -> Option<usize> {
-    if kind != tobj::LoadError::MaterialParseError {
-        return None;
-    }
+/// The first line of an MTL file tobj cannot read, and why: a colour
+/// with fewer than three numbers (on which tobj panics), a number that is
+/// not one, a texture statement without a file.
+pub fn check_mtl(text: &[u8]) -> Option<(usize, String)> {
     let text = String::from_utf8_lossy(text);
     for (n, line) in text.lines().enumerate() {
         let words: Vec<&str> = line.split_whitespace().collect();
         let Some((&keyword, rest)) = words.split_first() else { continue };
-        let numbers = |count: usize| rest.len() == count && rest.iter().all(|w| w.parse::<f32>().is_ok());
-        let bad = match keyword {
-            "Ka" | "Kd" | "Ks" | "Ke" => !numbers(3),
-            "Ns" | "Ni" | "d" => rest.first().is_none_or(|w| w.parse::<f32>().is_err()),
-            "illum" => rest.first().is_none_or(|w| w.parse::<u8>().is_err()),
-            k if k.starts_with("map_") || k == "bump" => rest.is_empty(),
-            "newmtl" => rest.is_empty(),
-            _ => false,
+        let number = |w: &&str| w.parse::<f32>().is_ok();
+        let problem = match keyword {
+            "Ka" | "Kd" | "Ks" | "Ke" | "Tf" if !(rest.len() >= 3 && rest[..3].iter().all(number)) => {
+                Some(format!("{keyword} needs 3 numbers"))
+            }
+            "Ns" | "Ni" | "d" | "Tr" if !rest.first().is_some_and(number) => Some(format!("{keyword} needs a number")),
+            "illum" if rest.first().is_none_or(|w| w.parse::<u8>().is_err()) => {
+                Some("illum needs a whole number".into())
+            }
+            k if (k.starts_with("map_") || k == "bump" || k == "norm") && rest.is_empty() => {
+                Some(format!("{keyword} needs a file name"))
+            }
+            "newmtl" if rest.is_empty() => Some("newmtl needs a name".into()),
+            _ => None,
         };
-        if bad {
-            return Some(n + 1);
+        if let Some(problem) = problem {
+            return Some((n + 1, problem));
         }
     }
     None
+}
+
+/// The first face line with an index of more than nine digits: no file
+/// has that many vertices, and tobj's arithmetic on such an index overflows.
+fn oversized_index(bytes: &[u8]) -> Option<usize> {
+    bytes.split(|&b| b == b'\n').enumerate().find_map(|(n, line)| {
+        let face = line.first() == Some(&b'f') && line.get(1).is_some_and(|b| b.is_ascii_whitespace());
+        let long = || {
+            line.split(|b| b.is_ascii_whitespace() || *b == b'/')
+                .any(|w| w.iter().filter(|b| b.is_ascii_digit()).count() > 9)
+        };
+        (face && long()).then_some(n + 1)
+    })
 }
 
 #[cfg(test)]
@@ -412,6 +449,6 @@ mod tests {
                 Vec3::from(v.normal).angle_between(Vec3::from(v.position).normalize()).to_degrees()
             })
             .fold(0.0f32, f32::max);
-        assert!(worst < 4.0, "sphere normals point out from the centre to within {worst}°");
+        assert!(worst < 1.0, "sphere normals point out from the centre to within {worst}°");
     }
 }

@@ -239,3 +239,75 @@ pub fn lab_floor() -> ModelData {
     model.append(&floor, 0, Mat4::from_scale(Vec3::new(2000.0, 1.0, 2000.0)), |uv, _| uv * 250.0);
     model
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// The span of u and v over the vertices whose normal is `normal`.
+    fn spans(mesh: &MeshData, uvs: &[Vec2], model: Mat4, normal: Vec3) -> Vec2 {
+        let n_matrix = common::glam::Mat3::from_mat4(model).inverse().transpose();
+        let (lo, hi) = mesh
+            .vertices
+            .iter()
+            .zip(uvs)
+            .filter(|(v, _)| (n_matrix * Vec3::from(v.normal)).normalize().dot(normal) > 0.99)
+            .fold((Vec2::splat(f32::MAX), Vec2::splat(f32::MIN)), |(lo, hi), (_, uv)| (lo.min(*uv), hi.max(*uv)));
+        hi - lo
+    }
+
+    #[test]
+    fn a_textures_size_in_metres_is_the_same_on_any_box() {
+        let cube = primitives::cube();
+        let model = Mat4::from_scale(Vec3::new(20.0, 6.0, 0.6));
+        let uvs = world_uvs(&cube, model, Shape::Cube, 1.0);
+        assert!(spans(&cube, &uvs, model, Vec3::Z).abs_diff_eq(Vec2::new(20.0, 6.0), 1e-4));
+        assert!(spans(&cube, &uvs, model, Vec3::X).abs_diff_eq(Vec2::new(0.6, 6.0), 1e-4));
+        assert!(spans(&cube, &uvs, model, Vec3::Y).abs_diff_eq(Vec2::new(20.0, 0.6), 1e-4));
+    }
+
+    #[test]
+    fn roads_run_along_u_both_ways() {
+        let city = City::new();
+        let roads: Vec<&Piece> = city.pieces.iter().filter(|p| p.material == Material::Road).collect();
+        assert_eq!(roads.len(), 14);
+        let cube = primitives::cube();
+        for road in roads {
+            let uvs = world_uvs(&cube, road.model, Shape::Cube, 12.0);
+            let top = spans(&cube, &uvs, road.model, Vec3::Y);
+            // 372 m long, 12 m wide: 31 tiles along u, one across v.
+            assert!(top.abs_diff_eq(Vec2::new(31.0, 1.0), 1e-3), "{top}");
+        }
+    }
+
+    #[test]
+    fn round_shapes_repeat_a_whole_number_of_times_around() {
+        let cylinder = primitives::cylinder(24);
+        let model = Mat4::from_scale(Vec3::new(9.0, 12.0, 9.0));
+        let uvs = world_uvs(&cylinder, model, Shape::Cylinder, 4.0);
+        let around: f32 = cylinder
+            .vertices
+            .iter()
+            .zip(&uvs)
+            .filter(|(v, _)| v.normal[1] == 0.0)
+            .map(|(_, uv)| uv.x)
+            .fold(0.0, f32::max);
+        // A circumference of about 28 m, in 4 m tiles: 7 whole repeats.
+        assert_eq!(around, 7.0);
+    }
+
+    #[test]
+    fn the_tower_replaces_the_buildings_of_one_block_only() {
+        let city = City::new();
+        let removed: Vec<&Piece> = city.pieces.iter().filter(|p| on_tower_block(p)).collect();
+        assert!(!removed.is_empty());
+        assert!(
+            removed.iter().all(|p| matches!(
+                p.material,
+                Material::Facade | Material::Brick | Material::Concrete | Material::Metal
+            ))
+        );
+        let lamps_kept = city.pieces.iter().filter(|p| p.material == Material::Lamp).count();
+        assert_eq!(lamps_kept, 288, "every street lamp stays");
+    }
+}

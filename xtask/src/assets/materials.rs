@@ -204,8 +204,10 @@ fn facade() -> Painting {
     })
 }
 
+type Painter = fn() -> Painting;
+
 /// (folder name, painter, what it is, for the provenance table).
-const MATERIALS: [(&str, fn() -> Painting, &str); 5] = [
+const MATERIALS: [(&str, Painter, &str); 5] = [
     ("brick", brick, "running-bond brick, 4 bricks × 16 courses per tile, recessed mortar, a shade per brick"),
     (
         "concrete",

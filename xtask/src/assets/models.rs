@@ -421,22 +421,25 @@ fn boat() -> String {
         if n.length() > 1e-6 { n.normalize() } else { Vec3::new(side, 0.0, 0.0) }
     };
     obj.object("hull");
+    // Each side is a grid of points written once, its quads sharing them,
+    // as exporters write smooth surfaces.
     for side in [-1.0f32, 1.0] {
-        for s in 0..STATIONS {
-            for k in 0..AROUND {
-                let material = if k == AROUND - 1 { "stripe" } else { "hull" };
-                obj.material(material);
-                let quad = [(s, k), (s + 1, k), (s + 1, k + 1), (s, k + 1)];
-                let mut corners: Vec<Corner> = quad
-                    .iter()
-                    .map(|&(s, k)| {
-                        let t = s as f32 / STATIONS as f32;
-                        let position = obj.position(point(t, k, side));
-                        let uv = obj.uv(Vec2::new(t, k as f32 / AROUND as f32));
-                        let n = obj.normal(normal(t, k, side));
-                        Corner { position, uv: Some(uv), normal: Some(n) }
-                    })
-                    .collect();
+        let mut grid = Vec::new();
+        for s in 0..=STATIONS {
+            for k in 0..=AROUND {
+                let t = s as f32 / STATIONS as f32;
+                let position = obj.position(point(t, k, side));
+                let uv = obj.uv(Vec2::new(t, k as f32 / AROUND as f32));
+                let n = obj.normal(normal(t, k, side));
+                grid.push(Corner { position, uv: Some(uv), normal: Some(n) });
+            }
+        }
+        let at = |s: usize, k: usize| grid[s * (AROUND + 1) + k];
+        for k in 0..AROUND {
+            // The top band is the stripe.
+            obj.material(if k == AROUND - 1 { "stripe" } else { "hull" });
+            for s in 0..STATIONS {
+                let mut corners = vec![at(s, k), at(s + 1, k), at(s + 1, k + 1), at(s, k + 1)];
                 if side > 0.0 {
                     corners.reverse();
                 }
