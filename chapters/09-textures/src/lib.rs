@@ -134,7 +134,7 @@ impl Settings {
 pub fn view_camera(view: &str, aspect: f32) -> (Scene, Camera) {
     let at = |eye: Vec3, target: Vec3| Camera { near: 0.1, far: 900.0, ..Camera::looking_at(eye, target, aspect) };
     match view {
-        "car" | "wrong-colour-space" => (Scene::Stage, at(Vec3::new(-5.2, 2.4, 6.4), Vec3::new(0.0, 0.9, 0.0))),
+        "car" | "wrong-colour-space" => (Scene::Stage, at(Vec3::new(-3.3, 1.9, 4.3), Vec3::new(0.2, 0.7, 0.0))),
         // The left of the stage: the wall, the sphere, the torus and the
         // cone, in a low sun from the side.
         "normal-maps" | "no-normal-maps" | "face-tangents" => {

@@ -212,7 +212,7 @@ pub fn stage_lights() -> Vec<Light> {
 
 /// Where the featured model stands: scaled so that its bounding box's
 /// diagonal is 5 m (whatever units its file used), centred on the stage,
-/// its lowest point on the floor, and turned 150° so that the stage camera
+/// its lowest point on the floor, and turned 120° so that the stage camera
 /// sees its −z end (the car's front) from three quarters. Returns the
 /// placement and the scale.
 pub fn stage_placement(bounds: (Vec3, Vec3)) -> (Mat4, f32) {
@@ -221,7 +221,7 @@ pub fn stage_placement(bounds: (Vec3, Vec3)) -> (Mat4, f32) {
     let scale = if diagonal > 1e-6 && diagonal.is_finite() { 5.0 / diagonal } else { 1.0 };
     let centre = (low + high) / 2.0;
     let fit = Mat4::from_scale(Vec3::splat(scale)) * Mat4::from_translation(Vec3::new(-centre.x, -low.y, -centre.z));
-    (Mat4::from_rotation_y(150f32.to_radians()) * fit, scale)
+    (Mat4::from_rotation_y(120f32.to_radians()) * fit, scale)
 }
 
 /// The path of the lab's checkerboard texture (made in code, not a file).

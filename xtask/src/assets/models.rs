@@ -287,7 +287,7 @@ fn car() -> String {
     extrude_profile(&mut obj, &cabin, -0.82, 0.82, 4.0);
     obj.object("wheels");
     obj.material("tyre");
-    for (x, z) in [(-0.85, -1.40), (0.85, -1.40), (-0.85, 1.40), (0.85, 1.40)] {
+    for (x, z) in [(-0.93, -1.40), (0.93, -1.40), (-0.93, 1.40), (0.93, 1.40)] {
         wheel(&mut obj, Vec3::new(x, 0.33, z), 0.33, 0.26, 16);
     }
     obj.object("lights");
