@@ -19,14 +19,13 @@ struct Material {
 @group(1) @binding(1) var normal_map: texture_2d<f32>;
 @group(1) @binding(2) var<uniform> material: Material;
 
-// How this frame reads and shows surfaces (lib.rs: ViewOptions).
+// How this frame reads surfaces (lib.rs: ViewOptions).
 struct ViewOptions {
-    // 0: the picture, 1: tangent, bitangent and normal as colours.
-    display: u32,
-    normal_maps: u32,
     // 1: read the normal map's green as pointing down the image (DirectX).
     flip_green: u32,
+    // For the tangent frame view's thirds.
     target_width: f32,
+    padding: vec2<f32>,
 };
 @group(2) @binding(0) var surface_sampler: sampler;
 @group(2) @binding(1) var<uniform> options: ViewOptions;
@@ -111,23 +110,8 @@ fn mapped_normal(frame3: Frame3, texel: vec3<f32>) -> vec3<f32> {
 // ANCHOR_END: tbn
 
 // ANCHOR: fragment
-@fragment
-fn fs_main(in: Varyings) -> @location(0) vec4<f32> {
-    let frame3 = surface_frame(in);
-    // Sampled before any branch: texture sampling needs the neighbouring
-    // fragments (for the mip level), so it must run in all of them.
-    let albedo_texel = textureSample(albedo_map, surface_sampler, in.uv);
-    let normal_texel = textureSample(normal_map, surface_sampler, in.uv).xyz;
-    if options.display == 1u {
-        // Left third: the tangent; middle: the bitangent; right: the normal.
-        let third = u32(3.0 * in.clip_position.x / options.target_width);
-        let v = select(select(frame3.n, frame3.b, third == 1u), frame3.t, third == 0u);
-        return vec4<f32>(v * 0.5 + 0.5, 1.0);
-    }
-    var n = frame3.n;
-    if options.normal_maps == 1u && material.flags.x == 1u {
-        n = mapped_normal(frame3, normal_texel);
-    }
+// The light a surface with normal n sends to the eye, and its own glow.
+fn shade(in: Varyings, n: vec3<f32>, albedo_texel: vec4<f32>) -> vec4<f32> {
     let albedo = material.diffuse * albedo_texel.rgb;
     let lit = light_surface(in.world, n, Surface(albedo, material.specular, material.shininess));
     // An albedo map's alpha says where the material glows (lit windows).
@@ -135,4 +119,33 @@ fn fs_main(in: Varyings) -> @location(0) vec4<f32> {
     let night = select(1.0, frame.depth.w, material.flags.z == 1u);
     return vec4<f32>(lit + material.emissive * mask * night * in.glow, 1.0);
 }
+
+// With normal maps. The material decides whether it has one: a uniform,
+// so every fragment of a draw takes the same branch, and sampling inside
+// it is allowed (sampling needs its neighbours, for the mip level).
+@fragment
+fn fs_normal_mapped(in: Varyings) -> @location(0) vec4<f32> {
+    let frame3 = surface_frame(in);
+    var n = frame3.n;
+    if material.flags.x == 1u {
+        n = mapped_normal(frame3, textureSample(normal_map, surface_sampler, in.uv).xyz);
+    }
+    return shade(in, n, textureSample(albedo_map, surface_sampler, in.uv));
+}
+
+// Without: the interpolated normal, and no normal map read at all.
+@fragment
+fn fs_plain(in: Varyings) -> @location(0) vec4<f32> {
+    return shade(in, normalize(in.normal), textureSample(albedo_map, surface_sampler, in.uv));
+}
 // ANCHOR_END: fragment
+
+// The tangent frame as colours: the left third of the picture shows the
+// tangent, the middle the bitangent, the right the normal.
+@fragment
+fn fs_frame(in: Varyings) -> @location(0) vec4<f32> {
+    let frame3 = surface_frame(in);
+    let third = u32(3.0 * in.clip_position.x / options.target_width);
+    let v = select(select(frame3.n, frame3.b, third == 1u), frame3.t, third == 0u);
+    return vec4<f32>(v * 0.5 + 0.5, 1.0);
+}

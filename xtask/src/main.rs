@@ -119,7 +119,9 @@ fn extra_bench_runs(chapter: &str) -> anyhow::Result<Vec<(String, Vec<String>)>>
     std::fs::create_dir_all(million.parent().expect("a folder"))?;
     assets::models::million_triangles(&million)?;
     let boat = root().join("assets/models/boat/boat.obj");
-    let run = |model: &Path| vec!["--view".into(), "car".into(), "--model".into(), model.display().to_string()];
+    // Paths relative to the repository (where the runs start), for the book.
+    let relative = |path: &Path| path.strip_prefix(root()).unwrap_or(path).display().to_string();
+    let run = |model: &Path| vec!["--view".into(), "car".into(), "--model".into(), relative(model)];
     Ok(vec![
         ("The largest of the project's models, the boat".into(), run(&boat)),
         ("A sphere of 1,002,528 triangles written by the bench".into(), run(&million)),
@@ -184,6 +186,7 @@ fn bench(args: &[String]) -> anyhow::Result<()> {
             let command = format!("{chapter} --bench {}", args.join(" "));
             println!("\n$ {command}");
             let output = Command::new(&binary)
+                .current_dir(root())
                 .args(["--bench", "--size", "1280x720"])
                 .args(&args)
                 .envs(quiet_env())

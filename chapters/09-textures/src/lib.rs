@@ -94,7 +94,9 @@ impl Settings {
     pub fn for_view(name: &str) -> Self {
         let mut s = Self {
             time_of_day: TimeOfDay::Noon,
-            sampler: SamplerMode::Anisotropic,
+            // Trilinear: anisotropic filtering is sharper, and ten times
+            // dearer on a software rasteriser (see the bench).
+            sampler: SamplerMode::Mipmaps,
             normal_maps: true,
             flip_green: false,
             tangents: Tangents::PerVertex,
@@ -158,10 +160,9 @@ pub fn view_camera(view: &str, aspect: f32) -> (Scene, Camera) {
 #[repr(C)]
 #[derive(Clone, Copy, bytemuck::Pod, bytemuck::Zeroable)]
 struct ViewOptions {
-    display: u32,
-    normal_maps: u32,
     flip_green: u32,
     target_width: f32,
+    _padding: [f32; 2],
 }
 // ANCHOR_END: view_options
 
@@ -172,12 +173,20 @@ struct ViewOptions {
 /// the materials; chapter 11 draws its boat with it.
 pub struct TexturedRenderer {
     pipeline_layout: wgpu::PipelineLayout,
-    pipeline: wgpu::RenderPipeline,
+    pipelines: Pipelines,
     options: wgpu::Buffer,
     /// One group per sampler mode, in `SamplerMode::ALL`'s order.
     sampler_groups: Vec<wgpu::BindGroup>,
     /// Whether the adapter filters anisotropically.
     pub anisotropy: bool,
+}
+
+/// The fragment shaders: with normal maps, without (no normal map read at
+/// all, so the bench sees what they cost), and the tangent frame view.
+struct Pipelines {
+    normal_mapped: wgpu::RenderPipeline,
+    plain: wgpu::RenderPipeline,
+    frame: wgpu::RenderPipeline,
 }
 
 /// One model drawn with a range of this frame's instances.
@@ -236,15 +245,15 @@ impl TexturedRenderer {
             bind_group_layouts: &[Some(&lights.layout), Some(&materials.layout), Some(&layout)],
             immediate_size: 0,
         });
-        let pipeline = Self::pipeline(gpu, &pipeline_layout)?;
-        Ok(Self { pipeline_layout, pipeline, options, sampler_groups, anisotropy })
+        let pipelines = Self::pipelines(gpu, &pipeline_layout)?;
+        Ok(Self { pipeline_layout, pipelines, options, sampler_groups, anisotropy })
     }
 
-    fn pipeline(gpu: &Gpu, layout: &wgpu::PipelineLayout) -> Result<wgpu::RenderPipeline, ShaderError> {
+    fn pipelines(gpu: &Gpu, layout: &wgpu::PipelineLayout) -> Result<Pipelines, ShaderError> {
         let module = shader!("textures/textured.wgsl", imports: ["lighting/lights.wgsl"]).module(&gpu.device)?;
-        gpu.catch_validation(|| {
+        let pipeline = |fragment: &str| {
             gpu.device.create_render_pipeline(&wgpu::RenderPipelineDescriptor {
-                label: Some("textured"),
+                label: Some(fragment),
                 layout: Some(layout),
                 vertex: wgpu::VertexState {
                     module: &module,
@@ -257,19 +266,24 @@ impl TexturedRenderer {
                 multisample: Default::default(),
                 fragment: Some(wgpu::FragmentState {
                     module: &module,
-                    entry_point: Some("fs_main"),
+                    entry_point: Some(fragment),
                     targets: &[Some(HDR_FORMAT.into())],
                     compilation_options: Default::default(),
                 }),
                 multiview_mask: None,
                 cache: None,
             })
+        };
+        gpu.catch_validation(|| Pipelines {
+            normal_mapped: pipeline("fs_normal_mapped"),
+            plain: pipeline("fs_plain"),
+            frame: pipeline("fs_frame"),
         })
         .map_err(ShaderError)
     }
 
     pub fn reload_shaders(&mut self, gpu: &Gpu) -> Result<(), ShaderError> {
-        self.pipeline = Self::pipeline(gpu, &self.pipeline_layout)?;
+        self.pipelines = Self::pipelines(gpu, &self.pipeline_layout)?;
         Ok(())
     }
 
@@ -284,14 +298,17 @@ impl TexturedRenderer {
         list: &DrawList,
     ) {
         let options = ViewOptions {
-            display: u32::from(settings.show_frame),
-            normal_maps: u32::from(settings.normal_maps),
             flip_green: u32::from(settings.flip_green),
             target_width: target_width as f32,
+            _padding: [0.0; 2],
         };
         gpu.queue.write_buffer(&self.options, 0, bytemuck::bytes_of(&options));
         let mode = SamplerMode::ALL.iter().position(|m| *m == settings.sampler).unwrap_or(0);
-        pass.set_pipeline(&self.pipeline);
+        pass.set_pipeline(match (settings.show_frame, settings.normal_maps) {
+            (true, _) => &self.pipelines.frame,
+            (false, true) => &self.pipelines.normal_mapped,
+            (false, false) => &self.pipelines.plain,
+        });
         pass.set_bind_group(2, &self.sampler_groups[mode], &[]);
         pass.set_vertex_buffer(1, list.instances.slice(..));
         for draw in &list.draws {
