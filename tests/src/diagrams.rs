@@ -711,17 +711,22 @@ fn tangent_from_uvs() -> String {
     svg.finish()
 }
 
+/// Texels of the lab's checker per metre of its floor: the floor's
+/// repeats times the texture's width, over the floor's width.
+fn lab_texels_per_metre() -> f32 {
+    let floor = textures::scenes::lab_floor();
+    let (low, high) = floor.bounds();
+    let repeats = floor.vertices.iter().map(|v| v.uv[0]).fold(0.0f32, f32::max);
+    textures::materials::checkerboard().width() as f32 * repeats / (high.x - low.x)
+}
+
 /// The sampling lab's floor as its camera sees it: texels per pixel, along
 /// the view and across it, against distance. The mip level a sampler picks
 /// is the log₂ of that (of the larger, unless it filters anisotropically).
 /// From the lab's camera and floor (`textures::view_camera`, `lab_floor`).
 fn texel_footprint() -> String {
     let (_, camera) = textures::view_camera("mipmaps", 16.0 / 9.0);
-    let floor = textures::scenes::lab_floor();
-    // Metres of floor per texture repeat: the floor's width over its repeats.
-    let (low, high) = floor.bounds();
-    let repeats = floor.vertices.iter().map(|v| v.uv[0]).fold(0.0f32, f32::max);
-    let texels_per_metre = 256.0 * repeats / (high.x - low.x);
+    let texels_per_metre = lab_texels_per_metre();
     let (height, rows, columns) = (camera.position.y, 720.0, 1280.0);
     let per_pixel = camera.fov_y / rows;
     let tan_x = (camera.fov_y / 2.0).tan() * 16.0 / 9.0;
@@ -731,7 +736,13 @@ fn texel_footprint() -> String {
     let across = |d: f32| texels_per_metre * (d * d + height * height).sqrt() * 2.0 * tan_x / columns;
     let mut svg = Svg::new(640.0, 330.0);
     let axes = Axes { origin: Vec2::new(70.0, 40.0), size: Vec2::new(520.0, 220.0), x: (0.0, 100.0), y: (-3.0, 9.0) };
-    axes.draw(&mut svg, &[0.0, 25.0, 50.0, 75.0, 100.0], &[], "distance along the floor (m)", "texels per pixel (log₂: the mip level)");
+    axes.draw(
+        &mut svg,
+        &[0.0, 25.0, 50.0, 75.0, 100.0],
+        &[],
+        "distance along the floor (m)",
+        "texels per pixel (log₂: the mip level)",
+    );
     for level in (-3..=9).step_by(3) {
         let p = axes.at(0.0, level as f32);
         svg.line(p, p - Vec2::new(5.0, 0.0), INK, 1.0);
@@ -739,7 +750,13 @@ fn texel_footprint() -> String {
         svg.text(p + Vec2::new(-8.0, 4.0), &label, 11.0, "end", INK);
     }
     svg.dashed(axes.at(0.0, 0.0), axes.at(100.0, 0.0), MUTED);
-    svg.text(axes.at(60.0, 0.0) + Vec2::new(0.0, 14.0), "one texel per pixel: finer detail than this aliases", 10.0, "start", MUTED);
+    svg.text(
+        axes.at(60.0, 0.0) + Vec2::new(0.0, 14.0),
+        "one texel per pixel: finer detail than this aliases",
+        10.0,
+        "start",
+        MUTED,
+    );
     axes.curve(&mut svg, |d| along(d.max(0.1)).log2(), ACCENT, 2.2);
     axes.curve(&mut svg, |d| across(d.max(0.1)).log2(), BLUE, 2.2);
     svg.text(axes.at(12.0, along(25.0).log2() + 1.0), "along the view", 11.0, "start", ACCENT);
@@ -755,9 +772,15 @@ fn footprints() -> String {
     let height = camera.position.y;
     let per_pixel = camera.fov_y / 720.0;
     let tan_x = (camera.fov_y / 2.0).tan() * 16.0 / 9.0;
-    let texels_per_metre = 32.0;
+    let texels_per_metre = lab_texels_per_metre();
     let mut svg = Svg::new(640.0, 285.0);
-    svg.text(Vec2::new(20.0, 24.0), "one pixel's footprint on the floor, in texels (the grid is one texel)", 11.0, "start", INK);
+    svg.text(
+        Vec2::new(20.0, 24.0),
+        "one pixel's footprint on the floor, in texels (the grid is one texel)",
+        11.0,
+        "start",
+        INK,
+    );
     for (i, d) in [5.0f32, 10.0, 20.0].iter().enumerate() {
         let along = texels_per_metre * (d * d + height * height) / height * per_pixel;
         let across = texels_per_metre * (d * d + height * height).sqrt() * 2.0 * tan_x / 1280.0;
@@ -774,7 +797,13 @@ fn footprints() -> String {
         svg.rect(centre.x - w / 2.0, centre.y - h.min(160.0) / 2.0, w, h.min(160.0), "#f3d9bf", ACCENT);
         svg.text(centre + Vec2::new(0.0, 100.0), &format!("{d} m: {across:.2} × {along:.2}"), 11.0, "middle", INK);
     }
-    svg.text(Vec2::new(20.0, 272.0), "filled: the footprint (across × along the view); grey: the square a trilinear sampler averages over", 10.0, "start", MUTED);
+    svg.text(
+        Vec2::new(20.0, 272.0),
+        "filled: the footprint (across × along the view); grey: the square a trilinear sampler averages over",
+        10.0,
+        "start",
+        MUTED,
+    );
     svg.finish()
 }
 

@@ -90,9 +90,18 @@ impl<'a> Uploader<'a> {
         Self { gpu, mips, encoder, read }
     }
 
-    /// Submits the recorded mip passes.
-    pub fn finish(self) {
-        self.gpu.queue.submit([self.encoder.finish()]);
+    /// Submits the recorded mip passes and waits for them. Returns how long
+    /// the passes alone took, in milliseconds: the texture uploads are
+    /// flushed and waited for first, so they are not counted.
+    pub fn finish(self) -> f64 {
+        let (queue, device) = (&self.gpu.queue, &self.gpu.device);
+        queue.submit([]);
+        let _ = device.poll(wgpu::PollType::wait_indefinitely());
+        let ((), ms) = common::timing::measure(|| {
+            queue.submit([self.encoder.finish()]);
+            let _ = device.poll(wgpu::PollType::wait_indefinitely());
+        });
+        ms
     }
 }
 
