@@ -1,0 +1,3 @@
+//! Chapter 10: shadows.
+
+pub mod physics;
