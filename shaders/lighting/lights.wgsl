@@ -127,9 +127,15 @@ fn lights_at(world: vec3<f32>) -> vec3<u32> {
 // flat, Gouraud and Phong shading all call; only where it is called from
 // differs.
 fn light_surface(world: vec3<f32>, n: vec3<f32>, surface: Surface) -> vec3<f32> {
+    return light_surface_sunlit(world, n, surface, 1.0);
+}
+
+// The same, with only `sunlit` of the sun's light arriving (0 in shadow,
+// 1 in full sun): chapter 10 passes what its shadow map says.
+fn light_surface_sunlit(world: vec3<f32>, n: vec3<f32>, surface: Surface, sunlit: f32) -> vec3<f32> {
     let v = normalize(frame.eye.xyz - world);
     var colour = surface.albedo * frame.ambient.rgb;
-    colour += reflected(surface, n, v, frame.sun_direction.xyz, frame.sun_colour.rgb);
+    colour += reflected(surface, n, v, frame.sun_direction.xyz, frame.sun_colour.rgb * sunlit);
     let list = lights_at(world);
     for (var k = 0u; k < list.y; k++) {
         var i = k;

@@ -252,7 +252,8 @@ impl TexturedRenderer {
     }
 
     fn pipelines(gpu: &Gpu, layout: &wgpu::PipelineLayout) -> Result<Pipelines, ShaderError> {
-        let module = shader!("textures/textured.wgsl", imports: ["lighting/lights.wgsl"]).module(&gpu.device)?;
+        let module = shader!("textures/textured.wgsl", imports: ["lighting/lights.wgsl", "textures/surface.wgsl"])
+            .module(&gpu.device)?;
         let pipeline = |fragment: &str| {
             gpu.device.create_render_pipeline(&wgpu::RenderPipelineDescriptor {
                 label: Some(fragment),
