@@ -6,6 +6,7 @@ use std::path::Path;
 
 use anyhow::Context as _;
 
+mod layers;
 mod materials;
 pub mod models;
 
@@ -213,7 +214,13 @@ fn paint_all(root: &Path) -> anyhow::Result<()> {
     paint_water(&root.join("water"))?;
     materials::paint(&root.join("textures"))?;
     models::write(&root.join("models"))?;
-    let readme = format!("{PROVENANCE}{}{}{PROVENANCE_NOTES}", materials::provenance(), models::provenance());
+    layers::paint(&root.join("layers"))?;
+    let readme = format!(
+        "{PROVENANCE}{}{}{}{PROVENANCE_NOTES}",
+        materials::provenance(),
+        models::provenance(),
+        layers::provenance()
+    );
     std::fs::write(root.join("README.md"), readme)?;
     println!("wrote {}", root.join("README.md").display());
     Ok(())
@@ -253,8 +260,8 @@ mod tests {
         }
         std::fs::remove_dir_all(fresh).unwrap();
         assert_eq!(
-            checked, 31,
-            "12 cube faces, 2 water maps, 5 × 2 city textures, 3 models with their MTL, and the README"
+            checked, 44,
+            "12 cube faces, 2 water maps, 6 × 2 textures, 7 models with their MTL, 3 parallax layers, and the README"
         );
     }
 }

@@ -204,10 +204,50 @@ fn facade() -> Painting {
     })
 }
 
+/// A wooden crate's side, one tile per 1 m face: a frame of boards round
+/// the edge, horizontal boards inside, and a diagonal brace; grain along
+/// each board, dark gaps between them.
+fn wood() -> Painting {
+    let border = 28.0;
+    Painting::new(5.0, move |x, y| {
+        let (fx, fy) = (x as f32 + 0.5, y as f32 + 0.5);
+        let size = SIZE as f32;
+        let to_edge = fx.min(size - fx).min(fy).min(size - fy);
+        let in_frame = to_edge < border;
+        // The brace runs from the lower left to the upper right, 30 texels wide.
+        let brace = ((fx - (size - fy)).abs() / std::f32::consts::SQRT_2) < 15.0 && !in_frame;
+        let board_width = (size - 2.0 * border) / 4.0;
+        // Distance to the nearest gap, and which board, for each part.
+        let (gap, board, along) = if in_frame {
+            let horizontal = fy.min(size - fy) < border && to_edge == fy.min(size - fy);
+            let across = if horizontal { fy.min(size - fy) } else { fx.min(size - fx) };
+            let id = if horizontal { u32::from(fy > size / 2.0) } else { 2 + u32::from(fx > size / 2.0) };
+            (across.min(border - across), id, if horizontal { fx } else { fy })
+        } else if brace {
+            let across = (fx - (size - fy)) / std::f32::consts::SQRT_2 + 15.0;
+            (across.min(30.0 - across), 9, (fx + (size - fy)) / std::f32::consts::SQRT_2)
+        } else {
+            let within = (fy - border).rem_euclid(board_width);
+            (within.min(board_width - within), 4 + ((fy - border) / board_width) as u32, fx)
+        };
+        let (u, v) = (x as f32 / size, y as f32 / size);
+        // Grain: noise stretched along the board, offset per board.
+        let grain = tileable_noise2(along / size * 4.0, board as f32 * 2.0 + 0.5, (4, 64), 61) * 0.5
+            + tileable_noise2(along / size * 32.0, board as f32 * 5.0 + 0.5, (32, 64), 62) * 0.5;
+        let shade = 0.8 + 0.35 * hash(board.wrapping_mul(2_246_822_519) ^ 0x33);
+        let dirt = tileable_fbm(u, v, 63);
+        let timber = scale(mix(srgb([168, 124, 78]), srgb([126, 88, 52]), grain), shade * (0.85 + 0.25 * dirt));
+        let seam = 1.0 - smoothstep(0.5, 2.0, gap);
+        let colour = scale(timber, 1.0 - 0.7 * seam);
+        let raised = if in_frame || brace { 0.5 } else { 0.0 };
+        (colour, 0.0, raised + 0.15 * grain - seam)
+    })
+}
+
 type Painter = fn() -> Painting;
 
 /// (folder name, painter, what it is, for the provenance table).
-const MATERIALS: [(&str, Painter, &str); 5] = [
+const MATERIALS: [(&str, Painter, &str); 6] = [
     ("brick", brick, "running-bond brick, 4 bricks × 16 courses per tile, recessed mortar, a shade per brick"),
     (
         "concrete",
@@ -224,6 +264,11 @@ const MATERIALS: [(&str, Painter, &str); 5] = [
         "facade",
         facade,
         "office facade, 4 × 4 windows in metal frames; alpha marks the windows lit at night (a hash per window)",
+    ),
+    (
+        "wood",
+        wood,
+        "a crate's side (chapter 10): a frame of boards, four boards inside and a diagonal brace, grain along each",
     ),
 ];
 

@@ -1,6 +1,7 @@
-//! Models for chapters 09 and 11, written as Wavefront OBJ with MTL
+//! Models for chapters 09 to 11, written as Wavefront OBJ with MTL
 //! materials: a car with body, glass, tyres and lights; a stepped office
-//! tower; the boat that chapter 11 sails. Built from code like everything
+//! tower; the boat that chapter 11 sails; chapter 10's tree, rock, crate
+//! and player. Built from code like everything
 //! under `assets/`, and written the way exporters write them: several
 //! objects, quads and n-gons, some faces with relative (negative) indices.
 //!
@@ -470,8 +471,202 @@ fn boat() -> String {
     obj.obj
 }
 
+/// A surface of revolution about the vertical line through `centre`:
+/// `profile` is (radius, height) from bottom to top. Smooth normals from the
+/// profile's slope; u around, v up, one repeat around.
+fn lathe(obj: &mut ObjWriter, centre: Vec3, profile: &[Vec2], segments: usize) {
+    let count = profile.len();
+    let slope_normal = |i: usize| {
+        let before = profile[i.saturating_sub(1)];
+        let after = profile[(i + 1).min(count - 1)];
+        let d = after - before;
+        Vec2::new(d.y, -d.x).normalize() // outward: (dr, dy) turned clockwise
+    };
+    let mut grid = Vec::new();
+    for k in 0..=segments {
+        let angle = std::f32::consts::TAU * k as f32 / segments as f32;
+        let (sin, cos) = angle.sin_cos();
+        for (i, p) in profile.iter().enumerate() {
+            let n = slope_normal(i);
+            let position = obj.position(centre + Vec3::new(p.x * cos, p.y, -p.x * sin));
+            let uv = obj.uv(Vec2::new(k as f32 / segments as f32, i as f32 / (count - 1) as f32));
+            let normal = obj.normal(Vec3::new(n.x * cos, n.y, -n.x * sin));
+            grid.push(Corner { position, uv: Some(uv), normal: Some(normal) });
+        }
+    }
+    let at = |k: usize, i: usize| grid[k * count + i];
+    for k in 0..segments {
+        for i in 0..count - 1 {
+            obj.face(&[at(k, i), at(k + 1, i), at(k + 1, i + 1), at(k, i + 1)], false);
+        }
+    }
+}
+
+const TREE_MTL: &str = "\
+# A tree's materials (chapter 10).
+newmtl bark
+Kd 0.300 0.190 0.110
+Ks 0.050 0.050 0.050
+Ns 8
+
+newmtl leaves
+Kd 0.120 0.330 0.120
+Ks 0.080 0.080 0.080
+Ns 12
+";
+
+/// A conifer 4.5 m tall: a trunk and three tiers of foliage, each a
+/// surface of revolution.
+fn tree() -> String {
+    let mut obj = ObjWriter::new("A tree for chapter 10, written by `cargo xtask assets`.", Some("tree.mtl"));
+    obj.object("trunk");
+    obj.material("bark");
+    let trunk = [Vec2::new(0.2, 0.0), Vec2::new(0.16, 1.2), Vec2::new(0.12, 2.4)];
+    lathe(&mut obj, Vec3::ZERO, &trunk, 10);
+    obj.object("foliage");
+    obj.material("leaves");
+    for (base, width, height) in [(0.9, 1.5, 1.8), (1.9, 1.2, 1.6), (2.8, 0.85, 1.7)] {
+        // A cone with a turned-under rim, so that it has a lower side.
+        let tier = [
+            Vec2::new(0.05, base + 0.2),
+            Vec2::new(width, base),
+            Vec2::new(width * 0.55, base + height * 0.45),
+            Vec2::new(0.02, base + height),
+        ];
+        lathe(&mut obj, Vec3::ZERO, &tier, 12);
+    }
+    obj.obj
+}
+
+const ROCK_MTL: &str = "\
+# A rock's material (chapter 10): concrete's texture, tinted.
+newmtl stone
+Kd 0.640 0.610 0.570
+Ks 0.050 0.050 0.050
+Ns 8
+map_Kd ../../textures/concrete/albedo.png
+map_Bump ../../textures/concrete/normal.png
+";
+
+/// A boulder about 1.6 m across: a sphere pushed in and out by noise,
+/// flattened underneath, normals averaged from its faces.
+fn rock() -> String {
+    let mut obj = ObjWriter::new("A rock for chapter 10, written by `cargo xtask assets`.", Some("rock.mtl"));
+    const AROUND: usize = 14;
+    const UP: usize = 8;
+    let point = |k: usize, j: usize| {
+        let (theta, phi) =
+            (std::f32::consts::TAU * (k % AROUND) as f32 / AROUND as f32, std::f32::consts::PI * j as f32 / UP as f32);
+        let d = Vec3::new(phi.sin() * theta.cos(), -phi.cos(), -phi.sin() * theta.sin());
+        let bump = super::value_noise([d.x * 1.7 + 3.0, d.y * 1.7, d.z * 1.7]) * 0.35
+            + super::value_noise([d.x * 4.0, d.y * 4.0 + 7.0, d.z * 4.0]) * 0.12;
+        let p = d * Vec3::new(0.95, 0.6, 0.75) * (0.8 + bump);
+        Vec3::new(p.x, p.y.max(-0.3) + 0.3, p.z)
+    };
+    // Normals: each vertex averages the normals of the quads around it.
+    let quad_normal = |k: usize, j: usize| {
+        let (a, b, c, d) = (point(k, j), point(k + 1, j), point(k + 1, j + 1), point(k, j + 1));
+        (c - a).cross(d - b)
+    };
+    obj.object("rock");
+    obj.material("stone");
+    let mut grid = Vec::new();
+    for k in 0..=AROUND {
+        for j in 0..=UP {
+            // The quads left and right (wrapping round), below and above.
+            let mut n = Vec3::ZERO;
+            for qk in [(k + AROUND - 1) % AROUND, k % AROUND] {
+                for qj in [j.checked_sub(1), (j < UP).then_some(j)].into_iter().flatten() {
+                    n += quad_normal(qk, qj);
+                }
+            }
+            let position = obj.position(point(k, j));
+            let uv = obj.uv(Vec2::new(k as f32 / AROUND as f32 * 2.0, j as f32 / UP as f32));
+            let normal =
+                obj.normal(if n.length() > 1e-6 { n } else { Vec3::new(0.0, if j == 0 { -1.0 } else { 1.0 }, 0.0) });
+            grid.push(Corner { position, uv: Some(uv), normal: Some(normal) });
+        }
+    }
+    let at = |k: usize, j: usize| grid[k * (UP + 1) + j];
+    for k in 0..AROUND {
+        for j in 0..UP {
+            obj.face(&[at(k, j), at(k + 1, j), at(k + 1, j + 1), at(k, j + 1)], false);
+        }
+    }
+    obj.obj
+}
+
+const CRATE_MTL: &str = "\
+# A crate's material (chapter 10).
+newmtl wood
+Kd 1.000 1.000 1.000
+Ks 0.100 0.100 0.100
+Ns 10
+map_Kd ../../textures/wood/albedo.png
+map_Bump ../../textures/wood/normal.png
+";
+
+/// A wooden crate, 1 m on a side, standing on y = 0.
+fn crate_model() -> String {
+    let mut obj = ObjWriter::new("A crate for chapter 10, written by `cargo xtask assets`.", Some("crate.mtl"));
+    obj.object("crate");
+    obj.material("wood");
+    obj.cuboid(Vec3::new(-0.5, 0.0, -0.5), Vec3::new(0.5, 1.0, 0.5), 1.0);
+    obj.obj
+}
+
+const ROBOT_MTL: &str = "\
+# The player's materials (chapter 10).
+newmtl suit
+Kd 0.900 0.420 0.120
+Ks 0.300 0.300 0.300
+Ns 32
+map_Kd ../../textures/metal/albedo.png
+map_Bump ../../textures/metal/normal.png
+
+newmtl joints
+Kd 0.060 0.060 0.070
+Ks 0.120 0.120 0.120
+Ns 16
+
+newmtl visor
+Kd 0.020 0.060 0.080
+Ks 0.900 0.900 0.900
+Ns 96
+Ke 0.300 2.400 3.000
+";
+
+/// The player: a small robot 1.7 m tall, facing +x, feet on y = 0.
+fn robot() -> String {
+    let mut obj = ObjWriter::new("The player for chapter 10, written by `cargo xtask assets`.", Some("robot.mtl"));
+    let b = |x0: f32, y0: f32, z0: f32, x1: f32, y1: f32, z1: f32| (Vec3::new(x0, y0, z0), Vec3::new(x1, y1, z1));
+    obj.object("legs");
+    obj.material("joints");
+    for z in [-0.16f32, 0.16] {
+        let (low, high) = b(-0.1, 0.0, z - 0.08, 0.1, 0.7, z + 0.08);
+        obj.cuboid(low, high, 0.5);
+    }
+    obj.object("body");
+    obj.material("suit");
+    let (low, high) = b(-0.22, 0.65, -0.3, 0.22, 1.3, 0.3);
+    obj.cuboid(low, high, 0.5);
+    let (low, high) = b(-0.2, 1.32, -0.2, 0.2, 1.7, 0.2);
+    obj.cuboid(low, high, 0.5);
+    obj.object("arms");
+    obj.material("joints");
+    for z in [-0.38f32, 0.38] {
+        let (low, high) = b(-0.07, 0.7, z - 0.07, 0.07, 1.25, z + 0.07);
+        obj.cuboid(low, high, 0.5);
+    }
+    obj.object("visor");
+    obj.material("visor");
+    let (low, high) = b(0.2, 1.45, -0.15, 0.24, 1.6, 0.15);
+    obj.cuboid(low, high, 0.5);
+    obj.obj
+}
+
 /// (folder, file stem, OBJ text, MTL text, what it is).
-fn models() -> [(&'static str, String, &'static str, &'static str); 3] {
+fn models() -> [(&'static str, String, &'static str, &'static str); 7] {
     [
         (
             "car",
@@ -490,6 +685,25 @@ fn models() -> [(&'static str, String, &'static str, &'static str); 3] {
             boat(),
             BOAT_MTL,
             "the boat chapter 11 sails, 8 m: a hull lofted through 17 cross-sections, a stripe, an n-gon deck and transom, cabin and mast",
+        ),
+        (
+            "tree",
+            tree(),
+            TREE_MTL,
+            "a conifer, 4.5 m (chapter 10): a trunk and three tiers of foliage, surfaces of revolution",
+        ),
+        (
+            "rock",
+            rock(),
+            ROCK_MTL,
+            "a boulder, 1.6 m (chapter 10): a sphere displaced by value noise, concrete's texture tinted",
+        ),
+        ("crate", crate_model(), CRATE_MTL, "a wooden crate, 1 m (chapter 10)"),
+        (
+            "robot",
+            robot(),
+            ROBOT_MTL,
+            "the player, a robot 1.7 m tall facing +x (chapter 10): legs, body, head, arms and a glowing visor",
         ),
     ]
 }
