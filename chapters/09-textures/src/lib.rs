@@ -94,8 +94,8 @@ impl Settings {
     pub fn for_view(name: &str) -> Self {
         let mut s = Self {
             time_of_day: TimeOfDay::Noon,
-            // Trilinear: anisotropic filtering is sharper, and ten times
-            // dearer on a software rasteriser (see the bench).
+            // Trilinear: anisotropic filtering is sharper, and about twenty
+            // times dearer on a software rasteriser (see the bench).
             sampler: SamplerMode::Mipmaps,
             normal_maps: true,
             flip_green: false,
@@ -797,7 +797,7 @@ impl Chapter for TexturesChapter {
         let TextureReport { materials, texels, load_ms, mip_ms } = self.texture_report;
         let f = &self.featured;
         let load = match (f.load_ms, f.peak_memory) {
-            (Some(ms), Some(bytes)) => format!(", loaded in {ms:.0} ms, peak memory {} MB", bytes / (1 << 20)),
+            (Some(ms), Some(bytes)) => format!(", loaded in {ms:.0} ms, peak memory {} MiB", bytes / (1 << 20)),
             (Some(ms), None) => format!(", loaded in {ms:.0} ms"),
             _ => String::new(),
         };

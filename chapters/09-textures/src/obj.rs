@@ -54,8 +54,8 @@ pub fn default_material() -> MaterialDesc {
 /// Loads `path` and the MTL files it names, reading through `read`.
 pub fn load(path: &Path, read: ReadFile) -> Result<LoadedModel, ModelError> {
     let bytes = read(path).map_err(|e| ModelError(e.to_string()))?;
-    if let Some(line) = oversized_index(&bytes) {
-        return Err(ModelError(format!("{}: line {line}: index out of range", path.display())));
+    if let Some((line, what)) = bad_face_index(&bytes) {
+        return Err(ModelError(format!("{}: line {line}: {what}", path.display())));
     }
     let folder = path.parent().unwrap_or(Path::new(""));
     let options = tobj::LoadOptions {
@@ -127,8 +127,11 @@ pub fn load(path: &Path, read: ReadFile) -> Result<LoadedModel, ModelError> {
         if mesh.indices.is_empty() {
             continue;
         }
-        let has_normals = !mesh.normals.is_empty();
-        let has_uvs = !mesh.texcoords.is_empty();
+        // Faces that give normals (or uvs) mixed with faces that don't
+        // leave tobj's lists short: then the mesh counts as having none.
+        let vertex_count = mesh.positions.len() / 3;
+        let has_normals = mesh.normals.len() == 3 * vertex_count;
+        let has_uvs = mesh.texcoords.len() == 2 * vertex_count;
         without_normals += usize::from(!has_normals);
         without_uvs += usize::from(!has_uvs);
         let mut data = MeshData {
@@ -395,17 +398,42 @@ pub fn check_mtl(text: &[u8]) -> Option<(usize, String)> {
     None
 }
 
-/// The first face line with an index of more than nine digits: no file
-/// has that many vertices, and tobj's arithmetic on such an index overflows.
-fn oversized_index(bytes: &[u8]) -> Option<usize> {
-    bytes.split(|&b| b == b'\n').enumerate().find_map(|(n, line)| {
-        let face = line.first() == Some(&b'f') && line.get(1).is_some_and(|b| b.is_ascii_whitespace());
-        let long = || {
-            line.split(|b| b.is_ascii_whitespace() || *b == b'/')
-                .any(|w| w.iter().filter(|b| b.is_ascii_digit()).count() > 9)
-        };
-        (face && long()).then_some(n + 1)
-    })
+/// The first face line with an index tobj cannot take, and why. tobj
+/// turns an index of 0, or a relative one reaching before the first
+/// element, into a huge number, and its arithmetic on a texture coordinate
+/// or normal index that large overflows (a panic in debug builds); no file
+/// has a billion vertices, so longer indices are refused too.
+fn bad_face_index(bytes: &[u8]) -> Option<(usize, String)> {
+    // Positions, texture coordinates and normals read so far.
+    let mut counts = [0i64; 3];
+    for (n, line) in bytes.split(|&b| b == b'\n').enumerate() {
+        let line = String::from_utf8_lossy(line);
+        let mut words = line.split_whitespace();
+        match words.next() {
+            Some("v") => counts[0] += 1,
+            Some("vt") => counts[1] += 1,
+            Some("vn") => counts[2] += 1,
+            Some("f") => {
+                for corner in words {
+                    for (kind, index) in corner.split('/').enumerate().take(3) {
+                        if index.chars().filter(char::is_ascii_digit).count() > 9 {
+                            return Some((n + 1, "index out of range".into()));
+                        }
+                        let Ok(index) = index.parse::<i64>() else { continue };
+                        if index == 0 {
+                            return Some((n + 1, "index 0 (OBJ counts from 1)".into()));
+                        }
+                        if index < 0 && -index > counts[kind] {
+                            let what = ["position", "texture coordinate", "normal"][kind];
+                            return Some((n + 1, format!("relative index {index} reaches before the first {what}")));
+                        }
+                    }
+                }
+            }
+            _ => {}
+        }
+    }
+    None
 }
 
 #[cfg(test)]

@@ -105,8 +105,15 @@ fn broken_files_name_the_file_and_the_line() {
         ("position", "v 0 0 0\nv 1 0 0\nv 1 oops 0\nf 1 2 3\n", "line 3: position parse error"),
         ("face", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 9\n", "line 4:"),
         ("normal", "v 0 0 0\nvn 0 1\nf 1 1 1\n", "line 2: normal parse error"),
-        // An index too large for any file: tobj would overflow on it.
+        // Indices tobj would turn into huge numbers and overflow on.
         ("huge", "v 0 0 0\nf -9223372036854775808 1 1\n", "line 2: index out of range"),
+        ("huge-normal", "v 0 0 0\nvn 0 1 0\nf 1//9000000000000000000 1//1 1//1\n", "line 3: index out of range"),
+        ("zero", "v 0 0 0\nv 1 0 0\nv 0 1 0\nvt 0 0\nf 1/1 2/0 3/1\n", "line 5: index 0"),
+        (
+            "before-first",
+            "v 0 0 0\nv 1 0 0\nv 0 1 0\nvn 0 0 1\nf 1//-1 2//-2 3//-1\n",
+            "line 5: relative index -2 reaches before the first normal",
+        ),
     ];
     for (case, text, expected) in cases {
         let dir = folder(&format!("broken-{case}"), &[("broken.obj", text)]);
@@ -241,3 +248,18 @@ fn a_million_triangles_load_and_render() {
     let _ = std::fs::remove_dir_all(dir);
 }
 // ANCHOR_END: million
+
+/// Faces with normals and texture coordinates mixed with faces without, in
+/// one mesh: tobj's lists come out shorter than its positions. The mesh
+/// is drawn as one without them (normals computed, untextured), not read
+/// past the end.
+#[test]
+fn faces_with_and_without_normals_in_one_mesh_load() {
+    let text = "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 1 1 0\nvt 0 0\nvn 0 0 1\nf 1/1/1 2/1/1 3/1/1\nf 2 4 3\n";
+    let dir = folder("mixed", &[("mixed.obj", text)]);
+    let loaded = load(&dir.join("mixed.obj")).unwrap();
+    assert_eq!(loaded.model.triangle_count(), 2);
+    for w in ["without normals", "without texture coordinates"] {
+        assert!(loaded.warnings.iter().any(|x| x.contains(w)), "no warning '{w}': {:?}", loaded.warnings);
+    }
+}
