@@ -1,3 +1,4 @@
 //! Chapter 10: shadows.
 
+pub mod game;
 pub mod physics;
