@@ -1,3 +1,0 @@
-//! Chapter 10: shadows.
-
-pub mod physics;
