@@ -120,6 +120,70 @@ pub fn scene_pass<'e>(
     })
 }
 
+/// An opaque mesh pipeline: back faces culled, depth tested against
+/// [`crate::texture::depth_test`], one colour `target`; `entries` names the
+/// vertex and fragment functions, and the fragment's names the pipeline.
+/// Chapter 02 writes one out in full; later chapters call this.
+pub fn mesh_pipeline(
+    device: &wgpu::Device,
+    layout: &wgpu::PipelineLayout,
+    module: &wgpu::ShaderModule,
+    (vertex_entry, fragment_entry): (&str, &str),
+    buffers: &[Option<wgpu::VertexBufferLayout<'_>>],
+    target: wgpu::ColorTargetState,
+) -> wgpu::RenderPipeline {
+    device.create_render_pipeline(&wgpu::RenderPipelineDescriptor {
+        label: Some(fragment_entry),
+        layout: Some(layout),
+        vertex: wgpu::VertexState {
+            module,
+            entry_point: Some(vertex_entry),
+            buffers,
+            compilation_options: Default::default(),
+        },
+        primitive: wgpu::PrimitiveState { cull_mode: Some(wgpu::Face::Back), ..Default::default() },
+        depth_stencil: crate::texture::depth_test(),
+        multisample: Default::default(),
+        fragment: Some(wgpu::FragmentState {
+            module,
+            entry_point: Some(fragment_entry),
+            targets: &[Some(target)],
+            compilation_options: Default::default(),
+        }),
+        multiview_mask: None,
+        cache: None,
+    })
+}
+
+/// A bind-group layout entry for a 2D texture read by fragment shaders;
+/// `filterable` float textures are the common case (chapter 02 spells
+/// entries out; later chapters call these).
+pub fn texture_entry(binding: u32, sample_type: wgpu::TextureSampleType) -> wgpu::BindGroupLayoutEntry {
+    wgpu::BindGroupLayoutEntry {
+        binding,
+        visibility: wgpu::ShaderStages::FRAGMENT,
+        ty: wgpu::BindingType::Texture {
+            sample_type,
+            view_dimension: wgpu::TextureViewDimension::D2,
+            multisampled: false,
+        },
+        count: None,
+    }
+}
+
+/// The sample type of colour textures that may be filtered.
+pub const FILTERABLE: wgpu::TextureSampleType = wgpu::TextureSampleType::Float { filterable: true };
+
+/// A bind-group layout entry for a filtering sampler used by fragment shaders.
+pub fn sampler_entry(binding: u32) -> wgpu::BindGroupLayoutEntry {
+    wgpu::BindGroupLayoutEntry {
+        binding,
+        visibility: wgpu::ShaderStages::FRAGMENT,
+        ty: wgpu::BindingType::Sampler(wgpu::SamplerBindingType::Filtering),
+        count: None,
+    }
+}
+
 /// A bind-group layout entry for a uniform buffer of `size` bytes (chapter 02
 /// spells these out; later chapters call this).
 pub fn uniform_entry(binding: u32, visibility: wgpu::ShaderStages, size: usize) -> wgpu::BindGroupLayoutEntry {

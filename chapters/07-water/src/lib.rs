@@ -5,7 +5,7 @@
 
 pub mod waves;
 
-use common::chapter::{scene_pass, uniform_entry};
+use common::chapter::{sampler_entry, scene_pass, texture_entry, uniform_entry};
 use common::glam::{Vec2, Vec4};
 use common::texture::{ColorSpace, Texture, depth_test, depth_view};
 use common::wgpu::util::DeviceExt as _;
@@ -175,28 +175,6 @@ pub struct WaterChapter {
     show_pipeline: wgpu::RenderPipeline,
     target: Target,
     pictures_size: (u32, u32),
-}
-
-fn texture_entry(binding: u32, sample_type: wgpu::TextureSampleType) -> wgpu::BindGroupLayoutEntry {
-    wgpu::BindGroupLayoutEntry {
-        binding,
-        visibility: wgpu::ShaderStages::FRAGMENT,
-        ty: wgpu::BindingType::Texture {
-            sample_type,
-            view_dimension: wgpu::TextureViewDimension::D2,
-            multisampled: false,
-        },
-        count: None,
-    }
-}
-
-fn sampler_entry(binding: u32) -> wgpu::BindGroupLayoutEntry {
-    wgpu::BindGroupLayoutEntry {
-        binding,
-        visibility: wgpu::ShaderStages::FRAGMENT,
-        ty: wgpu::BindingType::Sampler(wgpu::SamplerBindingType::Filtering),
-        count: None,
-    }
 }
 
 impl WaterChapter {

@@ -8,7 +8,7 @@
 //! Duty: Advanced Warfare" (2014): each halving of the size doubles the
 //! reach of a fixed small filter, so a wide blur costs little.
 
-use common::chapter::uniform_entry;
+use common::chapter::{FILTERABLE, sampler_entry, texture_entry, uniform_entry};
 use common::wgpu::util::DeviceExt as _;
 use common::{Gpu, PassTimer, ShaderError, ShaderFile, fullscreen, shader, wgpu};
 
@@ -119,22 +119,8 @@ impl Bloom {
         let layout = device.create_bind_group_layout(&wgpu::BindGroupLayoutDescriptor {
             label: Some("bloom"),
             entries: &[
-                wgpu::BindGroupLayoutEntry {
-                    binding: 0,
-                    visibility: wgpu::ShaderStages::FRAGMENT,
-                    ty: wgpu::BindingType::Texture {
-                        sample_type: wgpu::TextureSampleType::Float { filterable: true },
-                        view_dimension: wgpu::TextureViewDimension::D2,
-                        multisampled: false,
-                    },
-                    count: None,
-                },
-                wgpu::BindGroupLayoutEntry {
-                    binding: 1,
-                    visibility: wgpu::ShaderStages::FRAGMENT,
-                    ty: wgpu::BindingType::Sampler(wgpu::SamplerBindingType::Filtering),
-                    count: None,
-                },
+                texture_entry(0, FILTERABLE),
+                sampler_entry(1),
                 uniform_entry(2, wgpu::ShaderStages::FRAGMENT, std::mem::size_of::<Params>()),
             ],
         });

@@ -11,7 +11,7 @@ pub mod clusters;
 pub mod lights;
 pub mod paths;
 
-use common::chapter::uniform_entry;
+use common::chapter::{FILTERABLE, mesh_pipeline, sampler_entry, texture_entry, uniform_entry};
 use common::glam::{Mat3, Mat4, Vec3};
 use common::wgpu::util::DeviceExt as _;
 use common::{
@@ -398,27 +398,12 @@ pub struct ToneMap {
 impl ToneMap {
     pub fn new(gpu: &Gpu, format: wgpu::TextureFormat) -> Result<Self, ShaderError> {
         let device = &gpu.device;
-        let texture = |binding| wgpu::BindGroupLayoutEntry {
-            binding,
-            visibility: wgpu::ShaderStages::FRAGMENT,
-            ty: wgpu::BindingType::Texture {
-                sample_type: wgpu::TextureSampleType::Float { filterable: true },
-                view_dimension: wgpu::TextureViewDimension::D2,
-                multisampled: false,
-            },
-            count: None,
-        };
         let layout = device.create_bind_group_layout(&wgpu::BindGroupLayoutDescriptor {
             label: Some("tone map"),
             entries: &[
-                texture(0),
-                texture(1),
-                wgpu::BindGroupLayoutEntry {
-                    binding: 2,
-                    visibility: wgpu::ShaderStages::FRAGMENT,
-                    ty: wgpu::BindingType::Sampler(wgpu::SamplerBindingType::Filtering),
-                    count: None,
-                },
+                texture_entry(0, FILTERABLE),
+                texture_entry(1, FILTERABLE),
+                sampler_entry(2),
                 uniform_entry(3, wgpu::ShaderStages::FRAGMENT, std::mem::size_of::<CompositeUniform>()),
             ],
         });
@@ -624,33 +609,12 @@ struct Pipelines {
 
 fn build_pipelines(gpu: &Gpu, layout: &wgpu::PipelineLayout) -> Result<Pipelines, ShaderError> {
     let module = city_shader().module(&gpu.device)?;
-    let mesh = |name: &str, vertex: &str, fragment: &str| {
-        gpu.device.create_render_pipeline(&wgpu::RenderPipelineDescriptor {
-            label: Some(name),
-            layout: Some(layout),
-            vertex: wgpu::VertexState {
-                module: &module,
-                entry_point: Some(vertex),
-                buffers: &[Some(Vertex::LAYOUT), Some(GpuInstance::LAYOUT)],
-                compilation_options: Default::default(),
-            },
-            primitive: wgpu::PrimitiveState { cull_mode: Some(wgpu::Face::Back), ..Default::default() },
-            depth_stencil: common::texture::depth_test(),
-            multisample: Default::default(),
-            fragment: Some(wgpu::FragmentState {
-                module: &module,
-                entry_point: Some(fragment),
-                targets: &[Some(HDR_FORMAT.into())],
-                compilation_options: Default::default(),
-            }),
-            multiview_mask: None,
-            cache: None,
-        })
-    };
+    let buffers = [Some(Vertex::LAYOUT), Some(GpuInstance::LAYOUT)];
+    let mesh = |entries| mesh_pipeline(&gpu.device, layout, &module, entries, &buffers, HDR_FORMAT.into());
     gpu.catch_validation(|| Pipelines {
-        flat: mesh("flat", "vs_flat", "fs_flat"),
-        gouraud: mesh("gouraud", "vs_gouraud", "fs_gouraud"),
-        phong: mesh("phong", "vs_phong", "fs_phong"),
+        flat: mesh(("vs_flat", "fs_flat")),
+        gouraud: mesh(("vs_gouraud", "fs_gouraud")),
+        phong: mesh(("vs_phong", "fs_phong")),
     })
     .map_err(ShaderError)
 }

@@ -16,7 +16,7 @@ use std::path::{Path, PathBuf};
 use std::sync::Arc;
 
 use common::args::UsageError;
-use common::chapter::uniform_entry;
+use common::chapter::{mesh_pipeline, sampler_entry, uniform_entry};
 use common::glam::{Mat4, Quat, Vec3};
 use common::{
     Camera, Chapter, ChapterFlag, FlagValues, FlyController, Frame, Gpu, Input, ShaderError, Target, View, anyhow,
@@ -211,12 +211,7 @@ impl TexturedRenderer {
         let layout = device.create_bind_group_layout(&wgpu::BindGroupLayoutDescriptor {
             label: Some("view"),
             entries: &[
-                wgpu::BindGroupLayoutEntry {
-                    binding: 0,
-                    visibility: wgpu::ShaderStages::FRAGMENT,
-                    ty: wgpu::BindingType::Sampler(wgpu::SamplerBindingType::Filtering),
-                    count: None,
-                },
+                sampler_entry(0),
                 uniform_entry(1, wgpu::ShaderStages::FRAGMENT, std::mem::size_of::<ViewOptions>()),
             ],
         });
@@ -254,29 +249,9 @@ impl TexturedRenderer {
     fn pipelines(gpu: &Gpu, layout: &wgpu::PipelineLayout) -> Result<Pipelines, ShaderError> {
         let module = shader!("textures/textured.wgsl", imports: ["lighting/lights.wgsl", "textures/surface.wgsl"])
             .module(&gpu.device)?;
-        let pipeline = |fragment: &str| {
-            gpu.device.create_render_pipeline(&wgpu::RenderPipelineDescriptor {
-                label: Some(fragment),
-                layout: Some(layout),
-                vertex: wgpu::VertexState {
-                    module: &module,
-                    entry_point: Some("vs_main"),
-                    buffers: &[Some(TexturedVertex::LAYOUT), Some(ModelInstance::LAYOUT)],
-                    compilation_options: Default::default(),
-                },
-                primitive: wgpu::PrimitiveState { cull_mode: Some(wgpu::Face::Back), ..Default::default() },
-                depth_stencil: common::texture::depth_test(),
-                multisample: Default::default(),
-                fragment: Some(wgpu::FragmentState {
-                    module: &module,
-                    entry_point: Some(fragment),
-                    targets: &[Some(HDR_FORMAT.into())],
-                    compilation_options: Default::default(),
-                }),
-                multiview_mask: None,
-                cache: None,
-            })
-        };
+        let buffers = [Some(TexturedVertex::LAYOUT), Some(ModelInstance::LAYOUT)];
+        let pipeline =
+            |fragment| mesh_pipeline(&gpu.device, layout, &module, ("vs_main", fragment), &buffers, HDR_FORMAT.into());
         gpu.catch_validation(|| Pipelines {
             normal_mapped: pipeline("fs_normal_mapped"),
             plain: pipeline("fs_plain"),

@@ -7,7 +7,7 @@ use std::collections::HashMap;
 use std::path::{Path, PathBuf};
 use std::rc::Rc;
 
-use common::chapter::uniform_entry;
+use common::chapter::{FILTERABLE, texture_entry, uniform_entry};
 use common::glam::Vec3;
 use common::image::RgbaImage;
 use common::wgpu::util::DeviceExt as _;
@@ -196,26 +196,13 @@ pub struct Materials {
     pub texels: u64,
 }
 
-fn texture_entry(binding: u32) -> wgpu::BindGroupLayoutEntry {
-    wgpu::BindGroupLayoutEntry {
-        binding,
-        visibility: wgpu::ShaderStages::FRAGMENT,
-        ty: wgpu::BindingType::Texture {
-            sample_type: wgpu::TextureSampleType::Float { filterable: true },
-            view_dimension: wgpu::TextureViewDimension::D2,
-            multisampled: false,
-        },
-        count: None,
-    }
-}
-
 impl Materials {
     pub fn new(up: &mut Uploader) -> Self {
         let layout = up.gpu.device.create_bind_group_layout(&wgpu::BindGroupLayoutDescriptor {
             label: Some("material"),
             entries: &[
-                texture_entry(0),
-                texture_entry(1),
+                texture_entry(0, FILTERABLE),
+                texture_entry(1, FILTERABLE),
                 uniform_entry(2, wgpu::ShaderStages::FRAGMENT, std::mem::size_of::<MaterialUniform>()),
             ],
         });

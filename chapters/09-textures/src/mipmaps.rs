@@ -7,6 +7,7 @@
 
 use std::collections::HashMap;
 
+use common::chapter::{FILTERABLE, sampler_entry, texture_entry};
 use common::{Gpu, ShaderError, fullscreen, shader, wgpu};
 
 /// Levels in a full chain for a `width × height` texture, down to 1 × 1.
@@ -40,24 +41,7 @@ impl MipMaker {
         let module = shader!("textures/mipmap.wgsl", imports: ["common/fullscreen.wgsl"]).module(device)?;
         let layout = device.create_bind_group_layout(&wgpu::BindGroupLayoutDescriptor {
             label: Some("mip level above"),
-            entries: &[
-                wgpu::BindGroupLayoutEntry {
-                    binding: 0,
-                    visibility: wgpu::ShaderStages::FRAGMENT,
-                    ty: wgpu::BindingType::Texture {
-                        sample_type: wgpu::TextureSampleType::Float { filterable: true },
-                        view_dimension: wgpu::TextureViewDimension::D2,
-                        multisampled: false,
-                    },
-                    count: None,
-                },
-                wgpu::BindGroupLayoutEntry {
-                    binding: 1,
-                    visibility: wgpu::ShaderStages::FRAGMENT,
-                    ty: wgpu::BindingType::Sampler(wgpu::SamplerBindingType::Filtering),
-                    count: None,
-                },
-            ],
+            entries: &[texture_entry(0, FILTERABLE), sampler_entry(1)],
         });
         let pipeline_layout = device.create_pipeline_layout(&wgpu::PipelineLayoutDescriptor {
             label: Some("mipmaps"),

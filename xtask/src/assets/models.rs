@@ -494,9 +494,15 @@ fn lathe(obj: &mut ObjWriter, centre: Vec3, profile: &[Vec2], segments: usize) {
             grid.push(Corner { position, uv: Some(uv), normal: Some(normal) });
         }
     }
-    let at = |k: usize, i: usize| grid[k * count + i];
-    for k in 0..segments {
-        for i in 0..count - 1 {
+    grid_quads(obj, &grid, count);
+}
+
+/// Quads between neighbouring corners of a grid written column by column,
+/// `column` corners to a column: corner (k, i) is `grid[k * column + i]`.
+fn grid_quads(obj: &mut ObjWriter, grid: &[Corner], column: usize) {
+    let at = |k: usize, i: usize| grid[k * column + i];
+    for k in 0..grid.len() / column - 1 {
+        for i in 0..column - 1 {
             obj.face(&[at(k, i), at(k + 1, i), at(k + 1, i + 1), at(k, i + 1)], false);
         }
     }
@@ -587,12 +593,7 @@ fn rock() -> String {
             grid.push(Corner { position, uv: Some(uv), normal: Some(normal) });
         }
     }
-    let at = |k: usize, j: usize| grid[k * (UP + 1) + j];
-    for k in 0..AROUND {
-        for j in 0..UP {
-            obj.face(&[at(k, j), at(k + 1, j), at(k + 1, j + 1), at(k, j + 1)], false);
-        }
-    }
+    grid_quads(&mut obj, &grid, UP + 1);
     obj.obj
 }
 
