@@ -96,8 +96,9 @@ pub fn level() -> Level {
         surface,
     };
     let blocks = vec![
-        // The ground, and walls at both ends that nobody jumps over.
-        block(-5.0, -2.0, 125.0, 0.0, Surface::Concrete),
+        // The ground, deeper than the rest so that shadows have somewhere
+        // to fall, and walls at both ends that nobody jumps over.
+        Block { depth: 4.0, ..block(-5.0, -6.0, 125.0, 0.0, Surface::Concrete) },
         block(-5.0, 0.0, -4.0, 12.0, Surface::Brick),
         block(124.0, 0.0, 125.0, 12.0, Surface::Brick),
         // Platforms climbing up and down.
