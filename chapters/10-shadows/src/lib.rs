@@ -69,7 +69,7 @@ pub enum Show {
 pub enum Fit {
     /// The part of the level the camera sees.
     Visible,
-    /// The whole level: simpler, and every texel ten times as coarse.
+    /// The whole level: simpler, and every texel three times as coarse.
     WholeLevel,
 }
 
@@ -107,9 +107,16 @@ impl Settings {
             bloom: true,
         };
         match name {
-            "hard" => s.shadow.filter = Filter::Hard,
-            "pcf-3x3" => s.shadow.filter = Filter::Pcf3x3,
-            "poisson" => s.shadow.filter = Filter::Poisson,
+            // The filters side by side, on a 512² map: texels of 8.8 cm,
+            // big enough to see what each filter does to them.
+            "hard" | "pcf-3x3" | "poisson" => {
+                s.shadow.size = 512;
+                s.shadow.filter = match name {
+                    "hard" => Filter::Hard,
+                    "pcf-3x3" => Filter::Pcf3x3,
+                    _ => Filter::Poisson,
+                };
+            }
             "acne" => {
                 s.shadow.filter = Filter::Hard;
                 s.shadow.bias = Bias::NONE;
@@ -264,17 +271,15 @@ struct Models {
 /// Who plays: the script (pictures, and a window until a key is pressed)
 /// or the keys.
 enum Play {
-    /// The scripted run, kept so that the next frame continues from it
-    /// rather than replaying from the start.
+    /// The scripted run at the scene time, kept so that the next frame
+    /// continues from it rather than replaying from the start. (To see it
+    /// again in a window, set the overlay's scene time back to 0.)
     Demo(Game),
     Keys(Game),
 }
 
 /// How long a day lasts when the sun moves, seconds.
 pub const DAY_SECONDS: f32 = 120.0;
-
-/// How long the demo runs before it starts again, seconds.
-pub const DEMO_LENGTH: f32 = 24.0;
 
 /// The keys' controls this frame. Pressing left and right together
 /// cancels out; jump is held, so holding Space jumps again on landing.
@@ -320,8 +325,10 @@ impl ShadowsChapter {
         match &mut self.play {
             Play::Keys(game) => *game,
             Play::Demo(game) => {
-                let time = time.rem_euclid(DEMO_LENGTH);
-                let steps = (time / game::STEP).round() as u64;
+                // The script ends at 21 s and the player stands still from
+                // then on: a time past a minute is a minute, so that
+                // `--time 1e9` does not simulate thirty years.
+                let steps = (time.min(60.0) / game::STEP).round() as u64;
                 if steps < game.steps {
                     *game = Game::new(&self.level);
                 }

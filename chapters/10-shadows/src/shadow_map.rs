@@ -577,6 +577,30 @@ mod tests {
         assert!(note.unwrap().contains("at most 2048²"));
     }
 
+    #[test]
+    fn the_poisson_disk_is_sixteen_well_spread_points_in_the_unit_disk() {
+        let source = include_str!("../../../shaders/shadows/shadow.wgsl");
+        let table = source.split("const POISSON").nth(1).unwrap().split(");").next().unwrap();
+        let points: Vec<[f32; 2]> = table
+            .split("vec2<f32>(")
+            .skip(1)
+            .map(|p| {
+                let numbers: Vec<f32> =
+                    p.split(')').next().unwrap().split(',').map(|n| n.trim().parse().unwrap()).collect();
+                [numbers[0], numbers[1]]
+            })
+            .collect();
+        assert_eq!(points.len(), 16);
+        let mut closest = f32::MAX;
+        for (i, a) in points.iter().enumerate() {
+            assert!(a[0].hypot(a[1]) <= 1.0, "{a:?} is outside the unit disk");
+            for b in &points[i + 1..] {
+                closest = closest.min((a[0] - b[0]).hypot(a[1] - b[1]));
+            }
+        }
+        assert!(closest >= 0.43, "two points only {closest} apart");
+    }
+
     // ANCHOR: snapping_test
     #[test]
     fn sliding_the_view_moves_the_box_by_whole_texels_and_keeps_its_size() {

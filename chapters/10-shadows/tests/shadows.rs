@@ -202,3 +202,22 @@ fn the_scripted_run_gives_the_same_bytes_however_it_was_reached() {
     assert_eq!(fresh.as_raw(), picture(&[9.0, 5.7]).as_raw(), "after going back in time");
     assert_ne!(fresh.as_raw(), picture(&[5.9]).as_raw(), "a fifth of a second later, the player has moved");
 }
+
+#[test]
+fn a_bad_shadow_map_size_is_named_and_a_huge_one_is_clamped_with_a_note() {
+    let run = |size: &str| {
+        let out = std::env::temp_dir().join(format!("shadows-flag-{}-{size}.png", std::process::id()));
+        let output = std::process::Command::new(env!("CARGO_BIN_EXE_shadows"))
+            .args(["--screenshot", out.to_str().unwrap(), "--size", "64x36", "--shadow-map-size", size])
+            .output()
+            .unwrap();
+        let _ = std::fs::remove_file(&out);
+        (output.status.code(), String::from_utf8_lossy(&output.stderr).into_owned())
+    };
+    let (code, stderr) = run("lots");
+    assert_eq!(code, Some(2), "{stderr}");
+    assert!(stderr.contains("--shadow-map-size") && stderr.contains("'lots'"), "{stderr}");
+    let (code, stderr) = run("100000");
+    assert_eq!(code, Some(0), "{stderr}");
+    assert!(stderr.contains("using 4096²"), "{stderr}");
+}
