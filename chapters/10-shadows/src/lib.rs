@@ -320,6 +320,14 @@ pub struct ShadowsChapter {
 }
 
 impl ShadowsChapter {
+    /// The game the keys are playing, once a key has taken over.
+    pub fn played_by_keys(&self) -> Option<&Game> {
+        match &self.play {
+            Play::Keys(game) => Some(game),
+            Play::Demo(_) => None,
+        }
+    }
+
     /// The game as it stands at scene time `time`.
     fn game_at(&mut self, time: f32) -> Game {
         match &mut self.play {
@@ -540,10 +548,10 @@ impl Chapter for ShadowsChapter {
         };
         let phase = if s.sun_moves { s.phase + frame.time / DAY_SECONDS } else { s.phase };
         let day: Daylight = scene::sun_at(phase.rem_euclid(1.0));
+        // The map's size first: the box's texels are fitted to it.
+        self.shadow_map.resize(&gpu.device, s.shadow.size);
         let light = fit_light(day.direction, &focus, bounds, self.shadow_map.size);
         self.last_box = Some(light);
-
-        self.shadow_map.resize(&gpu.device, s.shadow.size);
         self.shadow_map.write(gpu, &light, &s.shadow);
         let options = LoopOptions { culling: false, highlight: Highlight::BlinnPhong, heat_map: false };
         self.scene_lights.write(gpu, &camera, &day, &[], &Default::default(), options);

@@ -8,7 +8,7 @@ use common::{Camera, Chapter, Gpu, Target, primitives, wgpu};
 use lighting::lights::{Daylight, daylight};
 use lighting::{HDR_FORMAT, Highlight, LoopOptions, SceneLights};
 use shadows::shadow_map::{Bias, Filter, ShadowMap, ShadowSettings, fit_light};
-use shadows::{ShadowedRenderer, ShadowsChapter, Show, casters, scene};
+use shadows::{ShadowedRenderer, ShadowsChapter, Show, casters, game, scene};
 use textures::materials::{Materials, Uploader};
 use textures::mesh::{MaterialDesc, ModelData, ModelInstance};
 use textures::mipmaps::MipMaker;
@@ -220,4 +220,43 @@ fn a_bad_shadow_map_size_is_named_and_a_huge_one_is_clamped_with_a_note() {
     let (code, stderr) = run("100000");
     assert_eq!(code, Some(0), "{stderr}");
     assert!(stderr.contains("using 4096²"), "{stderr}");
+}
+
+#[test]
+fn a_key_takes_over_from_the_demo_and_every_key_at_once_breaks_nothing() {
+    use common::Input;
+    use common::winit::keyboard::KeyCode;
+    let gpu = Gpu::headless(ShadowsChapter::gpu_needs()).unwrap();
+    let target = Target { format: OFFSCREEN_FORMAT, width: 160, height: 90 };
+    let mut chapter = ShadowsChapter::new(&gpu, target).unwrap();
+    let demo = capture(&gpu, &mut chapter, target, 0.0, 0).unwrap();
+    let mut input = Input::default();
+    chapter.update(&input, 1.0 / 60.0);
+    assert!(chapter.played_by_keys().is_none(), "no key, still the demo");
+    input.key_down(KeyCode::KeyD);
+    for _ in 0..60 {
+        chapter.update(&input, 1.0 / 60.0);
+        input.end_frame();
+    }
+    let game = *chapter.played_by_keys().expect("D took over");
+    assert!(game.player.aabb.min.x > game::level().spawn.x + 2.0, "ran right: {:?}", game.player.aabb);
+    assert_ne!(demo.as_raw(), capture(&gpu, &mut chapter, target, 0.0, 0).unwrap().as_raw(), "the camera followed");
+    // Every key at once, frames of every length, a window hidden for an hour.
+    for key in [KeyCode::KeyA, KeyCode::ArrowLeft, KeyCode::ArrowRight, KeyCode::Space, KeyCode::KeyW, KeyCode::ArrowUp]
+    {
+        input.key_down(key);
+    }
+    for dt in [0.0, 1e-7, 1.0 / 30.0, 3600.0, f32::NAN, -1.0] {
+        chapter.update(&input, dt);
+        input.end_frame();
+    }
+    // Let go: the player comes to rest on whatever it landed on.
+    input.release_all();
+    for _ in 0..240 {
+        chapter.update(&input, 1.0 / 60.0);
+    }
+    let rest = chapter.played_by_keys().unwrap().player;
+    assert_eq!(rest.velocity, Vec2::ZERO, "{rest:?}");
+    let solids = game::level().solids();
+    assert!(shadows::physics::standing(&rest.aabb, &solids), "{rest:?}");
 }
