@@ -842,19 +842,19 @@ fn srgb_curve() -> String {
 /// shadows itself; a bias of half a texel's depth change moves every step
 /// below the surface.
 fn shadow_acne() -> String {
-    let mut svg = Svg::new(640.0, 340.0);
-    let (left, top, texel) = (60.0f32, 70.0f32, 60.0f32);
+    let mut svg = Svg::new(640.0, 380.0);
+    let (left, top, texel) = (40.0f32, 90.0f32, 60.0f32);
     let slope = 0.45f32;
-    let surface = |x: f32| top + 60.0 + slope * (x - left);
+    let surface = |x: f32| top + 30.0 + slope * (x - left);
     let texels = 8;
     let right = left + texel * texels as f32;
     // Rays from the sun, straight down in light space.
     for i in 0..=texels {
         let x = left + texel * i as f32;
-        svg.dashed(Vec2::new(x, top - 30.0), Vec2::new(x, 320.0), MUTED);
+        svg.dashed(Vec2::new(x, top - 10.0), Vec2::new(x, 370.0), MUTED);
     }
     svg.text(
-        Vec2::new(left, top - 40.0),
+        Vec2::new(left, top - 18.0),
         "shadow-map texels, seen from the sun (rays point down)",
         11.0,
         "start",
@@ -876,10 +876,13 @@ fn shadow_acne() -> String {
         svg.line(Vec2::new(x0, biased), Vec2::new(x0 + texel, biased), BLUE, 1.5);
     }
     svg.line(Vec2::new(left, surface(left)), Vec2::new(right, surface(right)), INK, 2.0);
-    svg.text(Vec2::new(right + 8.0, surface(right) - 28.0), "depth stored", 11.0, "start", ACCENT);
-    svg.text(Vec2::new(right + 8.0, surface(right) - 14.0), "(one per texel)", 11.0, "start", ACCENT);
-    svg.text(Vec2::new(right + 8.0, surface(right) + 4.0), "the surface", 11.0, "start", INK);
-    svg.text(Vec2::new(right + 8.0, surface(right) + 34.0), "stored + bias", 11.0, "start", BLUE);
+    let legend = right + 12.0;
+    svg.text(Vec2::new(legend, top + 20.0), "depth stored", 11.0, "start", ACCENT);
+    svg.text(Vec2::new(legend, top + 34.0), "(one per texel)", 11.0, "start", ACCENT);
+    svg.text(Vec2::new(legend, top + 58.0), "the surface", 11.0, "start", INK);
+    svg.text(Vec2::new(legend, top + 82.0), "stored + bias", 11.0, "start", BLUE);
+    svg.text(Vec2::new(legend, top + 106.0), "shaded: in its", 11.0, "start", ACCENT);
+    svg.text(Vec2::new(legend, top + 120.0), "own shadow", 11.0, "start", ACCENT);
     svg.text(
         Vec2::new(20.0, 24.0),
         "Where the surface lies deeper than the step its texel stored (shaded), it shadows itself: stripes.",
