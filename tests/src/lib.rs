@@ -37,6 +37,7 @@ pub fn chapters() -> Vec<Entry> {
         entry::<water::WaterChapter>(),
         entry::<lighting::LightingChapter>(),
         entry::<textures::TexturesChapter>(),
+        entry::<shadows::ShadowsChapter>(),
     ]
 }
 

@@ -205,6 +205,30 @@ pub struct DrawList<'a> {
 
 // ANCHOR_END: renderer
 
+// ANCHOR: draw_list
+impl DrawList<'_> {
+    /// Draws every model, one draw per part with its material in group 1
+    /// (`swapped`: the material's views in the other colour space), into a
+    /// pass whose pipeline and other groups are set. Chapter 10 draws its
+    /// level with this too.
+    pub fn draw(&self, pass: &mut wgpu::RenderPass<'_>, swapped: bool) {
+        pass.set_vertex_buffer(1, self.instances.slice(..));
+        for draw in &self.draws {
+            if draw.instances.is_empty() {
+                continue;
+            }
+            pass.set_vertex_buffer(0, draw.model.vertices.slice(..));
+            pass.set_index_buffer(draw.model.indices.slice(..), wgpu::IndexFormat::Uint32);
+            for part in &draw.model.parts {
+                let material = &self.materials.list[draw.model.first_material + part.material];
+                pass.set_bind_group(1, if swapped { &material.swapped_group } else { &material.group }, &[]);
+                pass.draw_indexed(part.indices.clone(), 0, draw.instances.clone());
+            }
+        }
+    }
+}
+// ANCHOR_END: draw_list
+
 impl TexturedRenderer {
     pub fn new(gpu: &Gpu, lights: &SceneLights, materials: &Materials) -> Result<Self, ShaderError> {
         let device = &gpu.device;
@@ -289,20 +313,7 @@ impl TexturedRenderer {
             (false, false) => &self.pipelines.plain,
         });
         pass.set_bind_group(2, &self.sampler_groups[mode], &[]);
-        pass.set_vertex_buffer(1, list.instances.slice(..));
-        for draw in &list.draws {
-            if draw.instances.is_empty() {
-                continue;
-            }
-            pass.set_vertex_buffer(0, draw.model.vertices.slice(..));
-            pass.set_index_buffer(draw.model.indices.slice(..), wgpu::IndexFormat::Uint32);
-            for part in &draw.model.parts {
-                let material = &list.materials.list[draw.model.first_material + part.material];
-                let group = if settings.swapped_colour_spaces { &material.swapped_group } else { &material.group };
-                pass.set_bind_group(1, group, &[]);
-                pass.draw_indexed(part.indices.clone(), 0, draw.instances.clone());
-            }
-        }
+        list.draw(pass, settings.swapped_colour_spaces);
     }
     // ANCHOR_END: draw
 }
@@ -398,7 +409,7 @@ struct TextureReport {
 }
 
 /// Uploads `model`'s materials and then the model.
-fn upload_model(up: &mut Uploader, materials: &mut Materials, model: &ModelData, label: &str) -> GpuModel {
+pub fn upload_model(up: &mut Uploader, materials: &mut Materials, model: &ModelData, label: &str) -> GpuModel {
     let first = materials.list.len();
     for desc in &model.materials {
         materials.add(up, desc);

@@ -1,0 +1,148 @@
+//! The level as things to draw: its blocks baked into one textured model
+//! (chapter 09's textures at their size in metres), its props and the
+//! player as chapter 09's OBJ models, and the sun's path over the day.
+
+use std::path::Path;
+
+use common::files::ReadError;
+use common::glam::{Mat4, Quat, Vec2, Vec3};
+use common::{MeshData, primitives};
+use lighting::city::Shape;
+use lighting::lights::{Daylight, daylight};
+use textures::mesh::{MaterialDesc, ModelData, ModelInstance};
+use textures::scenes::world_uvs;
+
+use crate::game::{Game, Level, PropKind, Surface};
+
+macro_rules! builtin {
+    ($($path:literal),* $(,)?) => {
+        &[$(($path, include_bytes!(concat!(env!("CARGO_MANIFEST_DIR"), "/../../assets/", $path)))),*]
+    };
+}
+
+/// The files this chapter carries besides chapter 09's: the models it
+/// dresses the level with, the crate's wood, and the background layers.
+const FILES: &[(&str, &[u8])] = builtin![
+    "models/tree/tree.obj",
+    "models/tree/tree.mtl",
+    "models/rock/rock.obj",
+    "models/rock/rock.mtl",
+    "models/crate/crate.obj",
+    "models/crate/crate.mtl",
+    "models/robot/robot.obj",
+    "models/robot/robot.mtl",
+    "textures/wood/albedo.png",
+    "textures/wood/normal.png",
+    "layers/far.png",
+    "layers/middle.png",
+    "layers/near.png",
+];
+
+/// A built-in file by its path under `assets/`: this chapter's, or else
+/// chapter 09's.
+pub fn read(path: &Path) -> Result<Vec<u8>, ReadError> {
+    let wanted = textures::obj::normalise(path);
+    match FILES.iter().find(|(name, _)| Path::new(name) == wanted) {
+        Some((_, bytes)) => Ok(bytes.to_vec()),
+        None => textures::builtin::read(path),
+    }
+}
+
+// ANCHOR: blocks
+/// A surface's texture and how many metres one repeat covers.
+fn surface_texture(surface: Surface) -> (&'static str, f32, f32, f32) {
+    // (name, metres per repeat, specular, shininess)
+    match surface {
+        Surface::Concrete => ("concrete", 4.0, 0.1, 12.0),
+        Surface::Brick => ("brick", 1.0, 0.08, 10.0),
+        Surface::Metal => ("metal", 2.0, 0.6, 64.0),
+    }
+}
+
+/// Every block of the level as one model: a box per block, textured at
+/// the texture's size in metres, one part per surface.
+pub fn level_model(level: &Level) -> ModelData {
+    let surfaces = [Surface::Concrete, Surface::Brick, Surface::Metal];
+    let materials = surfaces
+        .iter()
+        .map(|&s| {
+            let (name, _, specular, shininess) = surface_texture(s);
+            MaterialDesc {
+                albedo_map: Some(format!("textures/{name}/albedo.png").into()),
+                normal_map: Some(format!("textures/{name}/normal.png").into()),
+                ..MaterialDesc::plain(name, Vec3::ONE, specular, shininess)
+            }
+        })
+        .collect();
+    let mut model = ModelData { materials, ..Default::default() };
+    let cube: MeshData = primitives::cube();
+    for block in &level.blocks {
+        let size = block.aabb.size().extend(2.0 * block.depth);
+        let at = Mat4::from_scale_rotation_translation(size, Quat::IDENTITY, block.aabb.centre().extend(0.0));
+        let material = surfaces.iter().position(|s| *s == block.surface).unwrap_or(0);
+        let uvs = world_uvs(&cube, at, Shape::Cube, surface_texture(block.surface).1);
+        model.append(&cube, material, at, |_, i| uvs[i]);
+    }
+    model.group_by_material();
+    model
+}
+// ANCHOR_END: blocks
+
+/// Where each prop kind's model is, under `assets/`.
+pub fn prop_model(kind: PropKind) -> &'static str {
+    match kind {
+        PropKind::Tree => "models/tree/tree.obj",
+        PropKind::Rock => "models/rock/rock.obj",
+        PropKind::Crate => "models/crate/crate.obj",
+    }
+}
+
+pub const PLAYER_MODEL: &str = "models/robot/robot.obj";
+
+/// The instances of `kind` in the level.
+pub fn prop_instances(level: &Level, kind: PropKind) -> Vec<ModelInstance> {
+    level
+        .props
+        .iter()
+        .filter(|p| p.kind == kind)
+        .map(|p| {
+            let at = Mat4::from_scale_rotation_translation(Vec3::splat(p.scale), Quat::from_rotation_y(p.turn), p.base);
+            ModelInstance::new(at, 1.0)
+        })
+        .collect()
+}
+
+/// The player's model placed on its box, turned the way it runs (the
+/// model looks along +x).
+pub fn player_instance(game: &Game) -> ModelInstance {
+    let base = Vec2::new(game.player.aabb.centre().x, game.player.aabb.min.y).extend(0.0);
+    let turn = if game.facing < 0.0 { std::f32::consts::PI } else { 0.0 };
+    ModelInstance::new(Mat4::from_rotation_translation(Quat::from_rotation_y(turn), base), 1.0)
+}
+
+/// The box around everything that can cast a shadow.
+pub fn level_bounds(level: &Level) -> (Vec3, Vec3) {
+    let mut low = Vec3::MAX;
+    let mut high = Vec3::MIN;
+    for block in &level.blocks {
+        low = low.min(block.aabb.min.extend(-block.depth));
+        high = high.max(block.aabb.max.extend(block.depth));
+    }
+    // Trees are the tallest props: 4.5 m at scale 1.
+    let tallest = level.props.iter().map(|p| p.base.y + 4.5 * p.scale).fold(high.y, f32::max);
+    (low, Vec3::new(high.x, tallest, high.z))
+}
+
+// ANCHOR: sun
+/// The sun over the level at `phase` of the day (0.25 sunrise, 0.5 noon,
+/// 0.75 sunset): it rises on the left, passes overhead and sets on the
+/// right, on an arc tilted 35° towards the camera, so shadows fall back
+/// onto the ground behind what casts them where the camera can see them.
+/// Colours come from chapter 08's daylight at the same phase.
+pub fn sun_at(phase: f32) -> Daylight {
+    let angle = (phase - 0.25) * std::f32::consts::TAU;
+    let tilt = 35f32.to_radians();
+    let direction = Vec3::new(-angle.cos(), angle.sin() * tilt.cos(), angle.sin() * tilt.sin());
+    Daylight { direction, ..daylight(phase) }
+}
+// ANCHOR_END: sun

@@ -1,0 +1,625 @@
+//! The shadow map: the scene's depth as the sun sees it, rendered first,
+//! then read by every lit fragment. This module fits the sun's
+//! orthographic box to what the camera sees, snaps it to whole texels,
+//! renders the depth with a bias, and binds the map for the main pass with
+//! the settings its filters need.
+
+use common::chapter::uniform_entry;
+use common::glam::{Mat4, Vec3};
+use common::{Gpu, PassTimer, ShaderError, shader, wgpu};
+use textures::mesh::{ModelInstance, TexturedVertex};
+
+// ANCHOR: settings
+/// A depth format: the map stores one distance per texel, nothing else.
+pub const SHADOW_FORMAT: wgpu::TextureFormat = wgpu::TextureFormat::Depth32Float;
+/// The sizes the overlay offers, in texels along each side.
+pub const SIZES: [u32; 4] = [512, 1024, 2048, 4096];
+pub const DEFAULT_SIZE: u32 = 2048;
+
+/// How a fragment turns the map into light.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Filter {
+    /// No lookup: everything in full sun (the bench's baseline).
+    Off,
+    /// One comparison: in or out, with the map's texels for edges.
+    Hard,
+    /// Nine comparisons a texel apart, averaged.
+    Pcf3x3,
+    /// Sixteen comparisons on a Poisson disk, turned per pixel (the seed's).
+    Poisson,
+    /// Poisson, widened by the distance to the blocker (contact hardening).
+    Pcss,
+}
+
+impl Filter {
+    pub const ALL: [Filter; 5] = [Filter::Off, Filter::Hard, Filter::Pcf3x3, Filter::Poisson, Filter::Pcss];
+
+    pub fn label(self) -> &'static str {
+        match self {
+            Filter::Off => "off",
+            Filter::Hard => "hard (1 tap)",
+            Filter::Pcf3x3 => "3×3 PCF",
+            Filter::Poisson => "Poisson, 16 taps",
+            Filter::Pcss => "PCSS",
+        }
+    }
+}
+
+/// Two ways of keeping a surface from shadowing itself. `constant` and
+/// `slope_scale` go to the shadow pass's depth-bias state: the rasteriser
+/// pushes each stored depth away from the sun by `constant` of the depth
+/// format's smallest steps plus `slope_scale` times the triangle's depth
+/// slope (how much its depth changes per texel). `normal_offset` moves
+/// the point a fragment looks up along its normal, in shadow-map texels.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Bias {
+    pub constant: i32,
+    pub slope_scale: f32,
+    pub normal_offset: f32,
+}
+
+impl Bias {
+    /// None at all: acne.
+    pub const NONE: Bias = Bias { constant: 0, slope_scale: 0.0, normal_offset: 0.0 };
+    /// Enough, and no more: the chapter's default.
+    pub const DEFAULT: Bias = Bias { constant: 0, slope_scale: 1.5, normal_offset: 1.0 };
+    /// Far too much: shadows come loose from what casts them.
+    pub const TOO_MUCH: Bias = Bias { constant: 60_000, slope_scale: 1.5, normal_offset: 1.0 };
+}
+
+/// Which faces the shadow pass leaves out.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Cull {
+    /// Those facing away from the sun, as the main pass does.
+    Back,
+    /// Those facing the sun: the map keeps the far sides of solids.
+    Front,
+    None,
+}
+
+/// Everything the shadow pass and the lookups depend on.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct ShadowSettings {
+    /// Texels along each side, as asked for (clamped when the map is made).
+    pub size: u32,
+    pub filter: Filter,
+    pub bias: Bias,
+    pub cull: Cull,
+    /// Poisson's disk radius, in texels.
+    pub radius: f32,
+    /// PCSS: penumbra width per metre between blocker and receiver. The
+    /// sun's disk is 0.53° wide, tan 0.53° = 0.0093; a wider light softens more.
+    pub light_width: f32,
+}
+
+impl Default for ShadowSettings {
+    fn default() -> Self {
+        Self {
+            size: DEFAULT_SIZE,
+            filter: Filter::Poisson,
+            bias: Bias::DEFAULT,
+            cull: Cull::Back,
+            radius: 2.0,
+            light_width: 0.04,
+        }
+    }
+}
+// ANCHOR_END: settings
+
+// ANCHOR: clamp
+/// The size the map will have: `requested`, kept within the chapter's
+/// range and the adapter's largest texture, with a note when it had to be
+/// changed.
+pub fn clamp_size(requested: u32, adapter_max: u32) -> (u32, Option<String>) {
+    let largest = SIZES[SIZES.len() - 1].min(adapter_max);
+    let size = requested.clamp(SIZES[0].min(largest), largest);
+    let note = (size != requested).then(|| {
+        format!(
+            "a {requested}² shadow map was asked for; this chapter takes {}² to {}² and this adapter at most {adapter_max}²: using {size}²",
+            SIZES[0],
+            SIZES[SIZES.len() - 1]
+        )
+    });
+    (size, note)
+}
+// ANCHOR_END: clamp
+
+// ANCHOR: fit
+/// The sun's orthographic box: where it looks from, what it covers, and
+/// what one texel of the map covers.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct LightBox {
+    /// World to the light's clip space.
+    pub view_proj: Mat4,
+    /// Metres one texel covers, across the box.
+    pub texel: f32,
+    /// Metres from the box's near face to its far face.
+    pub depth: f32,
+}
+
+/// Fits the sun's box for a map of `size` texels: its sides around the
+/// `focus` points (the part of the level the camera sees), its depth over
+/// every caster in `caster_bounds` (something off screen can still throw
+/// a shadow into view). `towards_sun` is a unit vector.
+///
+/// Two things keep shadows from shimmering as the camera moves. The box's
+/// width is that of a sphere around the focus points, rounded up to half
+/// a metre: when the camera only slides, the width never changes, so a
+/// texel always covers the same ground. And the box moves only in whole
+/// texels, so every texel edge stays where it was on the ground.
+pub fn fit_light(towards_sun: Vec3, focus: &[Vec3], caster_bounds: (Vec3, Vec3), size: u32) -> LightBox {
+    let up = if towards_sun.y.abs() > 0.99 { Vec3::Z } else { Vec3::Y };
+    // A rotation only: light space is world space turned to face the sun.
+    let rotation = Mat4::look_to_rh(Vec3::ZERO, -towards_sun, up);
+    let (low, high) = focus.iter().fold((Vec3::MAX, Vec3::MIN), |(lo, hi), p| (lo.min(*p), hi.max(*p)));
+    let centre = (low + high) / 2.0;
+    let reach = focus.iter().map(|p| p.distance(centre)).fold(0.0, f32::max);
+    let radius = (reach * 2.0).ceil() / 2.0;
+    let texel = 2.0 * radius / size as f32;
+    let middle = rotation.transform_point3(centre);
+    let snap = |v: f32| (v / texel).round() * texel;
+    let (x, y) = (snap(middle.x), snap(middle.y));
+    // Depth: from the caster nearest the sun to the point farthest from it.
+    let (cl, ch) = caster_bounds;
+    let corners = (0..8).map(|i| {
+        Vec3::new(
+            if i & 1 == 0 { cl.x } else { ch.x },
+            if i & 2 == 0 { cl.y } else { ch.y },
+            if i & 4 == 0 { cl.z } else { ch.z },
+        )
+    });
+    let distances = corners.chain(focus.iter().copied()).map(|p| -rotation.transform_point3(p).z);
+    let (near, far) = distances.fold((f32::MAX, f32::MIN), |(n, f), d| (n.min(d), f.max(d)));
+    let (near, far) = (near - 1.0, far + 1.0);
+    let projection = Mat4::orthographic_rh(x - radius, x + radius, y - radius, y + radius, near, far);
+    LightBox { view_proj: projection * rotation, texel, depth: far - near }
+}
+// ANCHOR_END: fit
+
+impl LightBox {
+    /// The box's eight corners in the world, for drawing it.
+    pub fn corners(&self) -> [Vec3; 8] {
+        let inverse = self.view_proj.inverse();
+        std::array::from_fn(|i| {
+            let x = if i & 1 == 0 { -1.0 } else { 1.0 };
+            let y = if i & 2 == 0 { -1.0 } else { 1.0 };
+            let z = if i & 4 == 0 { 0.0 } else { 1.0 };
+            inverse.project_point3(Vec3::new(x, y, z))
+        })
+    }
+}
+
+// ANCHOR: uniform
+/// `Shadow` in shadow.wgsl.
+#[repr(C)]
+#[derive(Clone, Copy, bytemuck::Pod, bytemuck::Zeroable)]
+struct ShadowUniform {
+    light_view_proj: [[f32; 4]; 4],
+    options: [u32; 4],
+    params: [f32; 4],
+    extent: [f32; 4],
+}
+// ANCHOR_END: uniform
+
+/// The map, the samplers that read it, and the pass that renders it.
+/// Inputs: the light's box, the settings, and what casts shadows; output:
+/// [`ShadowMap::group`], group 3 of any shader that imports
+/// `shadows::shadow`. A piece of its own, so that chapter 11 can cast
+/// shadows too.
+pub struct ShadowMap {
+    /// Texels along each side, after clamping.
+    pub size: u32,
+    /// What clamping the requested size had to say, if anything.
+    pub note: Option<String>,
+    pub view: wgpu::TextureView,
+    uniform: wgpu::Buffer,
+    compare_nearest: wgpu::Sampler,
+    compare_linear: wgpu::Sampler,
+    pub layout: wgpu::BindGroupLayout,
+    pub group: wgpu::BindGroup,
+    caster_layout: wgpu::PipelineLayout,
+    caster_group: wgpu::BindGroup,
+    /// The shadow pass's pipeline, for the bias and culling it was made with.
+    caster: Option<(Bias, Cull, wgpu::RenderPipeline)>,
+    module: wgpu::ShaderModule,
+}
+
+/// One model and the instances of it that cast shadows.
+pub struct Caster<'a> {
+    pub vertices: &'a wgpu::Buffer,
+    pub indices: &'a wgpu::Buffer,
+    pub index_count: u32,
+    pub instances: std::ops::Range<u32>,
+}
+
+impl ShadowMap {
+    pub fn new(gpu: &Gpu, requested_size: u32) -> Result<Self, ShaderError> {
+        let device = &gpu.device;
+        let (size, note) = clamp_size(requested_size, device.limits().max_texture_dimension_2d);
+        // ANCHOR: samplers
+        // Comparison samplers: a lookup returns how many of the texels it
+        // reads pass `depth <= stored`, not the depth itself.
+        let comparison = |filter| {
+            device.create_sampler(&wgpu::SamplerDescriptor {
+                label: Some("shadow comparison"),
+                mag_filter: filter,
+                min_filter: filter,
+                compare: Some(wgpu::CompareFunction::LessEqual),
+                ..Default::default()
+            })
+        };
+        let compare_nearest = comparison(wgpu::FilterMode::Nearest);
+        let compare_linear = comparison(wgpu::FilterMode::Linear);
+        // ANCHOR_END: samplers
+        let fragment = wgpu::ShaderStages::FRAGMENT;
+        let layout = device.create_bind_group_layout(&wgpu::BindGroupLayoutDescriptor {
+            label: Some("shadow"),
+            entries: &[
+                wgpu::BindGroupLayoutEntry {
+                    binding: 0,
+                    visibility: fragment,
+                    ty: wgpu::BindingType::Texture {
+                        sample_type: wgpu::TextureSampleType::Depth,
+                        view_dimension: wgpu::TextureViewDimension::D2,
+                        multisampled: false,
+                    },
+                    count: None,
+                },
+                wgpu::BindGroupLayoutEntry {
+                    binding: 1,
+                    visibility: fragment,
+                    ty: wgpu::BindingType::Sampler(wgpu::SamplerBindingType::Comparison),
+                    count: None,
+                },
+                wgpu::BindGroupLayoutEntry {
+                    binding: 2,
+                    visibility: fragment,
+                    ty: wgpu::BindingType::Sampler(wgpu::SamplerBindingType::Comparison),
+                    count: None,
+                },
+                uniform_entry(3, fragment, std::mem::size_of::<ShadowUniform>()),
+            ],
+        });
+        let uniform = device.create_buffer(&wgpu::BufferDescriptor {
+            label: Some("shadow"),
+            size: std::mem::size_of::<ShadowUniform>() as u64,
+            usage: wgpu::BufferUsages::UNIFORM | wgpu::BufferUsages::COPY_DST,
+            mapped_at_creation: false,
+        });
+        let caster_group_layout = device.create_bind_group_layout(&wgpu::BindGroupLayoutDescriptor {
+            label: Some("shadow caster"),
+            entries: &[uniform_entry(0, wgpu::ShaderStages::VERTEX, 64)],
+        });
+        let caster_group = device.create_bind_group(&wgpu::BindGroupDescriptor {
+            label: Some("shadow caster"),
+            layout: &caster_group_layout,
+            entries: &[wgpu::BindGroupEntry {
+                binding: 0,
+                resource: wgpu::BindingResource::Buffer(wgpu::BufferBinding {
+                    buffer: &uniform,
+                    offset: 0,
+                    size: wgpu::BufferSize::new(64),
+                }),
+            }],
+        });
+        let caster_layout = device.create_pipeline_layout(&wgpu::PipelineLayoutDescriptor {
+            label: Some("shadow caster"),
+            bind_group_layouts: &[Some(&caster_group_layout)],
+            immediate_size: 0,
+        });
+        let module = Self::module(gpu)?;
+        let view = Self::texture(device, size);
+        let group = Self::group(device, &layout, &view, [&compare_nearest, &compare_linear], &uniform);
+        Ok(Self {
+            size,
+            note,
+            view,
+            uniform,
+            compare_nearest,
+            compare_linear,
+            layout,
+            group,
+            caster_layout,
+            caster_group,
+            caster: None,
+            module,
+        })
+    }
+
+    fn module(gpu: &Gpu) -> Result<wgpu::ShaderModule, ShaderError> {
+        shader!("shadows/caster.wgsl", imports: ["textures/surface.wgsl"]).module(&gpu.device)
+    }
+
+    // ANCHOR: texture
+    /// The map: a depth texture the shadow pass renders into and the main
+    /// pass samples.
+    fn texture(device: &wgpu::Device, size: u32) -> wgpu::TextureView {
+        device
+            .create_texture(&wgpu::TextureDescriptor {
+                label: Some("shadow map"),
+                size: wgpu::Extent3d { width: size, height: size, depth_or_array_layers: 1 },
+                mip_level_count: 1,
+                sample_count: 1,
+                dimension: wgpu::TextureDimension::D2,
+                format: SHADOW_FORMAT,
+                usage: wgpu::TextureUsages::RENDER_ATTACHMENT | wgpu::TextureUsages::TEXTURE_BINDING,
+                view_formats: &[],
+            })
+            .create_view(&Default::default())
+    }
+    // ANCHOR_END: texture
+
+    fn group(
+        device: &wgpu::Device,
+        layout: &wgpu::BindGroupLayout,
+        view: &wgpu::TextureView,
+        [nearest, linear]: [&wgpu::Sampler; 2],
+        uniform: &wgpu::Buffer,
+    ) -> wgpu::BindGroup {
+        device.create_bind_group(&wgpu::BindGroupDescriptor {
+            label: Some("shadow"),
+            layout,
+            entries: &[
+                wgpu::BindGroupEntry { binding: 0, resource: wgpu::BindingResource::TextureView(view) },
+                wgpu::BindGroupEntry { binding: 1, resource: wgpu::BindingResource::Sampler(nearest) },
+                wgpu::BindGroupEntry { binding: 2, resource: wgpu::BindingResource::Sampler(linear) },
+                wgpu::BindGroupEntry { binding: 3, resource: uniform.as_entire_binding() },
+            ],
+        })
+    }
+
+    /// Makes the map `requested` texels square (clamped), if it is not already.
+    pub fn resize(&mut self, device: &wgpu::Device, requested: u32) {
+        let (size, note) = clamp_size(requested, device.limits().max_texture_dimension_2d);
+        self.note = note;
+        if size == self.size {
+            return;
+        }
+        self.size = size;
+        self.view = Self::texture(device, size);
+        self.group =
+            Self::group(device, &self.layout, &self.view, [&self.compare_nearest, &self.compare_linear], &self.uniform);
+    }
+
+    pub fn reload_shaders(&mut self, gpu: &Gpu) -> Result<(), ShaderError> {
+        let module = Self::module(gpu)?;
+        self.module = module;
+        self.caster = None;
+        Ok(())
+    }
+
+    // ANCHOR: caster_pipeline
+    /// The shadow pass's pipeline: vertices only, into the depth format,
+    /// with the bias in its depth-stencil state.
+    fn caster_pipeline(&self, device: &wgpu::Device, bias: Bias, cull: Cull) -> wgpu::RenderPipeline {
+        device.create_render_pipeline(&wgpu::RenderPipelineDescriptor {
+            label: Some("shadow caster"),
+            layout: Some(&self.caster_layout),
+            vertex: wgpu::VertexState {
+                module: &self.module,
+                entry_point: Some("vs_caster"),
+                buffers: &[Some(TexturedVertex::LAYOUT), Some(ModelInstance::LAYOUT)],
+                compilation_options: Default::default(),
+            },
+            primitive: wgpu::PrimitiveState {
+                cull_mode: match cull {
+                    Cull::Back => Some(wgpu::Face::Back),
+                    Cull::Front => Some(wgpu::Face::Front),
+                    Cull::None => None,
+                },
+                ..Default::default()
+            },
+            depth_stencil: Some(wgpu::DepthStencilState {
+                format: SHADOW_FORMAT,
+                depth_write_enabled: Some(true),
+                depth_compare: Some(wgpu::CompareFunction::Less),
+                stencil: Default::default(),
+                bias: wgpu::DepthBiasState { constant: bias.constant, slope_scale: bias.slope_scale, clamp: 0.0 },
+            }),
+            multisample: Default::default(),
+            fragment: None,
+            multiview_mask: None,
+            cache: None,
+        })
+    }
+    // ANCHOR_END: caster_pipeline
+
+    /// Writes this frame's box and settings for both passes.
+    pub fn write(&self, gpu: &Gpu, light: &LightBox, settings: &ShadowSettings) {
+        let filter = Filter::ALL.iter().position(|f| *f == settings.filter).unwrap_or(0) as u32;
+        let uniform = ShadowUniform {
+            light_view_proj: light.view_proj.to_cols_array_2d(),
+            options: [filter, self.size, 0, 0],
+            params: [light.texel, settings.bias.normal_offset, settings.radius, settings.light_width],
+            extent: [light.depth, 0.0, 0.0, 0.0],
+        };
+        gpu.queue.write_buffer(&self.uniform, 0, bytemuck::bytes_of(&uniform));
+    }
+
+    // ANCHOR: render
+    /// The shadow pass: every caster's depth, as the sun sees it.
+    pub fn render(
+        &mut self,
+        gpu: &Gpu,
+        encoder: &mut wgpu::CommandEncoder,
+        timer: &PassTimer,
+        settings: &ShadowSettings,
+        instances: &wgpu::Buffer,
+        casters: &[Caster],
+    ) {
+        let (bias, cull) = (settings.bias, settings.cull);
+        if !matches!(&self.caster, Some((b, c, _)) if *b == bias && *c == cull) {
+            self.caster = Some((bias, cull, self.caster_pipeline(&gpu.device, bias, cull)));
+        }
+        let Some((_, _, pipeline)) = &self.caster else { return };
+        let mut pass = encoder.begin_render_pass(&wgpu::RenderPassDescriptor {
+            label: Some("shadow map"),
+            color_attachments: &[],
+            depth_stencil_attachment: Some(wgpu::RenderPassDepthStencilAttachment {
+                view: &self.view,
+                depth_ops: Some(wgpu::Operations { load: wgpu::LoadOp::Clear(1.0), store: wgpu::StoreOp::Store }),
+                stencil_ops: None,
+            }),
+            timestamp_writes: timer.pass("shadow map"),
+            ..Default::default()
+        });
+        pass.set_pipeline(pipeline);
+        pass.set_bind_group(0, &self.caster_group, &[]);
+        pass.set_vertex_buffer(1, instances.slice(..));
+        for caster in casters.iter().filter(|c| !c.instances.is_empty()) {
+            pass.set_vertex_buffer(0, caster.vertices.slice(..));
+            pass.set_index_buffer(caster.indices.slice(..), wgpu::IndexFormat::Uint32);
+            pass.draw_indexed(0..caster.index_count, 0, caster.instances.clone());
+        }
+    }
+    // ANCHOR_END: render
+}
+
+/// The `shadow-map` view: the map drawn full screen, its depths stretched
+/// over a range so that the level's shapes stand out.
+pub struct MapView {
+    format: wgpu::TextureFormat,
+    layout: wgpu::BindGroupLayout,
+    pipeline_layout: wgpu::PipelineLayout,
+    pipeline: wgpu::RenderPipeline,
+    uniform: wgpu::Buffer,
+}
+
+impl MapView {
+    pub fn new(gpu: &Gpu, format: wgpu::TextureFormat) -> Result<Self, ShaderError> {
+        let device = &gpu.device;
+        let layout = device.create_bind_group_layout(&wgpu::BindGroupLayoutDescriptor {
+            label: Some("shadow map view"),
+            entries: &[
+                common::chapter::texture_entry(0, wgpu::TextureSampleType::Depth),
+                uniform_entry(1, wgpu::ShaderStages::FRAGMENT, 16),
+            ],
+        });
+        let pipeline_layout = device.create_pipeline_layout(&wgpu::PipelineLayoutDescriptor {
+            label: Some("shadow map view"),
+            bind_group_layouts: &[Some(&layout)],
+            immediate_size: 0,
+        });
+        let uniform = device.create_buffer(&wgpu::BufferDescriptor {
+            label: Some("shadow map view"),
+            size: 16,
+            usage: wgpu::BufferUsages::UNIFORM | wgpu::BufferUsages::COPY_DST,
+            mapped_at_creation: false,
+        });
+        let pipeline = Self::pipeline(gpu, &pipeline_layout, format)?;
+        Ok(Self { format, layout, pipeline_layout, pipeline, uniform })
+    }
+
+    fn pipeline(
+        gpu: &Gpu,
+        layout: &wgpu::PipelineLayout,
+        format: wgpu::TextureFormat,
+    ) -> Result<wgpu::RenderPipeline, ShaderError> {
+        let module = shader!("shadows/show_depth.wgsl", imports: ["common/fullscreen.wgsl"]).module(&gpu.device)?;
+        gpu.catch_validation(|| {
+            common::fullscreen::pipeline(
+                &gpu.device,
+                "shadow map view",
+                layout,
+                &module,
+                "fs_depth",
+                format.into(),
+                None,
+            )
+        })
+        .map_err(ShaderError)
+    }
+
+    pub fn reload_shaders(&mut self, gpu: &Gpu) -> Result<(), ShaderError> {
+        self.pipeline = Self::pipeline(gpu, &self.pipeline_layout, self.format)?;
+        Ok(())
+    }
+
+    /// Draws `map` over the frame's target, depths `range.0` black to
+    /// `range.1` white, for a target `aspect` wide per unit of height.
+    pub fn draw(&self, gpu: &Gpu, frame: &mut common::Frame, map: &ShadowMap, range: (f32, f32), aspect: f32) {
+        gpu.queue.write_buffer(&self.uniform, 0, bytemuck::cast_slice(&[range.0, range.1, aspect, 0.0]));
+        let group = gpu.device.create_bind_group(&wgpu::BindGroupDescriptor {
+            label: Some("shadow map view"),
+            layout: &self.layout,
+            entries: &[
+                wgpu::BindGroupEntry { binding: 0, resource: wgpu::BindingResource::TextureView(&map.view) },
+                wgpu::BindGroupEntry { binding: 1, resource: self.uniform.as_entire_binding() },
+            ],
+        });
+        let mut pass = common::fullscreen::pass(
+            frame.encoder,
+            frame.timer,
+            "shadow map view",
+            frame.target,
+            Some(wgpu::Color::BLACK),
+        );
+        pass.set_pipeline(&self.pipeline);
+        pass.set_bind_group(0, &group, &[]);
+        pass.draw(0..3, 0..1);
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn sizes_are_clamped_to_the_chapter_and_the_adapter_with_a_note() {
+        assert_eq!(clamp_size(2048, 8192), (2048, None));
+        let (size, note) = clamp_size(16384, 8192);
+        assert_eq!(size, 4096);
+        assert!(note.unwrap().contains("using 4096²"));
+        assert_eq!(clamp_size(100, 8192).0, 512);
+        // WebGL 2 promises only 2048.
+        let (size, note) = clamp_size(4096, 2048);
+        assert_eq!(size, 2048);
+        assert!(note.unwrap().contains("at most 2048²"));
+    }
+
+    #[test]
+    fn the_poisson_disk_is_sixteen_well_spread_points_in_the_unit_disk() {
+        let source = include_str!("../../../shaders/shadows/shadow.wgsl");
+        let table = source.split("const POISSON").nth(1).unwrap().split(");").next().unwrap();
+        let points: Vec<[f32; 2]> = table
+            .split("vec2<f32>(")
+            .skip(1)
+            .map(|p| {
+                let numbers: Vec<f32> =
+                    p.split(')').next().unwrap().split(',').map(|n| n.trim().parse().unwrap()).collect();
+                [numbers[0], numbers[1]]
+            })
+            .collect();
+        assert_eq!(points.len(), 16);
+        let mut closest = f32::MAX;
+        for (i, a) in points.iter().enumerate() {
+            assert!(a[0].hypot(a[1]) <= 1.0, "{a:?} is outside the unit disk");
+            for b in &points[i + 1..] {
+                closest = closest.min((a[0] - b[0]).hypot(a[1] - b[1]));
+            }
+        }
+        assert!(closest >= 0.43, "two points only {closest} apart");
+    }
+
+    // ANCHOR: snapping_test
+    #[test]
+    fn sliding_the_view_moves_the_box_by_whole_texels_and_keeps_its_size() {
+        let towards_sun = Vec3::new(-0.7, 0.58, 0.41).normalize();
+        let view = [Vec3::new(-18.0, -9.0, 4.0), Vec3::new(18.0, 10.0, 4.0), Vec3::new(-22.0, -11.0, -4.0)];
+        let bounds = (Vec3::new(-5.0, -6.0, -4.0), Vec3::new(125.0, 9.0, 4.0));
+        let first = fit_light(towards_sun, &view, bounds, 2048);
+        for slide in [0.013, 0.5, 7.31, 40.77] {
+            let moved: Vec<Vec3> = view.iter().map(|p| *p + Vec3::new(slide, slide * 0.3, 0.0)).collect();
+            let next = fit_light(towards_sun, &moved, bounds, 2048);
+            assert_eq!(next.texel, first.texel, "the texel's size changed after sliding {slide} m");
+            // A world point lands on the map a whole number of texels from
+            // where it landed before: texel edges stay put on the ground.
+            let p = Vec3::new(3.0, 0.0, 1.0);
+            let shift = (next.view_proj.project_point3(p) - first.view_proj.project_point3(p)) * 1024.0;
+            for axis in [shift.x, shift.y] {
+                assert!((axis - axis.round()).abs() < 0.02, "moved {axis} texels after sliding {slide} m");
+            }
+        }
+    }
+    // ANCHOR_END: snapping_test
+}

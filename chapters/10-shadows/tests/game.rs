@@ -1,0 +1,80 @@
+//! The game around the shadows: the scripted demo plays the whole level,
+//! the same time gives the same game, and bad frames break nothing.
+
+use shadows::game::{self, Controls, Game, MAX_FRAME_TIME, STEP};
+
+#[test]
+fn the_scripted_run_crosses_the_level_without_getting_stuck() {
+    let level = game::level();
+    let solids = level.solids();
+    let mut game = Game::new(&level);
+    let mut furthest = game.player.aabb.min.x;
+    let mut log = String::new();
+    for n in 0..(25.0 / STEP) as u32 {
+        game.step(&solids, game::script(game.time()));
+        furthest = furthest.max(game.player.aabb.min.x);
+        if n % 60 == 0 {
+            let p = game.player.aabb.min;
+            log += &format!("{:5.2} s: x {:6.2} y {:5.2}\n", game.time(), p.x, p.y);
+        }
+        for solid in &solids {
+            assert!(!solid.overlaps(&game.player.aabb), "inside {solid:?} at {} s\n{log}", game.time());
+        }
+    }
+    eprintln!("{log}");
+    assert!(furthest > 100.0, "the demo stopped at x = {furthest}\n{log}");
+}
+
+#[test]
+fn the_same_time_gives_the_same_game() {
+    let level = game::level();
+    let solids = level.solids();
+    for time in [0.0, 1.3, 7.77, 20.0] {
+        assert_eq!(game::demo_at(&level, &solids, time), game::demo_at(&level, &solids, time));
+    }
+}
+
+#[test]
+fn frames_of_any_length_are_split_into_fixed_steps() {
+    let level = game::level();
+    let solids = level.solids();
+    let right = Controls { right: true, ..Controls::default() };
+    // A minute hidden, then shown: at most MAX_FRAME_TIME is simulated.
+    let mut game = Game::new(&level);
+    let steps = game.advance(&solids, right, 60.0);
+    assert_eq!(steps, (MAX_FRAME_TIME / STEP).round() as u32);
+    for dt in [f32::NAN, f32::INFINITY, -1.0, 0.0] {
+        let before = game;
+        assert_eq!(game.advance(&solids, right, dt), 0, "dt = {dt}");
+        assert_eq!(game, before);
+    }
+    // Many short frames and few long ones take the same steps.
+    let (mut a, mut b) = (Game::new(&level), Game::new(&level));
+    for _ in 0..120 {
+        a.advance(&solids, right, 1.0 / 60.0);
+    }
+    for _ in 0..8 {
+        b.advance(&solids, right, 0.25);
+    }
+    assert_eq!(a.steps, b.steps);
+    assert!((a.player.aabb.min.x - b.player.aabb.min.x).abs() < 1e-4);
+}
+
+#[test]
+fn every_key_at_once_and_jump_every_frame_break_nothing() {
+    let level = game::level();
+    let solids = level.solids();
+    let mut game = Game::new(&level);
+    let all = Controls { left: true, right: true, jump: true };
+    let mut jumps = 0;
+    for _ in 0..1200 {
+        let was_on_floor = game.on_floor;
+        game.step(&solids, all);
+        jumps += u32::from(was_on_floor && game.player.velocity.y > 0.0);
+        assert!(game.player.aabb.min.is_finite() && game.player.velocity.is_finite());
+        assert!(solids.iter().all(|s| !s.overlaps(&game.player.aabb)));
+    }
+    // Left and right cancel: it hops on the spot, once per landing.
+    assert!((game.player.aabb.min.x - (level.spawn.x - 0.4)).abs() < 1e-4);
+    assert!(jumps > 5, "only {jumps} jumps in 10 s of holding jump");
+}

@@ -1,0 +1,262 @@
+//! Shadows against geometry: a box above a plane casts the shadow that
+//! rays towards the sun say it must; taking the bias away makes lit faces
+//! shadow themselves; the scripted run gives the same picture every time.
+
+use common::glam::{Vec2, Vec3};
+use common::headless::{OFFSCREEN_FORMAT, capture, read_floats};
+use common::{Camera, Chapter, Gpu, Target, primitives, wgpu};
+use lighting::lights::{Daylight, daylight};
+use lighting::{HDR_FORMAT, Highlight, LoopOptions, SceneLights};
+use shadows::shadow_map::{Bias, Filter, ShadowMap, ShadowSettings, fit_light};
+use shadows::{ShadowedRenderer, ShadowsChapter, Show, casters, game, scene};
+use textures::materials::{Materials, Uploader};
+use textures::mesh::{MaterialDesc, ModelData, ModelInstance};
+use textures::mipmaps::MipMaker;
+use textures::{Draw, DrawList, upload_model};
+
+const WIDTH: u32 = 320;
+const HEIGHT: u32 = 240;
+
+/// The box: a metre cube floating with its bottom 1.5 m above the plane.
+const BOX_MIN: Vec3 = Vec3::new(-0.5, 1.5, -0.5);
+const BOX_MAX: Vec3 = Vec3::new(0.5, 2.5, 0.5);
+/// The plane: y = 0, 12 m square.
+const PLANE_HALF: f32 = 6.0;
+
+/// Where the ray from `origin` along `direction` enters the box, if it does
+/// (the slab test).
+fn hits_box(origin: Vec3, direction: Vec3) -> Option<f32> {
+    let inverse = direction.recip();
+    let t0 = (BOX_MIN - origin) * inverse;
+    let t1 = (BOX_MAX - origin) * inverse;
+    let near = t0.min(t1).max_element();
+    let far = t0.max(t1).min_element();
+    (far >= near.max(0.0)).then_some(near)
+}
+
+/// What the plane point `p` is by geometry: in the box's shadow or not.
+fn in_shadow(p: Vec3, towards_sun: Vec3) -> bool {
+    hits_box(p, towards_sun).is_some()
+}
+
+// ANCHOR: analytic
+#[test]
+fn a_box_above_a_plane_casts_the_shadow_geometry_predicts() {
+    let gpu = Gpu::headless(ShadowsChapter::gpu_needs()).unwrap();
+    let device = &gpu.device;
+    // The scene, as chapter 09 models: a plane and a box, plain materials.
+    let grey = MaterialDesc::plain("grey", Vec3::splat(0.5), 0.0, 1.0);
+    let mut plane = ModelData::from_mesh(&primitives::plane(1), grey.clone());
+    plane.vertices.iter_mut().for_each(|v| v.position = (Vec3::from(v.position) * 2.0 * PLANE_HALF).into());
+    let mut cube = ModelData::from_mesh(&primitives::cube(), grey);
+    let centre = (BOX_MIN + BOX_MAX) / 2.0;
+    cube.vertices.iter_mut().for_each(|v| v.position = (Vec3::from(v.position) + centre).into());
+    let mut mips = MipMaker::new(&gpu).unwrap();
+    let mut up = Uploader::new(&gpu, &mut mips, &scene::read);
+    let mut materials = Materials::new(&mut up);
+    let plane = upload_model(&mut up, &mut materials, &plane, "plane");
+    let cube = upload_model(&mut up, &mut materials, &cube, "box");
+    up.finish();
+
+    // A sun from the left, in front, 50° up; a camera above the shadow,
+    // looking down at it.
+    let towards_sun = Vec3::new(-0.55, 0.77, 0.32).normalize();
+    let day = Daylight { direction: towards_sun, ..daylight(0.5) };
+    let camera = Camera::looking_at(Vec3::new(1.4, 6.0, 3.0), Vec3::new(1.4, 0.0, -0.8), WIDTH as f32 / HEIGHT as f32);
+    let corners = [-1.0, 1.0].map(|x| [-1.0, 1.0].map(|z| Vec3::new(x * PLANE_HALF, 0.0, z * PLANE_HALF)));
+    let focus: Vec<Vec3> = corners.iter().flatten().copied().chain([BOX_MIN, BOX_MAX]).collect();
+    let bounds = (Vec3::new(-PLANE_HALF, 0.0, -PLANE_HALF), Vec3::new(PLANE_HALF, BOX_MAX.y, PLANE_HALF));
+    let settings = ShadowSettings { size: 1024, filter: Filter::Hard, bias: Bias::DEFAULT, ..Default::default() };
+    let light = fit_light(towards_sun, &focus, bounds, settings.size);
+
+    let mut lights = SceneLights::new(device);
+    let options = LoopOptions { culling: false, highlight: Highlight::BlinnPhong, heat_map: false };
+    lights.write(&gpu, &camera, &day, &[], &Default::default(), options);
+    let mut shadow = ShadowMap::new(&gpu, settings.size).unwrap();
+    shadow.write(&gpu, &light, &settings);
+    let renderer = ShadowedRenderer::new(&gpu, &lights, &materials, &shadow).unwrap();
+    let instances = wgpu::util::DeviceExt::create_buffer_init(
+        device,
+        &wgpu::util::BufferInitDescriptor {
+            label: Some("instances"),
+            contents: bytemuck::cast_slice(&[ModelInstance::new(common::glam::Mat4::IDENTITY, 1.0)]),
+            usage: wgpu::BufferUsages::VERTEX,
+        },
+    );
+    let list = DrawList {
+        materials: &materials,
+        instances: &instances,
+        draws: vec![Draw { model: &plane, instances: 0..1 }, Draw { model: &cube, instances: 0..1 }],
+    };
+    let target = device.create_texture(&wgpu::TextureDescriptor {
+        label: Some("sunlit"),
+        size: wgpu::Extent3d { width: WIDTH, height: HEIGHT, depth_or_array_layers: 1 },
+        mip_level_count: 1,
+        sample_count: 1,
+        dimension: wgpu::TextureDimension::D2,
+        format: HDR_FORMAT,
+        usage: wgpu::TextureUsages::RENDER_ATTACHMENT | wgpu::TextureUsages::COPY_SRC,
+        view_formats: &[],
+    });
+    let view = target.create_view(&Default::default());
+    let depth = common::texture::depth_view(device, WIDTH, HEIGHT);
+    let mut encoder = device.create_command_encoder(&Default::default());
+    let timer = common::PassTimer::off();
+    shadow.render(&gpu, &mut encoder, &timer, &settings, &instances, &casters(&list));
+    {
+        let mut pass = common::chapter::scene_pass(&mut encoder, &timer, "sunlit", &view, wgpu::Color::BLACK, &depth);
+        pass.set_bind_group(0, &lights.group, &[]);
+        renderer.draw(&mut pass, &shadow, &list, true);
+    }
+    gpu.queue.submit([encoder.finish()]);
+    let pixels = read_floats(&gpu, &target).unwrap();
+
+    // Every pixel that shows the plane, checked against the ray towards
+    // the sun from the point it shows. Within a few texels of the shadow's
+    // edge either answer is fair: the map's texels are that coarse, and the
+    // normal offset moves the lookup by one.
+    let inverse = camera.view_projection().inverse();
+    let margin = 3.0 * light.texel;
+    let (mut checked, mut shadowed, mut wrong) = (0, 0, Vec::new());
+    for y in 0..HEIGHT {
+        for x in 0..WIDTH {
+            let ndc =
+                Vec2::new((x as f32 + 0.5) / WIDTH as f32 * 2.0 - 1.0, 1.0 - (y as f32 + 0.5) / HEIGHT as f32 * 2.0);
+            let near = inverse.project_point3(ndc.extend(0.0));
+            let far = inverse.project_point3(ndc.extend(1.0));
+            let direction = (far - near).normalize();
+            let t = -near.y / direction.y;
+            let p = near + direction * t;
+            let on_plane = p.x.abs() < PLANE_HALF - margin && p.z.abs() < PLANE_HALF - margin;
+            if !on_plane || hits_box(near, direction).is_some_and(|hit| hit < t) {
+                continue;
+            }
+            let expected = in_shadow(p, towards_sun);
+            let near_edge = [Vec3::X, Vec3::NEG_X, Vec3::Z, Vec3::NEG_Z]
+                .iter()
+                .any(|d| in_shadow(p + *d * margin, towards_sun) != expected);
+            if near_edge {
+                continue;
+            }
+            let sunlit = pixels[(y * WIDTH + x) as usize][0];
+            checked += 1;
+            shadowed += usize::from(expected);
+            if (sunlit < 0.5) != expected {
+                wrong.push((x, y, p, sunlit));
+            }
+        }
+    }
+    assert!(checked > 20_000 && shadowed > 1_000, "{checked} plane pixels checked, {shadowed} of them in shadow");
+    assert!(
+        wrong.is_empty(),
+        "{} of {checked} pixels disagree with geometry, e.g. {:?}",
+        wrong.len(),
+        &wrong[..wrong.len().min(5)]
+    );
+}
+// ANCHOR_END: analytic
+
+/// Pixels whose surface faces the sun and yet get less than half its light.
+fn shadowed_lit_faces(gpu: &Gpu, view: &str) -> (usize, usize) {
+    let target = Target { format: OFFSCREEN_FORMAT, width: 480, height: 270 };
+    let mut chapter = ShadowsChapter::new(gpu, target).unwrap();
+    chapter.settings = shadows::Settings { show: Show::Sunlit, ..shadows::Settings::for_view(view) };
+    let index = common::chapter::view_index::<ShadowsChapter>(view).unwrap();
+    let image = capture(gpu, &mut chapter, target, ShadowsChapter::SNAPSHOT_TIME, index).unwrap();
+    let facing = image.pixels().filter(|p| p[1] > 128).count();
+    let dark = image.pixels().filter(|p| p[1] > 128 && p[0] < 128).count();
+    (dark, facing)
+}
+
+// ANCHOR: acne
+#[test]
+fn without_bias_lit_faces_shadow_themselves() {
+    let gpu = Gpu::headless(ShadowsChapter::gpu_needs()).unwrap();
+    let (acne, facing) = shadowed_lit_faces(&gpu, "acne");
+    let (biased, facing_too) = shadowed_lit_faces(&gpu, "default");
+    assert_eq!(facing, facing_too, "the same surfaces face the sun in both");
+    eprintln!("shadowed pixels on faces towards the sun: {acne} without bias, {biased} with, of {facing}");
+    // Real shadows fall on sunward faces too (the ground behind a wall),
+    // so the biased count is not zero; acne adds its stripes on top.
+    assert!(acne as f64 > 1.5 * biased as f64 + 1000.0, "acne: {acne}, biased: {biased}, of {facing}");
+}
+// ANCHOR_END: acne
+
+#[test]
+fn the_scripted_run_gives_the_same_bytes_however_it_was_reached() {
+    let gpu = Gpu::headless(ShadowsChapter::gpu_needs()).unwrap();
+    let target = Target { format: OFFSCREEN_FORMAT, width: 320, height: 180 };
+    let picture = |times: &[f32]| {
+        let mut chapter = ShadowsChapter::new(&gpu, target).unwrap();
+        let mut last = None;
+        for &time in times {
+            last = Some(capture(&gpu, &mut chapter, target, time, 0).unwrap());
+        }
+        last.unwrap()
+    };
+    let fresh = picture(&[5.7]);
+    assert_eq!(fresh.as_raw(), picture(&[5.7]).as_raw(), "two fresh runs to 5.7 s");
+    // A window plays the demo forward frame by frame, and a rewound clock
+    // replays it from the start: either way, the same picture.
+    assert_eq!(fresh.as_raw(), picture(&[1.0, 3.3, 5.7]).as_raw(), "stepped on from earlier frames");
+    assert_eq!(fresh.as_raw(), picture(&[9.0, 5.7]).as_raw(), "after going back in time");
+    assert_ne!(fresh.as_raw(), picture(&[5.9]).as_raw(), "a fifth of a second later, the player has moved");
+}
+
+#[test]
+fn a_bad_shadow_map_size_is_named_and_a_huge_one_is_clamped_with_a_note() {
+    let run = |size: &str| {
+        let out = std::env::temp_dir().join(format!("shadows-flag-{}-{size}.png", std::process::id()));
+        let output = std::process::Command::new(env!("CARGO_BIN_EXE_shadows"))
+            .args(["--screenshot", out.to_str().unwrap(), "--size", "64x36", "--shadow-map-size", size])
+            .output()
+            .unwrap();
+        let _ = std::fs::remove_file(&out);
+        (output.status.code(), String::from_utf8_lossy(&output.stderr).into_owned())
+    };
+    let (code, stderr) = run("lots");
+    assert_eq!(code, Some(2), "{stderr}");
+    assert!(stderr.contains("--shadow-map-size") && stderr.contains("'lots'"), "{stderr}");
+    let (code, stderr) = run("100000");
+    assert_eq!(code, Some(0), "{stderr}");
+    assert!(stderr.contains("using 4096²"), "{stderr}");
+}
+
+#[test]
+fn a_key_takes_over_from_the_demo_and_every_key_at_once_breaks_nothing() {
+    use common::Input;
+    use common::winit::keyboard::KeyCode;
+    let gpu = Gpu::headless(ShadowsChapter::gpu_needs()).unwrap();
+    let target = Target { format: OFFSCREEN_FORMAT, width: 160, height: 90 };
+    let mut chapter = ShadowsChapter::new(&gpu, target).unwrap();
+    let demo = capture(&gpu, &mut chapter, target, 0.0, 0).unwrap();
+    let mut input = Input::default();
+    chapter.update(&input, 1.0 / 60.0);
+    assert!(chapter.played_by_keys().is_none(), "no key, still the demo");
+    input.key_down(KeyCode::KeyD);
+    for _ in 0..60 {
+        chapter.update(&input, 1.0 / 60.0);
+        input.end_frame();
+    }
+    let game = *chapter.played_by_keys().expect("D took over");
+    assert!(game.player.aabb.min.x > game::level().spawn.x + 2.0, "ran right: {:?}", game.player.aabb);
+    assert_ne!(demo.as_raw(), capture(&gpu, &mut chapter, target, 0.0, 0).unwrap().as_raw(), "the camera followed");
+    // Every key at once, frames of every length, a window hidden for an hour.
+    for key in [KeyCode::KeyA, KeyCode::ArrowLeft, KeyCode::ArrowRight, KeyCode::Space, KeyCode::KeyW, KeyCode::ArrowUp]
+    {
+        input.key_down(key);
+    }
+    for dt in [0.0, 1e-7, 1.0 / 30.0, 3600.0, f32::NAN, -1.0] {
+        chapter.update(&input, dt);
+        input.end_frame();
+    }
+    // Let go: the player comes to rest on whatever it landed on.
+    input.release_all();
+    for _ in 0..240 {
+        chapter.update(&input, 1.0 / 60.0);
+    }
+    let rest = chapter.played_by_keys().unwrap().player;
+    assert_eq!(rest.velocity, Vec2::ZERO, "{rest:?}");
+    let solids = game::level().solids();
+    assert!(shadows::physics::standing(&rest.aabb, &solids), "{rest:?}");
+}
