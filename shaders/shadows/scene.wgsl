@@ -2,31 +2,14 @@
 // in chapter 08, with the sun's light taken away where the shadow map says
 // something stands between the surface and the sun.
 #import lighting::lights::{frame, Surface, light_surface_sunlit}
-#import textures::surface::{Vertex, Instance, place, material, albedo_map, normal_map, surface_frame, mapped_normal}
+#import textures::surface::{Vertex, Instance, Varyings, vary, material, albedo_map, normal_map, surface_frame, mapped_normal}
 #import shadows::shadow::sunlit
 
 @group(2) @binding(0) var surface_sampler: sampler;
 
-struct Varyings {
-    @builtin(position) clip_position: vec4<f32>,
-    @location(0) world: vec3<f32>,
-    @location(1) normal: vec3<f32>,
-    @location(2) uv: vec2<f32>,
-    @location(3) tangent: vec4<f32>,
-    @location(4) glow: f32,
-};
-
 @vertex
 fn vs_main(vertex: Vertex, instance: Instance) -> Varyings {
-    let placed = place(vertex, instance);
-    var out: Varyings;
-    out.clip_position = frame.view_proj * vec4<f32>(placed.world, 1.0);
-    out.world = placed.world;
-    out.normal = placed.normal;
-    out.uv = vertex.uv;
-    out.tangent = placed.tangent;
-    out.glow = instance.glow;
-    return out;
+    return vary(vertex, instance, frame.view_proj);
 }
 
 // ANCHOR: fragment

@@ -45,6 +45,24 @@ fn place(vertex: Vertex, instance: Instance) -> Placed {
     let world = (model * vec4<f32>(vertex.position, 1.0)).xyz;
     return Placed(world, normal_matrix * vertex.normal, vec4<f32>(tangent, handedness));
 }
+
+// What a textured surface's vertex hands its fragments: where it is on
+// screen (through `view_proj`) and in the world, its frame, its texture
+// coordinates and its instance's glow.
+struct Varyings {
+    @builtin(position) clip_position: vec4<f32>,
+    @location(0) world: vec3<f32>,
+    @location(1) normal: vec3<f32>,
+    @location(2) uv: vec2<f32>,
+    @location(3) tangent: vec4<f32>,
+    @location(4) glow: f32,
+};
+
+fn vary(vertex: Vertex, instance: Instance, view_proj: mat4x4<f32>) -> Varyings {
+    let placed = place(vertex, instance);
+    let clip = view_proj * vec4<f32>(placed.world, 1.0);
+    return Varyings(clip, placed.world, placed.normal, vertex.uv, placed.tangent, instance.glow);
+}
 // ANCHOR_END: vertex
 
 // ANCHOR: material

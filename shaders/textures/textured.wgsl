@@ -3,7 +3,7 @@
 // format), the normal map bends the normal in the surface's own frame
 // (tangent, bitangent, normal), and `light_surface` does the rest.
 #import lighting::lights::{frame, Surface, light_surface}
-#import textures::surface::{Vertex, Instance, place, material, albedo_map, normal_map, Frame3, surface_frame, mapped_normal}
+#import textures::surface::{Vertex, Instance, Varyings, vary, material, albedo_map, normal_map, Frame3, surface_frame, mapped_normal}
 
 // ANCHOR: bindings
 // How this frame reads surfaces (lib.rs: ViewOptions).
@@ -18,26 +18,9 @@ struct ViewOptions {
 @group(2) @binding(1) var<uniform> options: ViewOptions;
 // ANCHOR_END: bindings
 
-struct Varyings {
-    @builtin(position) clip_position: vec4<f32>,
-    @location(0) world: vec3<f32>,
-    @location(1) normal: vec3<f32>,
-    @location(2) uv: vec2<f32>,
-    @location(3) tangent: vec4<f32>,
-    @location(4) glow: f32,
-};
-
 @vertex
 fn vs_main(vertex: Vertex, instance: Instance) -> Varyings {
-    let placed = place(vertex, instance);
-    var out: Varyings;
-    out.clip_position = frame.view_proj * vec4<f32>(placed.world, 1.0);
-    out.world = placed.world;
-    out.normal = placed.normal;
-    out.uv = vertex.uv;
-    out.tangent = placed.tangent;
-    out.glow = instance.glow;
-    return out;
+    return vary(vertex, instance, frame.view_proj);
 }
 
 // The surface's frame at this fragment, from the interpolated normal and

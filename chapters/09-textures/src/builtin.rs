@@ -10,6 +10,9 @@ use common::files::ReadError;
 
 use crate::obj::normalise;
 
+/// `(path, bytes)` for files under `assets/`, embedded in the binary of
+/// the crate that calls it (chapter 10 lists its own files with it).
+#[macro_export]
 macro_rules! builtin {
     ($($path:literal),* $(,)?) => {
         &[$(($path, include_bytes!(concat!(env!("CARGO_MANIFEST_DIR"), "/../../assets/", $path)))),*]

@@ -32,7 +32,7 @@ use textures::{Draw, DrawList, obj, upload_model};
 use game::{Controls, Game, Level, PropKind};
 use lines::{LineList, Lines};
 use parallax::Parallax;
-use shadow_map::{Bias, Caster, Cull, Filter, LightBox, ShadowMap, ShadowSettings, fit_light};
+use shadow_map::{Bias, Cull, Filter, LightBox, ShadowMap, ShadowSettings, fit_light};
 
 // ANCHOR: views
 pub const VIEWS: &[View] = &[
@@ -196,9 +196,9 @@ impl ShadowedRenderer {
             label: Some("surface sampler"),
             entries: &[sampler_entry(0)],
         });
-        let anisotropy =
-            gpu.adapter.get_downlevel_capabilities().flags.contains(wgpu::DownlevelFlags::ANISOTROPIC_FILTERING);
-        let sampler = device.create_sampler(&SamplerMode::Mipmaps.descriptor(anisotropy));
+        // Trilinear, as chapter 09's default (never anisotropic, so the
+        // adapter's support does not matter).
+        let sampler = device.create_sampler(&SamplerMode::Mipmaps.descriptor(false));
         let sampler_group = device.create_bind_group(&wgpu::BindGroupDescriptor {
             label: Some("surface sampler"),
             layout: &layout,
@@ -245,19 +245,6 @@ impl ShadowedRenderer {
     // ANCHOR_END: draw
 }
 
-/// The casters of a draw list: every model, every instance.
-pub fn casters<'a>(list: &DrawList<'a>) -> Vec<Caster<'a>> {
-    list.draws
-        .iter()
-        .map(|d| Caster {
-            vertices: &d.model.vertices,
-            indices: &d.model.indices,
-            index_count: d.model.parts.iter().map(|p| p.indices.end).max().unwrap_or(0),
-            instances: d.instances.clone(),
-        })
-        .collect()
-}
-
 /// The models the level is drawn with.
 struct Models {
     level: GpuModel,
@@ -300,7 +287,13 @@ pub struct ShadowsChapter {
     play: Play,
     materials: Materials,
     models: Models,
+    /// Every instance: the level's and the props', which never move, then
+    /// the player's, written each frame.
     instances: wgpu::Buffer,
+    /// Which model (an index into `Models`' order) draws which instances.
+    draws: Vec<(usize, std::ops::Range<u32>)>,
+    /// The box around everything that casts a shadow.
+    bounds: (Vec3, Vec3),
     renderer: ShadowedRenderer,
     pub shadow_map: ShadowMap,
     map_view: shadow_map::MapView,
@@ -349,25 +342,27 @@ impl ShadowsChapter {
         }
     }
 
-    /// This frame's instances (level, trees, rocks, crates, player), written
-    /// to the GPU, and the draws that use them.
-    fn frame_draws(&mut self, gpu: &Gpu, game: &Game) -> Vec<(usize, std::ops::Range<u32>)> {
+    /// The instances of the level (one), the trees, rocks and crates, and a
+    /// last one for the player, with the draws that use them.
+    fn level_instances(level: &Level, game: &Game) -> (Vec<ModelInstance>, Vec<(usize, std::ops::Range<u32>)>) {
         let mut instances = vec![ModelInstance::new(Mat4::IDENTITY, 1.0)];
         let mut draws = vec![(0, 0..1)];
         for (which, kind) in [(1, PropKind::Tree), (2, PropKind::Rock), (3, PropKind::Crate)] {
             let start = instances.len() as u32;
-            instances.extend(scene::prop_instances(&self.level, kind));
+            instances.extend(scene::prop_instances(level, kind));
             draws.push((which, start..instances.len() as u32));
         }
         let start = instances.len() as u32;
         instances.push(scene::player_instance(game));
         draws.push((4, start..start + 1));
-        let bytes = std::mem::size_of_val(instances.as_slice()) as u64;
-        if bytes > self.instances.size() {
-            self.instances = instance_buffer(&gpu.device, bytes.next_power_of_two());
-        }
-        gpu.queue.write_buffer(&self.instances, 0, bytemuck::cast_slice(&instances));
-        draws
+        (instances, draws)
+    }
+
+    /// Moves the player's instance, the last one, to where `game` has it.
+    fn place_player(&self, gpu: &Gpu, game: &Game) {
+        let size = std::mem::size_of::<ModelInstance>() as u64;
+        let offset = self.instances.size() - size;
+        gpu.queue.write_buffer(&self.instances, offset, bytemuck::bytes_of(&scene::player_instance(game)));
     }
 
     /// The collision boxes, as the physics sees them, in the plane z = 0.
@@ -381,15 +376,6 @@ impl ShadowsChapter {
         list.rectangle(game.player.aabb.min.extend(0.0), game.player.aabb.max.extend(0.0), player);
         list
     }
-}
-
-fn instance_buffer(device: &wgpu::Device, size: u64) -> wgpu::Buffer {
-    device.create_buffer(&wgpu::BufferDescriptor {
-        label: Some("instances"),
-        size,
-        usage: wgpu::BufferUsages::VERTEX | wgpu::BufferUsages::COPY_DST,
-        mapped_at_creation: false,
-    })
 }
 
 impl Chapter for ShadowsChapter {
@@ -452,6 +438,16 @@ impl Chapter for ShadowsChapter {
         let mut tone_map = ToneMap::new(gpu, target.format)?;
         tone_map.set_inputs(device, &hdr.colour, bloom.output());
         let solids = level.solids();
+        let bounds = scene::level_bounds(&level);
+        let (instances, draws) = Self::level_instances(&level, &Game::new(&level));
+        let instances = wgpu::util::DeviceExt::create_buffer_init(
+            device,
+            &wgpu::util::BufferInitDescriptor {
+                label: Some("instances"),
+                contents: bytemuck::cast_slice(&instances),
+                usage: wgpu::BufferUsages::VERTEX | wgpu::BufferUsages::COPY_DST,
+            },
+        );
         Ok(Self {
             settings: Settings::for_view("default"),
             play: Play::Demo(Game::new(&level)),
@@ -459,7 +455,9 @@ impl Chapter for ShadowsChapter {
             level,
             materials,
             models,
-            instances: instance_buffer(device, 64 * std::mem::size_of::<ModelInstance>() as u64),
+            instances,
+            draws,
+            bounds,
             renderer,
             shadow_map,
             map_view,
@@ -531,7 +529,7 @@ impl Chapter for ShadowsChapter {
         // The sun's box is fitted to what the game's camera sees, whichever
         // camera draws the picture.
         let game_camera = side_camera(player, CAMERA_DISTANCE, self.target.aspect());
-        let bounds = scene::level_bounds(&self.level);
+        let bounds = self.bounds;
         let visible = visible_part(&game_camera, bounds.1.z);
         let focus: Vec<Vec3> = match s.fit {
             Fit::Visible => visible.to_vec(),
@@ -556,17 +554,21 @@ impl Chapter for ShadowsChapter {
         let options = LoopOptions { culling: false, highlight: Highlight::BlinnPhong, heat_map: false };
         self.scene_lights.write(gpu, &camera, &day, &[], &Default::default(), options);
         self.sky.write(gpu, &camera, &day);
-        let draws = self.frame_draws(gpu, &game);
+        self.place_player(gpu, &game);
         let m = &self.models;
         let models = [&m.level, &m.tree, &m.rock, &m.krate, &m.player];
         let list = DrawList {
             materials: &self.materials,
             instances: &self.instances,
-            draws: draws.into_iter().map(|(i, instances)| Draw { model: models[i], instances }).collect(),
+            draws: self
+                .draws
+                .iter()
+                .map(|(i, instances)| Draw { model: models[*i], instances: instances.clone() })
+                .collect(),
         };
 
         // Pass one: the sun's view, depth only.
-        self.shadow_map.render(gpu, frame.encoder, frame.timer, &s.shadow, &self.instances, &casters(&list));
+        self.shadow_map.render(gpu, frame.encoder, frame.timer, &s.shadow, &list);
         if s.show == Show::ShadowMap {
             let range = visible.map(|p| light.view_proj.project_point3(p).z);
             let (lo, hi) = range.iter().fold((f32::MAX, f32::MIN), |(lo, hi), z| (lo.min(*z), hi.max(*z)));

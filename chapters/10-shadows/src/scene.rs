@@ -14,15 +14,9 @@ use textures::scenes::world_uvs;
 
 use crate::game::{Game, Level, PropKind, Surface};
 
-macro_rules! builtin {
-    ($($path:literal),* $(,)?) => {
-        &[$(($path, include_bytes!(concat!(env!("CARGO_MANIFEST_DIR"), "/../../assets/", $path)))),*]
-    };
-}
-
 /// The files this chapter carries besides chapter 09's: the models it
 /// dresses the level with, the crate's wood, and the background layers.
-const FILES: &[(&str, &[u8])] = builtin![
+const FILES: &[(&str, &[u8])] = textures::builtin![
     "models/tree/tree.obj",
     "models/tree/tree.mtl",
     "models/rock/rock.obj",

@@ -4,9 +4,10 @@
 //! renders the depth with a bias, and binds the map for the main pass with
 //! the settings its filters need.
 
-use common::chapter::uniform_entry;
+use common::chapter::{texture_entry, uniform_entry};
 use common::glam::{Mat4, Vec3};
 use common::{Gpu, PassTimer, ShaderError, shader, wgpu};
+use textures::DrawList;
 use textures::mesh::{ModelInstance, TexturedVertex};
 
 // ANCHOR: settings
@@ -224,12 +225,14 @@ pub struct ShadowMap {
     module: wgpu::ShaderModule,
 }
 
-/// One model and the instances of it that cast shadows.
-pub struct Caster<'a> {
-    pub vertices: &'a wgpu::Buffer,
-    pub indices: &'a wgpu::Buffer,
-    pub index_count: u32,
-    pub instances: std::ops::Range<u32>,
+/// A comparison sampler read by fragment shaders.
+fn comparison_entry(binding: u32) -> wgpu::BindGroupLayoutEntry {
+    wgpu::BindGroupLayoutEntry {
+        binding,
+        visibility: wgpu::ShaderStages::FRAGMENT,
+        ty: wgpu::BindingType::Sampler(wgpu::SamplerBindingType::Comparison),
+        count: None,
+    }
 }
 
 impl ShadowMap {
@@ -255,28 +258,9 @@ impl ShadowMap {
         let layout = device.create_bind_group_layout(&wgpu::BindGroupLayoutDescriptor {
             label: Some("shadow"),
             entries: &[
-                wgpu::BindGroupLayoutEntry {
-                    binding: 0,
-                    visibility: fragment,
-                    ty: wgpu::BindingType::Texture {
-                        sample_type: wgpu::TextureSampleType::Depth,
-                        view_dimension: wgpu::TextureViewDimension::D2,
-                        multisampled: false,
-                    },
-                    count: None,
-                },
-                wgpu::BindGroupLayoutEntry {
-                    binding: 1,
-                    visibility: fragment,
-                    ty: wgpu::BindingType::Sampler(wgpu::SamplerBindingType::Comparison),
-                    count: None,
-                },
-                wgpu::BindGroupLayoutEntry {
-                    binding: 2,
-                    visibility: fragment,
-                    ty: wgpu::BindingType::Sampler(wgpu::SamplerBindingType::Comparison),
-                    count: None,
-                },
+                texture_entry(0, wgpu::TextureSampleType::Depth),
+                comparison_entry(1),
+                comparison_entry(2),
                 uniform_entry(3, fragment, std::mem::size_of::<ShadowUniform>()),
             ],
         });
@@ -381,11 +365,21 @@ impl ShadowMap {
             Self::group(device, &self.layout, &self.view, [&self.compare_nearest, &self.compare_linear], &self.uniform);
     }
 
+    /// A broken edit (one that validates but has no `vs_caster`, say)
+    /// leaves the old module and pipeline drawing.
     pub fn reload_shaders(&mut self, gpu: &Gpu) -> Result<(), ShaderError> {
-        let module = Self::module(gpu)?;
-        self.module = module;
-        self.caster = None;
-        Ok(())
+        let old = std::mem::replace(&mut self.module, Self::module(gpu)?);
+        let (bias, cull) = self.caster.as_ref().map_or((Bias::DEFAULT, Cull::Back), |(b, c, _)| (*b, *c));
+        match gpu.catch_validation(|| self.caster_pipeline(&gpu.device, bias, cull)) {
+            Ok(pipeline) => {
+                self.caster = Some((bias, cull, pipeline));
+                Ok(())
+            }
+            Err(message) => {
+                self.module = old;
+                Err(ShaderError(message))
+            }
+        }
     }
 
     // ANCHOR: caster_pipeline
@@ -437,15 +431,15 @@ impl ShadowMap {
     }
 
     // ANCHOR: render
-    /// The shadow pass: every caster's depth, as the sun sees it.
+    /// The shadow pass: the depth of every model in `casters`, as the sun
+    /// sees it (their materials play no part).
     pub fn render(
         &mut self,
         gpu: &Gpu,
         encoder: &mut wgpu::CommandEncoder,
         timer: &PassTimer,
         settings: &ShadowSettings,
-        instances: &wgpu::Buffer,
-        casters: &[Caster],
+        casters: &DrawList,
     ) {
         let (bias, cull) = (settings.bias, settings.cull);
         if !matches!(&self.caster, Some((b, c, _)) if *b == bias && *c == cull) {
@@ -465,11 +459,13 @@ impl ShadowMap {
         });
         pass.set_pipeline(pipeline);
         pass.set_bind_group(0, &self.caster_group, &[]);
-        pass.set_vertex_buffer(1, instances.slice(..));
-        for caster in casters.iter().filter(|c| !c.instances.is_empty()) {
-            pass.set_vertex_buffer(0, caster.vertices.slice(..));
-            pass.set_index_buffer(caster.indices.slice(..), wgpu::IndexFormat::Uint32);
-            pass.draw_indexed(0..caster.index_count, 0, caster.instances.clone());
+        pass.set_vertex_buffer(1, casters.instances.slice(..));
+        for draw in casters.draws.iter().filter(|d| !d.instances.is_empty()) {
+            pass.set_vertex_buffer(0, draw.model.vertices.slice(..));
+            pass.set_index_buffer(draw.model.indices.slice(..), wgpu::IndexFormat::Uint32);
+            for part in &draw.model.parts {
+                pass.draw_indexed(part.indices.clone(), 0, draw.instances.clone());
+            }
         }
     }
     // ANCHOR_END: render
@@ -491,7 +487,7 @@ impl MapView {
         let layout = device.create_bind_group_layout(&wgpu::BindGroupLayoutDescriptor {
             label: Some("shadow map view"),
             entries: &[
-                common::chapter::texture_entry(0, wgpu::TextureSampleType::Depth),
+                texture_entry(0, wgpu::TextureSampleType::Depth),
                 uniform_entry(1, wgpu::ShaderStages::FRAGMENT, 16),
             ],
         });

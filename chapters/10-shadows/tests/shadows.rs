@@ -8,7 +8,7 @@ use common::{Camera, Chapter, Gpu, Target, primitives, wgpu};
 use lighting::lights::{Daylight, daylight};
 use lighting::{HDR_FORMAT, Highlight, LoopOptions, SceneLights};
 use shadows::shadow_map::{Bias, Filter, ShadowMap, ShadowSettings, fit_light};
-use shadows::{ShadowedRenderer, ShadowsChapter, Show, casters, game, scene};
+use shadows::{ShadowedRenderer, ShadowsChapter, Show, game, scene};
 use textures::materials::{Materials, Uploader};
 use textures::mesh::{MaterialDesc, ModelData, ModelInstance};
 use textures::mipmaps::MipMaker;
@@ -102,7 +102,7 @@ fn a_box_above_a_plane_casts_the_shadow_geometry_predicts() {
     let depth = common::texture::depth_view(device, WIDTH, HEIGHT);
     let mut encoder = device.create_command_encoder(&Default::default());
     let timer = common::PassTimer::off();
-    shadow.render(&gpu, &mut encoder, &timer, &settings, &instances, &casters(&list));
+    shadow.render(&gpu, &mut encoder, &timer, &settings, &list);
     {
         let mut pass = common::chapter::scene_pass(&mut encoder, &timer, "sunlit", &view, wgpu::Color::BLACK, &depth);
         pass.set_bind_group(0, &lights.group, &[]);

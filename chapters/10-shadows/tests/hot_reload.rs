@@ -1,0 +1,51 @@
+//! A broken edit of the shadow pass's shader, while the chapter runs: the
+//! diagnostic comes back and the last good pipelines keep drawing. (Its own
+//! test binary: it points the shader root at a temporary copy.)
+
+use std::path::Path;
+
+use common::headless::{OFFSCREEN_FORMAT, capture};
+use common::{Chapter, Gpu, Target, shader};
+use shadows::ShadowsChapter;
+
+fn copy_dir(from: &Path, to: &Path) {
+    std::fs::create_dir_all(to).unwrap();
+    for entry in std::fs::read_dir(from).unwrap() {
+        let path = entry.unwrap().path();
+        let target = to.join(path.file_name().unwrap());
+        if path.is_dir() {
+            copy_dir(&path, &target);
+        } else {
+            std::fs::copy(&path, &target).unwrap();
+        }
+    }
+}
+
+#[test]
+fn a_broken_caster_shader_keeps_the_last_good_shadow_pass() {
+    let root = std::env::temp_dir().join(format!("shadows-hot-reload-{}", std::process::id()));
+    copy_dir(Path::new(shader::SHADER_DIR), &root);
+    shader::read_from(Some(root.clone()));
+    let file = root.join("shadows/caster.wgsl");
+    let original = std::fs::read_to_string(&file).unwrap();
+
+    let gpu = Gpu::headless(ShadowsChapter::gpu_needs()).unwrap();
+    let target = Target { format: OFFSCREEN_FORMAT, width: 160, height: 90 };
+    let mut chapter = ShadowsChapter::new(&gpu, target).unwrap();
+    let good = capture(&gpu, &mut chapter, target, 5.7, 0).unwrap();
+
+    for broken in [
+        original.replace("place(vertex, instance).world", "place(vertex, instance)"),
+        original.replace("fn vs_caster(", "fn vs_renamed("),
+    ] {
+        std::fs::write(&file, broken).unwrap();
+        let error = chapter.reload_shaders(&gpu).unwrap_err();
+        assert!(!error.0.is_empty());
+        assert_eq!(capture(&gpu, &mut chapter, target, 5.7, 0).unwrap(), good, "the last good pipeline keeps drawing");
+    }
+    std::fs::write(&file, original).unwrap();
+    chapter.reload_shaders(&gpu).unwrap();
+    assert_eq!(capture(&gpu, &mut chapter, target, 5.7, 0).unwrap(), good);
+    shader::read_from(None);
+    let _ = std::fs::remove_dir_all(&root);
+}
