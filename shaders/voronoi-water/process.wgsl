@@ -47,9 +47,10 @@ fn fs_colour(in: FullscreenOutput) -> @location(0) vec4<f32> {
     if process.options.x == 0u {
         return vec4<f32>(0.15 + 0.85 * h, 1.0);
     }
-    // The sea's shades: teal to deep blue, a little lighter or darker per cell.
-    let shade = mix(vec3<f32>(0.10, 0.42, 0.62), vec3<f32>(0.16, 0.60, 0.72), h.x);
-    return vec4<f32>(shade * (0.85 + 0.3 * h.y), 1.0);
+    // The sea's shades, in linear light (the picture is sRGB): deep blue
+    // to teal, a little lighter or darker per cell.
+    let shade = mix(vec3<f32>(0.008, 0.09, 0.36), vec3<f32>(0.02, 0.24, 0.46), h.x);
+    return vec4<f32>(shade * (0.8 + 0.4 * h.y), 1.0);
 }
 // ANCHOR_END: colour
 

@@ -66,7 +66,7 @@ fn fs_sea(in: SeaOutput) -> @location(0) vec4<f32> {
     let v = normalize(frame.eye.xyz - in.world);
     let light = sunlit(in.world, n, in.clip_position.xy);
     // Toon light: the sun's side of a wave lit, the far side a band darker.
-    let facing = select(0.55, 1.0, dot(n, l) > 0.05);
+    let facing = mix(0.6, 1.0, smoothstep(-0.05, 0.15, dot(n, l)));
     var colour = albedo * (frame.ambient.rgb + frame.sun_colour.rgb * light * facing);
     // Glints: a hard-edged highlight, bright enough to bloom.
     let h = normalize(l + v);
@@ -76,10 +76,10 @@ fn fs_sea(in: SeaOutput) -> @location(0) vec4<f32> {
 }
 // ANCHOR_END: fragment
 
-// The `grid` view: the grid's edges, bright.
+// The `grid` view: the grid's edges, dark over the bright sea.
 @fragment
 fn fs_wire(in: SeaOutput) -> @location(0) vec4<f32> {
-    return vec4<f32>(1.6, 1.3, 0.4, 1.0);
+    return vec4<f32>(0.01, 0.01, 0.05, 1.0);
 }
 
 // ANCHOR: probe

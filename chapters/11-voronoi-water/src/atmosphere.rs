@@ -231,7 +231,15 @@ impl Sky {
             ..common::texture::depth_test().expect("a depth test")
         };
         gpu.catch_validation(|| {
-            fullscreen::pipeline(&gpu.device, "sky", layout, &module, "fs_sky", lighting::HDR_FORMAT.into(), Some(depth))
+            fullscreen::pipeline(
+                &gpu.device,
+                "sky",
+                layout,
+                &module,
+                "fs_sky",
+                lighting::HDR_FORMAT.into(),
+                Some(depth),
+            )
         })
         .map_err(ShaderError)
     }

@@ -112,8 +112,8 @@ impl Settings {
             texture_size: 512,
             processing: Processing::default(),
             show: Show::Scene,
-            // At the snapshot time the sun stands 6° above the horizon.
-            day_start: 0.73 - SNAPSHOT_TIME / DAY_SECONDS,
+            // At the snapshot time the sun stands 4.6° above the horizon.
+            day_start: 0.735 - SNAPSHOT_TIME / DAY_SECONDS,
             day_runs: true,
             snap_grid: true,
             small_grid: false,
@@ -173,7 +173,7 @@ impl Orbit {
     /// From behind the boat's left, looking west into the sunset.
     pub const DEFAULT: Orbit = Orbit { yaw: 1.95, pitch: 0.22, distance: 26.0 };
     /// High over the boat, to see the grid.
-    pub const HIGH: Orbit = Orbit { yaw: 1.95, pitch: 0.95, distance: 160.0 };
+    pub const HIGH: Orbit = Orbit { yaw: 1.95, pitch: 1.2, distance: 110.0 };
 
     /// The camera looking at a point 2 m above `target` from the orbit.
     pub fn camera(&self, target: Vec3, aspect: f32) -> Camera {

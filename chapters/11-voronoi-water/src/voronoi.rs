@@ -73,7 +73,8 @@ struct ConesUniform {
 /// plus JFA+1's.
 pub fn jump_steps(width: u32, height: u32, extra_pass: bool) -> Vec<u32> {
     let longest = width.max(height).next_power_of_two();
-    let mut steps: Vec<u32> = std::iter::successors(Some((longest / 2).max(1)), |s| (*s > 1).then_some(s / 2)).collect();
+    let mut steps: Vec<u32> =
+        std::iter::successors(Some((longest / 2).max(1)), |s| (*s > 1).then_some(s / 2)).collect();
     if extra_pass {
         steps.push(1);
     }
@@ -233,7 +234,7 @@ impl Voronoi {
                 fragment: Some(wgpu::FragmentState {
                     module,
                     entry_point: Some(fragment),
-                    targets: &[id_target.clone()],
+                    targets: std::slice::from_ref(&id_target),
                     compilation_options: Default::default(),
                 }),
                 multiview_mask: None,
@@ -320,7 +321,10 @@ impl Voronoi {
                                 size: wgpu::BufferSize::new(16),
                             }),
                         },
-                        wgpu::BindGroupEntry { binding: 1, resource: wgpu::BindingResource::TextureView(&views[i % 2]) },
+                        wgpu::BindGroupEntry {
+                            binding: 1,
+                            resource: wgpu::BindingResource::TextureView(&views[i % 2]),
+                        },
                     ],
                 })
             })

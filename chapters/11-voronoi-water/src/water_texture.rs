@@ -187,7 +187,10 @@ impl WaterTexture {
             let group = device.create_bind_group(&wgpu::BindGroupDescriptor {
                 label: Some(label),
                 layout,
-                entries: &[wgpu::BindGroupEntry { binding: 0, resource: wgpu::BindingResource::TextureView(&level_zero) }],
+                entries: &[wgpu::BindGroupEntry {
+                    binding: 0,
+                    resource: wgpu::BindingResource::TextureView(&level_zero),
+                }],
             });
             Stage { texture, view, group }
         })
@@ -281,10 +284,9 @@ impl WaterTexture {
         from: Option<usize>,
         to: usize,
     ) {
-        let target = self.stages[to].texture.create_view(&wgpu::TextureViewDescriptor {
-            mip_level_count: Some(1),
-            ..Default::default()
-        });
+        let target = self.stages[to]
+            .texture
+            .create_view(&wgpu::TextureViewDescriptor { mip_level_count: Some(1), ..Default::default() });
         let mut pass = encoder.begin_render_pass(&wgpu::RenderPassDescriptor {
             label: Some("water texture"),
             color_attachments: &[Some(wgpu::RenderPassColorAttachment {
@@ -321,7 +323,10 @@ impl Show {
         let device = &gpu.device;
         let show_layout = device.create_bind_group_layout(&wgpu::BindGroupLayoutDescriptor {
             label: Some("show"),
-            entries: &[uniform_entry(0, wgpu::ShaderStages::FRAGMENT, std::mem::size_of::<ShowUniform>()), sampler_entry(1)],
+            entries: &[
+                uniform_entry(0, wgpu::ShaderStages::FRAGMENT, std::mem::size_of::<ShowUniform>()),
+                sampler_entry(1),
+            ],
         });
         let layout = device.create_pipeline_layout(&wgpu::PipelineLayoutDescriptor {
             label: Some("show"),

@@ -22,10 +22,7 @@ fn chapter(gpu: &Gpu, view: &str) -> VoronoiWaterChapter {
 
 /// The site index each pixel of a `cells` picture holds.
 fn ids_of(picture: &common::image::RgbaImage) -> Vec<u32> {
-    picture
-        .pixels()
-        .map(|p| if p[2] != 0 { NONE } else { u32::from(p[0]) + 256 * u32::from(p[1]) })
-        .collect()
+    picture.pixels().map(|p| if p[2] != 0 { NONE } else { u32::from(p[0]) + 256 * u32::from(p[1]) }).collect()
 }
 
 /// The centre of pixel (x, y) in tile coordinates, y down.
@@ -86,7 +83,11 @@ fn jump_flooding_agrees_with_the_cones() {
         same as f64 / cones.len() as f64
     };
     let (plain, plus_one) = (share(false), share(true));
-    println!("jump flooding agrees with the exact cones on {:.3} % of pixels ({:.3} % with JFA+1)", plain * 100.0, plus_one * 100.0);
+    println!(
+        "jump flooding agrees with the exact cones on {:.3} % of pixels ({:.3} % with JFA+1)",
+        plain * 100.0,
+        plus_one * 100.0
+    );
     assert!(plain >= 0.99, "only {:.3} %", plain * 100.0);
     assert!(plus_one >= plain);
 }
@@ -123,10 +124,9 @@ fn the_diagram_wraps_at_the_tile_edges() {
     // Where the exact diagram changes cell across an edge, the drawn one
     // may too: those are the only differences allowed.
     let centre = |x: usize, y: usize| Vec2::new((x as f32 + 0.5) / size as f32, (y as f32 + 0.5) / size as f32);
-    let boundaries = (0..size)
-        .filter(|&y| nearest(&sites, centre(0, y)) != nearest(&sites, centre(size - 1, y)))
-        .count()
-        + (0..size).filter(|&x| nearest(&sites, centre(x, 0)) != nearest(&sites, centre(x, size - 1))).count();
+    let boundaries =
+        (0..size).filter(|&y| nearest(&sites, centre(0, y)) != nearest(&sites, centre(size - 1, y))).count()
+            + (0..size).filter(|&x| nearest(&sites, centre(x, 0)) != nearest(&sites, centre(x, size - 1))).count();
     for method in [Method::Cones, Method::ExactCones, Method::JumpFlooding] {
         let settings = VoronoiSettings { method, ..Default::default() };
         let ids = diagram(&gpu, &sites, size as u32, &settings);
