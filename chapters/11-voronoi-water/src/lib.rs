@@ -484,7 +484,8 @@ impl Chapter for VoronoiWaterChapter {
         };
         self.shadow_map.render(gpu, frame.encoder, frame.timer, &shadow, &list);
         if s.show == Show::ShadowMap {
-            let depths = focus.iter().map(|p| light.view_proj.project_point3(*p).z);
+            // Depths stretched over the boat's (its first eight points).
+            let depths = focus.iter().take(8).map(|p| light.view_proj.project_point3(*p).z);
             let range = depths.fold((f32::MAX, f32::MIN), |(lo, hi), z| (lo.min(z), hi.max(z)));
             self.map_view.draw(gpu, frame, &self.shadow_map, range, self.target.aspect());
             return;
