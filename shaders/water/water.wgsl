@@ -7,6 +7,7 @@ enable clip_distances;
 // one reflected in the water and one seen through it, mixed by Fresnel.
 #import terrain::globals
 #import fog::{fog, visibility}
+#import water::waves::wave_sum
 
 // ANCHOR: uniforms
 struct Water {
@@ -40,21 +41,14 @@ struct WaterOutput {
 };
 
 // ANCHOR: waves
-// h = Σ A sin(k (d · p − c t)); its slope, for the normal, is
-// Σ A k d cos(k (d · p − c t)). The same sums as waves.rs on the CPU.
+// The waves' sum (waves.wgsl, the same sums as waves.rs on the CPU) lifts
+// each vertex of the flat grid, and its slope gives the normal.
 @vertex
 fn vs_water(@location(0) position: vec3<f32>) -> WaterOutput {
     let p = position.xz;
-    var height = 0.0;
-    var slope = vec2<f32>(0.0);
-    for (var i = 0u; i < 8u; i++) {
-        let wave = water.waves[i];
-        let speed = water.speeds[i / 4u][i % 4u];
-        let k = 6.2831853 / wave.w;
-        let phase = k * (dot(wave.xy, p) - speed * water.level_time.y);
-        height += wave.z * sin(phase);
-        slope += wave.z * k * cos(phase) * wave.xy;
-    }
+    let sum = wave_sum(water.waves, water.speeds, p, water.level_time.y);
+    let height = sum.x;
+    let slope = sum.yz;
     let strength = water.level_time.z;
     let world = vec3<f32>(p.x, water.level_time.x + strength * height, p.y);
     var out: WaterOutput;

@@ -38,6 +38,7 @@ pub fn chapters() -> Vec<Entry> {
         entry::<lighting::LightingChapter>(),
         entry::<textures::TexturesChapter>(),
         entry::<shadows::ShadowsChapter>(),
+        entry::<voronoi_water::VoronoiWaterChapter>(),
     ]
 }
 

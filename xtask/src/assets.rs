@@ -6,6 +6,7 @@ use std::path::Path;
 
 use anyhow::Context as _;
 
+mod gradients;
 mod layers;
 mod materials;
 pub mod models;
@@ -215,11 +216,13 @@ fn paint_all(root: &Path) -> anyhow::Result<()> {
     materials::paint(&root.join("textures"))?;
     models::write(&root.join("models"))?;
     layers::paint(&root.join("layers"))?;
+    gradients::paint(&root.join("gradients"))?;
     let readme = format!(
-        "{PROVENANCE}{}{}{}{PROVENANCE_NOTES}",
+        "{PROVENANCE}{}{}{}{}{PROVENANCE_NOTES}",
         materials::provenance(),
         models::provenance(),
-        layers::provenance()
+        layers::provenance(),
+        gradients::provenance()
     );
     std::fs::write(root.join("README.md"), readme)?;
     println!("wrote {}", root.join("README.md").display());
@@ -260,8 +263,8 @@ mod tests {
         }
         std::fs::remove_dir_all(fresh).unwrap();
         assert_eq!(
-            checked, 44,
-            "12 cube faces, 2 water maps, 6 × 2 textures, 7 models with their MTL, 3 parallax layers, and the README"
+            checked, 48,
+            "12 cube faces, 2 water maps, 6 × 2 textures, 7 models with their MTL, 3 parallax layers, 4 gradients, and the README"
         );
     }
 }

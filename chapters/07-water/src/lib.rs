@@ -127,7 +127,7 @@ struct WaterUniform {
 }
 
 fn water_shader() -> ShaderFile {
-    shader!("water/water.wgsl", imports: ["terrain/terrain.wgsl", "fog/fog.wgsl"])
+    shader!("water/water.wgsl", imports: ["terrain/terrain.wgsl", "fog/fog.wgsl", "water/waves.wgsl"])
 }
 
 fn show_shader() -> ShaderFile {

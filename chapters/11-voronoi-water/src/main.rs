@@ -1,0 +1,3 @@
+fn main() -> std::process::ExitCode {
+    common::run::<voronoi_water::VoronoiWaterChapter>()
+}

@@ -1,0 +1,171 @@
+//! The diagram against its definition: every pixel of the `cells` view
+//! holds the index of its nearest site; jump flooding agrees with the
+//! cones; the diagram wraps at the tile's edges; a site count of 1, the
+//! slider's maximum and two sites at one place all work.
+
+use common::glam::Vec2;
+use common::headless::{OFFSCREEN_FORMAT, capture, read_bytes};
+use common::{Chapter, Gpu, PassTimer, Target, show_view};
+use voronoi_water::sites::{self, nearest, torus_offset};
+use voronoi_water::voronoi::{Method, NONE, Voronoi, VoronoiSettings};
+use voronoi_water::{Settings, VoronoiWaterChapter};
+
+const WIDTH: u32 = 400;
+const HEIGHT: u32 = 240;
+
+fn chapter(gpu: &Gpu, view: &str) -> VoronoiWaterChapter {
+    let target = Target { format: OFFSCREEN_FORMAT, width: WIDTH, height: HEIGHT };
+    let mut chapter = common::chapter::create::<VoronoiWaterChapter>(gpu, target, &Default::default()).unwrap();
+    show_view(&mut chapter, common::chapter::view_index::<VoronoiWaterChapter>(view).unwrap());
+    chapter
+}
+
+/// The site index each pixel of a `cells` picture holds.
+fn ids_of(picture: &common::image::RgbaImage) -> Vec<u32> {
+    picture.pixels().map(|p| if p[2] != 0 { NONE } else { u32::from(p[0]) + 256 * u32::from(p[1]) }).collect()
+}
+
+/// The centre of pixel (x, y) in tile coordinates, y down.
+fn centre(x: u32, y: u32, width: u32, height: u32) -> Vec2 {
+    Vec2::new((x as f32 + 0.5) / width as f32, (y as f32 + 0.5) / height as f32)
+}
+
+/// Whether `found` is as near to `p` as the nearest site, give or take
+/// `slack` (tile units).
+fn near_enough(sites: &[Vec2], p: Vec2, found: u32, slack: f32) -> bool {
+    let Some(site) = sites.get(found as usize) else { return false };
+    let best = sites[nearest(sites, p).unwrap()];
+    torus_offset(p, *site).length() - torus_offset(p, best).length() <= slack
+}
+
+// ANCHOR: cells_test
+#[test]
+fn every_pixel_of_the_cells_view_holds_its_nearest_site() {
+    let gpu = Gpu::headless(VoronoiWaterChapter::gpu_needs()).unwrap();
+    let mut chapter = chapter(&gpu, "cells");
+    let view = common::chapter::view_index::<VoronoiWaterChapter>("cells").unwrap();
+    // A pixel's width, in tile units: ties closer than this may go either way.
+    let pixel = 1.0 / WIDTH.min(HEIGHT) as f32;
+    for time in [3.0, 1234.5] {
+        let target = Target { format: OFFSCREEN_FORMAT, width: WIDTH, height: HEIGHT };
+        let picture = capture(&gpu, &mut chapter, target, time, view).unwrap();
+        let sites = sites::positions(time);
+        let (mut exact, mut ties) = (0, 0);
+        for (i, id) in ids_of(&picture).into_iter().enumerate() {
+            let (x, y) = (i as u32 % WIDTH, i as u32 / WIDTH);
+            let p = centre(x, y, WIDTH, HEIGHT);
+            if Some(id as usize) == nearest(&sites, p) {
+                exact += 1;
+            } else {
+                assert!(near_enough(&sites, p, id, pixel), "at {time} s, pixel ({x}, {y}) holds {id}");
+                ties += 1;
+            }
+        }
+        println!("at {time} s: {exact} pixels exact, {ties} ties within a pixel");
+        assert!(ties < 200, "{ties} ties: too many to be ties");
+    }
+}
+// ANCHOR_END: cells_test
+
+// ANCHOR: jfa_test
+#[test]
+fn jump_flooding_agrees_with_the_cones() {
+    let gpu = Gpu::headless(VoronoiWaterChapter::gpu_needs()).unwrap();
+    let mut chapter = chapter(&gpu, "cells");
+    let view = common::chapter::view_index::<VoronoiWaterChapter>("cells").unwrap();
+    let target = Target { format: OFFSCREEN_FORMAT, width: WIDTH, height: HEIGHT };
+    let time = 3.0;
+    let cones = ids_of(&capture(&gpu, &mut chapter, target, time, view).unwrap());
+    let mut share = |extra_pass| {
+        chapter.settings.voronoi = VoronoiSettings { method: Method::JumpFlooding, extra_pass, ..Default::default() };
+        let flooded = ids_of(&capture(&gpu, &mut chapter, target, time, view).unwrap());
+        let same = cones.iter().zip(&flooded).filter(|(a, b)| a == b).count();
+        same as f64 / cones.len() as f64
+    };
+    let (plain, plus_one) = (share(false), share(true));
+    println!(
+        "jump flooding agrees with the exact cones on {:.3} % of pixels ({:.3} % with JFA+1)",
+        plain * 100.0,
+        plus_one * 100.0
+    );
+    assert!(plain >= 0.99, "only {:.3} %", plain * 100.0);
+    assert!(plus_one >= plain);
+}
+// ANCHOR_END: jfa_test
+
+/// The diagram of `sites` at `size`² by `settings`, read back.
+fn diagram(gpu: &Gpu, sites: &[Vec2], size: u32, settings: &VoronoiSettings) -> Vec<u32> {
+    let mut voronoi = Voronoi::new(gpu, size, size).unwrap();
+    let mut encoder = gpu.device.create_command_encoder(&Default::default());
+    voronoi.render(gpu, &mut encoder, &PassTimer::off(), sites, (size, size), settings);
+    gpu.queue.submit([encoder.finish()]);
+    read_bytes(gpu, voronoi.ids_texture(), 4)
+        .unwrap()
+        .chunks_exact(4)
+        .map(|b| u32::from_le_bytes(b.try_into().unwrap()))
+        .collect()
+}
+
+/// Rows whose first and last pixels differ, plus columns whose top and
+/// bottom pixels differ: across the tile's edges, what should be one
+/// cell continuing.
+fn seams(ids: &[u32], size: usize) -> usize {
+    let rows = (0..size).filter(|y| ids[y * size] != ids[y * size + size - 1]).count();
+    let columns = (0..size).filter(|x| ids[*x] != ids[(size - 1) * size + x]).count();
+    rows + columns
+}
+
+// ANCHOR: tiling_test
+#[test]
+fn the_diagram_wraps_at_the_tile_edges() {
+    let gpu = Gpu::headless(VoronoiWaterChapter::gpu_needs()).unwrap();
+    let size = 512;
+    let sites = sites::positions(7.0);
+    // Where the exact diagram changes cell across an edge, the drawn one
+    // may too: those are the only differences allowed.
+    let centre = |x: usize, y: usize| Vec2::new((x as f32 + 0.5) / size as f32, (y as f32 + 0.5) / size as f32);
+    let boundaries =
+        (0..size).filter(|&y| nearest(&sites, centre(0, y)) != nearest(&sites, centre(size - 1, y))).count()
+            + (0..size).filter(|&x| nearest(&sites, centre(x, 0)) != nearest(&sites, centre(x, size - 1))).count();
+    for method in [Method::Cones, Method::ExactCones, Method::JumpFlooding] {
+        let settings = VoronoiSettings { method, ..Default::default() };
+        let ids = diagram(&gpu, &sites, size as u32, &settings);
+        let found = seams(&ids, size);
+        println!("{}: {found} edge pixels change cell across the seam, the exact diagram {boundaries}", method.label());
+        // Eight-segment cones move boundaries by a few pixels: allow a few.
+        assert!(found <= boundaries + 6, "{}: {found} seams against {boundaries}", method.label());
+    }
+    // Without the copies the edges do not meet: the test can tell.
+    let settings = VoronoiSettings { tile_copies: false, ..Default::default() };
+    let found = seams(&diagram(&gpu, &sites, size as u32, &settings), size);
+    assert!(found > boundaries + 50, "without copies only {found} seams");
+}
+// ANCHOR_END: tiling_test
+
+#[test]
+fn one_site_the_most_sites_and_two_sites_in_one_place_all_work() {
+    let gpu = Gpu::headless(VoronoiWaterChapter::gpu_needs()).unwrap();
+    let one = [Vec2::new(0.3, 0.6)];
+    let twins = [Vec2::new(0.25, 0.5), Vec2::new(0.25, 0.5), Vec2::new(0.75, 0.5)];
+    let most = sites::wandering(sites::MAX_COUNT, sites::DEFAULT_SEED, 5.0);
+    for method in [Method::Cones, Method::ExactCones, Method::JumpFlooding] {
+        let settings = VoronoiSettings { method, ..Default::default() };
+        let ids = diagram(&gpu, &one, 128, &settings);
+        assert!(ids.iter().all(|id| *id == 0), "{}: one site must own every pixel", method.label());
+        let ids = diagram(&gpu, &twins, 128, &settings);
+        assert!(ids.iter().all(|id| *id < 3), "{}: a pixel of the twins' diagram has no site", method.label());
+        // Right of x = 0.5 (and left of 0 across the edge) belongs to site 2.
+        assert!(ids[64 * 128 + 100] == 2 && ids[64 * 128 + 30] < 2);
+        let ids = diagram(&gpu, &most, 512, &settings);
+        let holes = ids.iter().filter(|id| **id == NONE).count();
+        assert_eq!(holes, 0, "{}: {holes} pixels without a site at {} sites", method.label(), most.len());
+    }
+}
+
+#[test]
+fn the_slider_settings_reach_the_views() {
+    // The `cells` view is exact; the bench views parse their names.
+    assert_eq!(Settings::for_view("cells").voronoi.method, Method::ExactCones);
+    let bench = Settings::for_view("jfa-16384-1024");
+    assert_eq!((bench.voronoi.method, bench.sites, bench.texture_size), (Method::JumpFlooding, 16_384, 1024));
+}
