@@ -1,0 +1,55 @@
+//! Broken edits of the sea's and the diagram's shaders while the chapter
+//! runs: the diagnostic comes back and the last good pipelines keep
+//! drawing; the fix reloads. (Its own test binary: it points the shader
+//! root at a temporary copy.)
+
+use std::path::Path;
+
+use common::headless::{OFFSCREEN_FORMAT, capture};
+use common::{Chapter, Gpu, Target, shader};
+use voronoi_water::VoronoiWaterChapter;
+
+fn copy_dir(from: &Path, to: &Path) {
+    std::fs::create_dir_all(to).unwrap();
+    for entry in std::fs::read_dir(from).unwrap() {
+        let path = entry.unwrap().path();
+        let target = to.join(path.file_name().unwrap());
+        if path.is_dir() {
+            copy_dir(&path, &target);
+        } else {
+            std::fs::copy(&path, &target).unwrap();
+        }
+    }
+}
+
+#[test]
+fn broken_sea_and_cone_shaders_keep_the_last_good_pipelines() {
+    let root = std::env::temp_dir().join(format!("voronoi-water-hot-reload-{}", std::process::id()));
+    copy_dir(Path::new(shader::SHADER_DIR), &root);
+    shader::read_from(Some(root.clone()));
+
+    let gpu = Gpu::headless(VoronoiWaterChapter::gpu_needs()).unwrap();
+    let target = Target { format: OFFSCREEN_FORMAT, width: 160, height: 90 };
+    let mut chapter = VoronoiWaterChapter::new(&gpu, target).unwrap();
+    let good = capture(&gpu, &mut chapter, target, 20.0, 0).unwrap();
+
+    for (file, from, to) in [
+        ("voronoi-water/sea.wgsl", "sea_point(index).world", "sea_point(index)"),
+        ("voronoi-water/cones.wgsl", "fn vs_cone(", "fn vs_renamed("),
+        ("voronoi-water/process.wgsl", "return box_blur(", "return blur("),
+    ] {
+        let path = root.join(file);
+        let original = std::fs::read_to_string(&path).unwrap();
+        assert!(original.contains(from), "{file} no longer has {from:?}");
+        std::fs::write(&path, original.replace(from, to)).unwrap();
+        let error = chapter.reload_shaders(&gpu).unwrap_err();
+        assert!(!error.0.is_empty());
+        let picture = capture(&gpu, &mut chapter, target, 20.0, 0).unwrap();
+        assert_eq!(picture, good, "{file}: the last good pipelines keep drawing");
+        std::fs::write(&path, original).unwrap();
+        chapter.reload_shaders(&gpu).unwrap();
+    }
+    assert_eq!(capture(&gpu, &mut chapter, target, 20.0, 0).unwrap(), good);
+    shader::read_from(None);
+    let _ = std::fs::remove_dir_all(&root);
+}
