@@ -46,6 +46,24 @@ impl std::fmt::Display for ShaderError {
 
 impl std::error::Error for ShaderError {}
 
+/// Copies `shaders/` into a fresh folder under the system's temp dir
+/// (named `name` and the process id) and returns it: hot-reload tests
+/// break shaders in the copy, never in the source tree.
+pub fn scratch_copy(name: &str) -> std::io::Result<PathBuf> {
+    fn copy(from: &std::path::Path, to: &std::path::Path) -> std::io::Result<()> {
+        std::fs::create_dir_all(to)?;
+        for entry in std::fs::read_dir(from)? {
+            let path = entry?.path();
+            let target = to.join(path.file_name().unwrap_or_default());
+            if path.is_dir() { copy(&path, &target)? } else { std::fs::copy(&path, &target).map(|_| ())? }
+        }
+        Ok(())
+    }
+    let root = std::env::temp_dir().join(format!("{name}-{}", std::process::id()));
+    copy(std::path::Path::new(SHADER_DIR), &root)?;
+    Ok(root)
+}
+
 /// Where shader text comes from: `None` for the embedded copies, or a
 /// folder laid out like `shaders/`.
 static DISK_ROOT: Mutex<Option<PathBuf>> = Mutex::new(None);

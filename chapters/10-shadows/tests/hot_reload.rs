@@ -2,29 +2,13 @@
 //! diagnostic comes back and the last good pipelines keep drawing. (Its own
 //! test binary: it points the shader root at a temporary copy.)
 
-use std::path::Path;
-
 use common::headless::{OFFSCREEN_FORMAT, capture};
 use common::{Chapter, Gpu, Target, shader};
 use shadows::ShadowsChapter;
 
-fn copy_dir(from: &Path, to: &Path) {
-    std::fs::create_dir_all(to).unwrap();
-    for entry in std::fs::read_dir(from).unwrap() {
-        let path = entry.unwrap().path();
-        let target = to.join(path.file_name().unwrap());
-        if path.is_dir() {
-            copy_dir(&path, &target);
-        } else {
-            std::fs::copy(&path, &target).unwrap();
-        }
-    }
-}
-
 #[test]
 fn a_broken_caster_shader_keeps_the_last_good_shadow_pass() {
-    let root = std::env::temp_dir().join(format!("shadows-hot-reload-{}", std::process::id()));
-    copy_dir(Path::new(shader::SHADER_DIR), &root);
+    let root = shader::scratch_copy("shadows-hot-reload").unwrap();
     shader::read_from(Some(root.clone()));
     let file = root.join("shadows/caster.wgsl");
     let original = std::fs::read_to_string(&file).unwrap();

@@ -39,12 +39,6 @@ pub fn gradient_u(towards_sun: Vec3) -> f32 {
 }
 // ANCHOR_END: sun_path
 
-/// sRGB byte to linear light.
-fn to_linear(byte: u8) -> f32 {
-    let c = f32::from(byte) / 255.0;
-    if c <= 0.04045 { c / 12.92 } else { ((c + 0.055) / 1.055).powf(2.4) }
-}
-
 /// A gradient on the CPU, read as the GPU reads it: texel centres,
 /// linear filtering in linear light, clamped at the ends.
 pub struct Gradient(RgbaImage);
@@ -59,7 +53,7 @@ impl Gradient {
         let (w, h) = self.0.dimensions();
         let texel = |x: i64, y: i64| {
             let p = self.0.get_pixel(x.clamp(0, w as i64 - 1) as u32, y.clamp(0, h as i64 - 1) as u32);
-            Vec3::new(to_linear(p[0]), to_linear(p[1]), to_linear(p[2]))
+            textures::materials::srgb(p[0], p[1], p[2])
         };
         let (x, y) = (u.clamp(0.0, 1.0) * w as f32 - 0.5, v.clamp(0.0, 1.0) * h as f32 - 0.5);
         let (x0, y0) = (x.floor(), y.floor());
@@ -276,7 +270,7 @@ mod tests {
         let (w, _) = g.sunlight.0.dimensions();
         let p = g.sunlight.0.get_pixel(10, 0);
         let centre = g.sunlight.at((10.5) / w as f32, 0.5);
-        assert!((centre.x - to_linear(p[0])).abs() < 1e-6);
+        assert!((centre.x - textures::materials::srgb(p[0], p[1], p[2]).x).abs() < 1e-6);
         // Beyond the ends, the end texels.
         assert_eq!(g.sunlight.at(-1.0, 0.5), g.sunlight.at(0.0, 0.5));
     }

@@ -276,7 +276,7 @@ impl VoronoiWaterChapter {
     /// What the sun's box must hold: the boat's corners, and where their
     /// shadows can fall on the water, at most 40 m away (a low sun's
     /// shadows run long; beyond that, they are lost in the glare).
-    fn shadow_focus(pose: &Pose, towards_light: Vec3) -> (Vec<Vec3>, (Vec3, Vec3)) {
+    fn shadow_focus(&self, pose: &Pose, towards_light: Vec3) -> (Vec<Vec3>, (Vec3, Vec3)) {
         let model = pose.model();
         let corners: Vec<Vec3> = (0..8)
             .map(|i| {
@@ -288,7 +288,7 @@ impl VoronoiWaterChapter {
             .collect();
         let bounds = corners.iter().fold((Vec3::MAX, Vec3::MIN), |(lo, hi), p| (lo.min(*p), hi.max(*p)));
         // The lowest the water goes: every wave in a trough at once.
-        let lowest = -deepest_trough();
+        let lowest = -self.sea.waves().iter().map(|w| w.amplitude).sum::<f32>();
         let mut focus = corners.clone();
         for c in &corners {
             let run = ((c.y - lowest) / towards_light.y.max(1e-3)).min(40.0);
@@ -297,11 +297,6 @@ impl VoronoiWaterChapter {
         (focus, bounds)
     }
     // ANCHOR_END: shadow_focus
-}
-
-/// The sum of the sea's amplitudes: how far the water can fall below 0.
-fn deepest_trough() -> f32 {
-    sea::sea_waves().iter().map(|w| w.amplitude).sum()
 }
 
 impl Chapter for VoronoiWaterChapter {
@@ -409,18 +404,13 @@ impl Chapter for VoronoiWaterChapter {
             helm.steer(orders, dt);
         }
         self.orbit.steer(input.look, input.scroll);
-        let phase = self.clock.phase(&self.settings, self.last_time);
         if input.pressed(KeyCode::Space) {
-            self.clock.frozen = match self.clock.frozen {
-                Some(_) => {
-                    // Go on from where it stands.
-                    self.clock.frozen = None;
-                    let running = self.clock.phase(&self.settings, self.last_time);
-                    self.clock.shift += phase - running;
-                    None
-                }
-                None => Some(phase),
-            };
+            let phase = self.clock.phase(&self.settings, self.last_time);
+            match self.clock.frozen.take() {
+                // Go on from where it stands: shift the running clock there.
+                Some(_) => self.clock.shift += phase - self.clock.phase(&self.settings, self.last_time),
+                None => self.clock.frozen = Some(phase),
+            }
         }
         // Q and E: a whole day in twelve seconds of holding.
         let dt = if dt.is_finite() { dt.clamp(0.0, 0.25) } else { 0.0 };
@@ -473,7 +463,7 @@ impl Chapter for VoronoiWaterChapter {
             filter: if s.shadows { Filter::Pcf3x3 } else { Filter::Off },
             ..Default::default()
         };
-        let (focus, bounds) = Self::shadow_focus(&pose, day.direction);
+        let (focus, bounds) = self.shadow_focus(&pose, day.direction);
         let light = fit_light(day.direction, &focus, bounds, self.shadow_map.size);
         self.shadow_map.write(gpu, &light, &shadow);
         gpu.queue.write_buffer(&self.boat_instance, 0, bytemuck::bytes_of(&ModelInstance::new(pose.model(), 0.0)));
@@ -493,11 +483,7 @@ impl Chapter for VoronoiWaterChapter {
 
         // The scene: sky, islands, sea, boat, into HDR.
         let origin = sea::grid_origin(pose.helm.position, s.snap_grid);
-        self.sea.write(
-            gpu,
-            self.water.water(),
-            &SeaSettings { origin, time, textured: s.textured_sea, small: s.small_grid },
-        );
+        self.sea.write(gpu, self.water.water(), &SeaSettings { origin, time, textured: s.textured_sea });
         self.islands.write(gpu, pose.helm.position);
         {
             let mut pass = common::chapter::scene_pass(

@@ -128,8 +128,6 @@ pub struct SeaSettings {
     pub time: f32,
     /// Paint the water texture (off: one flat colour).
     pub textured: bool,
-    /// The seed's small grid instead of the whole one.
-    pub small: bool,
 }
 
 // ANCHOR: piece

@@ -62,7 +62,10 @@ struct ShowUniform {
 /// A picture of the chain, with the group that lets a pass read it.
 struct Stage {
     texture: wgpu::Texture,
+    /// Every mip level, for sampling.
     view: wgpu::TextureView,
+    /// Level 0 alone: what a pass draws into and reads.
+    level_zero: wgpu::TextureView,
     group: wgpu::BindGroup,
 }
 
@@ -192,7 +195,7 @@ impl WaterTexture {
                     resource: wgpu::BindingResource::TextureView(&level_zero),
                 }],
             });
-            Stage { texture, view, group }
+            Stage { texture, view, level_zero, group }
         })
     }
 
@@ -284,13 +287,10 @@ impl WaterTexture {
         from: Option<usize>,
         to: usize,
     ) {
-        let target = self.stages[to]
-            .texture
-            .create_view(&wgpu::TextureViewDescriptor { mip_level_count: Some(1), ..Default::default() });
         let mut pass = encoder.begin_render_pass(&wgpu::RenderPassDescriptor {
             label: Some("water texture"),
             color_attachments: &[Some(wgpu::RenderPassColorAttachment {
-                view: &target,
+                view: &self.stages[to].level_zero,
                 depth_slice: None,
                 resolve_target: None,
                 ops: wgpu::Operations { load: wgpu::LoadOp::Clear(wgpu::Color::BLACK), store: wgpu::StoreOp::Store },

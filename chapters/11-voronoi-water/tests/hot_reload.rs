@@ -3,29 +3,13 @@
 //! drawing; the fix reloads. (Its own test binary: it points the shader
 //! root at a temporary copy.)
 
-use std::path::Path;
-
 use common::headless::{OFFSCREEN_FORMAT, capture};
 use common::{Chapter, Gpu, Target, shader};
 use voronoi_water::VoronoiWaterChapter;
 
-fn copy_dir(from: &Path, to: &Path) {
-    std::fs::create_dir_all(to).unwrap();
-    for entry in std::fs::read_dir(from).unwrap() {
-        let path = entry.unwrap().path();
-        let target = to.join(path.file_name().unwrap());
-        if path.is_dir() {
-            copy_dir(&path, &target);
-        } else {
-            std::fs::copy(&path, &target).unwrap();
-        }
-    }
-}
-
 #[test]
 fn broken_sea_and_cone_shaders_keep_the_last_good_pipelines() {
-    let root = std::env::temp_dir().join(format!("voronoi-water-hot-reload-{}", std::process::id()));
-    copy_dir(Path::new(shader::SHADER_DIR), &root);
+    let root = shader::scratch_copy("voronoi-water-hot-reload").unwrap();
     shader::read_from(Some(root.clone()));
 
     let gpu = Gpu::headless(VoronoiWaterChapter::gpu_needs()).unwrap();
