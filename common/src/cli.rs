@@ -3,16 +3,30 @@
 
 use std::process::ExitCode;
 
+#[cfg(not(target_arch = "wasm32"))]
 use anyhow::Context as _;
 
+use crate::Chapter;
+#[cfg(not(target_arch = "wasm32"))]
 use crate::args::{Args, UsageError, check_size, check_writable};
+#[cfg(not(target_arch = "wasm32"))]
 use crate::headless::{self, RenderRequest};
-use crate::{Chapter, Gpu, NoAdapter, Stats};
+#[cfg(not(target_arch = "wasm32"))]
+use crate::{Gpu, NoAdapter, Stats};
 
 /// Runs chapter `C` as the command line asks. Every chapter's `main` is
 /// this one call. Errors print as one line and a non-zero exit code, never
 /// a panic: 2 for bad flags and a missing adapter, 1 for anything else.
 pub fn run<C: Chapter>() -> ExitCode {
+    // In a browser the page's URL is the command line.
+    #[cfg(target_arch = "wasm32")]
+    return crate::web::run::<C>();
+    #[cfg(not(target_arch = "wasm32"))]
+    run_native::<C>()
+}
+
+#[cfg(not(target_arch = "wasm32"))]
+fn run_native<C: Chapter>() -> ExitCode {
     crate::gpu::quiet_driver_warnings();
     env_logger::Builder::from_env(env_logger::Env::default().default_filter_or("warn")).init();
     let args = match Args::parse_for::<C>() {
@@ -37,6 +51,7 @@ pub fn run<C: Chapter>() -> ExitCode {
     }
 }
 
+#[cfg(not(target_arch = "wasm32"))]
 fn run_headless<C: Chapter>(args: &Args) -> anyhow::Result<()> {
     if let Some(path) = &args.screenshot {
         check_writable(path)?;

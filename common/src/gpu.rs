@@ -33,6 +33,15 @@ pub struct NoAdapter {
 
 impl fmt::Display for NoAdapter {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        if cfg!(target_arch = "wasm32") {
+            return write!(
+                f,
+                "this browser gives the page neither WebGPU nor WebGL2 ({}). Open it in a browser with \
+                 WebGPU turned on, or turn on hardware acceleration (WebGL2), or run the chapter on the \
+                 desktop: `cargo run -p <chapter>`",
+                self.reason
+            );
+        }
         write!(
             f,
             "no usable graphics adapter ({}). Install a driver; with no GPU, the software \
@@ -54,6 +63,21 @@ pub fn quiet_driver_warnings() {
         // read the environment.
         unsafe { std::env::set_var("XDG_RUNTIME_DIR", std::env::temp_dir()) };
     }
+}
+
+/// The instance a window asks for its device. In a browser WebGPU comes
+/// first, and WebGL2 where the browser has no working WebGPU adapter (or
+/// the page asked for `?backend=webgl2`); `Instance::new` alone would pick
+/// WebGPU whenever `navigator.gpu` exists, even with no adapter behind it.
+pub async fn window_instance(desc: wgpu::InstanceDescriptor) -> wgpu::Instance {
+    #[cfg(target_arch = "wasm32")]
+    {
+        let mut desc = desc;
+        desc.backends = crate::web::backends();
+        wgpu::util::new_instance_with_webgpu_detection(desc).await
+    }
+    #[cfg(not(target_arch = "wasm32"))]
+    wgpu::Instance::new(desc)
 }
 
 impl Gpu {
@@ -150,7 +174,14 @@ impl Gpu {
     /// instead of letting wgpu's default handler panic. Hot reload uses
     /// this so that a shader that parses but does not fit its pipeline
     /// layout is reported, not fatal.
+    ///
+    /// In the browser an error scope can only be awaited, and there is no
+    /// hot reload to protect, so `create` simply runs: a mistake there is a
+    /// bug, reported by wgpu on the console.
     pub fn catch_validation<T>(&self, create: impl FnOnce() -> T) -> Result<T, String> {
+        if cfg!(target_arch = "wasm32") {
+            return Ok(create());
+        }
         let scope = self.device.push_error_scope(wgpu::ErrorFilter::Validation);
         let value = create();
         match pollster::block_on(scope.pop()) {

@@ -1,7 +1,8 @@
 //! Rendering with no window: into an offscreen texture, read back to the
 //! CPU as an image. Screenshots, snapshots and benches all go through here.
 
-use std::time::Instant;
+// `std::time::Instant` panics in the browser; this one reads `performance.now()` there.
+use web_time::Instant;
 
 use anyhow::{Context as _, bail};
 

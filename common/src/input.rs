@@ -24,6 +24,11 @@ impl Input {
         self.held.contains(&key)
     }
 
+    /// How many keys are down now.
+    pub fn held_count(&self) -> usize {
+        self.held.len()
+    }
+
     /// The key went down during this frame.
     pub fn pressed(&self, key: KeyCode) -> bool {
         self.pressed.contains(&key)

@@ -20,6 +20,8 @@ pub mod primitives;
 pub mod shader;
 pub mod texture;
 pub mod timing;
+#[cfg(target_arch = "wasm32")]
+pub mod web;
 mod window;
 
 pub use camera::{Camera, FlyController};

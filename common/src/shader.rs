@@ -3,7 +3,9 @@
 //! re-read from disk while a window is open (hot reload).
 
 use std::path::PathBuf;
-use std::sync::{Mutex, mpsc};
+use std::sync::Mutex;
+#[cfg(not(target_arch = "wasm32"))]
+use std::sync::mpsc;
 
 /// The `shaders/` folder of the source tree this binary was built from.
 pub const SHADER_DIR: &str = concat!(env!("CARGO_MANIFEST_DIR"), "/../shaders");
@@ -159,6 +161,7 @@ pub fn validate(source: &str, path: &str) -> Result<naga::Module, ShaderError> {
 }
 
 /// Watches `shaders/` and reports when a `.wgsl` file changes.
+#[cfg(not(target_arch = "wasm32"))]
 pub struct ShaderWatcher {
     /// The folder being watched.
     pub dir: PathBuf,
@@ -166,6 +169,7 @@ pub struct ShaderWatcher {
     changes: mpsc::Receiver<PathBuf>,
 }
 
+#[cfg(not(target_arch = "wasm32"))]
 impl ShaderWatcher {
     /// Starts watching, or returns `None` when the source tree is absent
     /// (a binary copied elsewhere): then the embedded shaders are all there is.
@@ -197,6 +201,24 @@ impl ShaderWatcher {
         paths.sort();
         paths.dedup();
         paths
+    }
+}
+
+/// A browser page has no source tree to watch: the shaders are the
+/// embedded ones, and hot reload is off.
+#[cfg(target_arch = "wasm32")]
+pub struct ShaderWatcher {
+    pub dir: PathBuf,
+}
+
+#[cfg(target_arch = "wasm32")]
+impl ShaderWatcher {
+    pub fn start() -> Option<Self> {
+        None
+    }
+
+    pub fn changed(&self) -> Vec<PathBuf> {
+        Vec::new()
     }
 }
 

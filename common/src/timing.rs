@@ -2,7 +2,8 @@
 //! min/median/p95 summaries the bench prints.
 
 use std::cell::RefCell;
-use std::time::Instant;
+// `std::time::Instant` panics in the browser; this one reads `performance.now()` there.
+use web_time::Instant;
 
 /// Hands out timestamp query slots to render passes and reads the times back.
 ///

@@ -1,21 +1,25 @@
 //! The windowed runner: a winit event loop that draws a chapter every frame,
-//! with the overlay, hot-reloaded shaders, screenshots and key help.
+//! with the overlay, hot-reloaded shaders, screenshots and key help. The
+//! same runner drives a chapter in a browser tab, where the window is a
+//! canvas, the device arrives asynchronously and there is no source tree to
+//! watch; the few differences are marked `target_arch = "wasm32"`.
 
 use std::path::PathBuf;
 use std::sync::Arc;
-use std::time::{Duration, Instant};
+
+use web_time::{Duration, Instant};
 
 use anyhow::{Context as _, anyhow};
 use winit::application::ApplicationHandler;
 use winit::event::{DeviceEvent, ElementState, MouseButton, MouseScrollDelta, WindowEvent};
-use winit::event_loop::{ActiveEventLoop, ControlFlow, EventLoop};
+use winit::event_loop::{ActiveEventLoop, ControlFlow, EventLoop, EventLoopProxy};
 use winit::keyboard::{KeyCode, PhysicalKey};
 use winit::window::{CursorGrabMode, Window, WindowId};
 
 use crate::args::{Args, check_size};
 use crate::chapter::show_view;
 use crate::overlay::{FrameHistory, Overlay};
-use crate::shader::{self, ShaderWatcher};
+use crate::shader;
 use crate::{Chapter, Frame, Gpu, Input, PassTimer, Target};
 
 /// Keys the runner handles for every chapter.
@@ -28,22 +32,55 @@ const RUNNER_KEYS: &[(&str, &str)] = &[
 ];
 
 /// Opens a window and runs chapter `C` until it is closed.
+#[cfg(not(target_arch = "wasm32"))]
 pub fn run<C: Chapter>(args: &Args) -> anyhow::Result<()> {
-    let event_loop = EventLoop::new().map_err(|e| {
+    let event_loop = EventLoop::with_user_event().build().map_err(|e| {
         anyhow!(
             "cannot open a window ({e}). With no display, render headless instead: \
              --screenshot out.png (or run under `xvfb-run -a`)"
         )
     })?;
-    let mut app = App::<C> { args: args.clone(), running: None, error: None };
+    let mut app = App::<C>::new(args, &event_loop);
     event_loop.run_app(&mut app).context("the event loop failed")?;
     app.error.map_or(Ok(()), Err)
+}
+
+/// Runs chapter `C` in the page's canvas. This returns at once: the
+/// browser owns the event loop and calls back into it every frame.
+#[cfg(target_arch = "wasm32")]
+pub fn spawn<C: Chapter>(args: &Args) -> anyhow::Result<()> {
+    use winit::platform::web::EventLoopExtWebSys as _;
+    let event_loop = EventLoop::with_user_event().build().map_err(|e| anyhow!("cannot start the event loop: {e}"))?;
+    let app = App::<C>::new(args, &event_loop);
+    event_loop.spawn_app(app);
+    Ok(())
 }
 
 struct App<C: Chapter> {
     args: Args,
     running: Option<Running<C>>,
     error: Option<anyhow::Error>,
+    /// Delivers the opened window once its device exists (at once on the
+    /// desktop, a few promises later in the browser).
+    proxy: EventLoopProxy<Opened<C>>,
+    opening: bool,
+}
+
+/// The window, its surface and device, ready or failed.
+struct Opened<C: Chapter>(anyhow::Result<Running<C>>);
+
+impl<C: Chapter> App<C> {
+    fn new(args: &Args, event_loop: &EventLoop<Opened<C>>) -> Self {
+        Self { args: args.clone(), running: None, error: None, proxy: event_loop.create_proxy(), opening: false }
+    }
+
+    fn fail(&mut self, event_loop: &ActiveEventLoop, error: anyhow::Error) {
+        // In a browser there is no terminal to exit to: the page says it.
+        #[cfg(target_arch = "wasm32")]
+        crate::web::show_error(&format!("{error:#}"));
+        self.error = Some(error);
+        event_loop.exit();
+    }
 }
 
 /// Everything that exists while the window is open.
@@ -51,6 +88,8 @@ struct Running<C: Chapter> {
     window: Arc<Window>,
     surface: wgpu::Surface<'static>,
     config: wgpu::SurfaceConfiguration,
+    /// The format the chapter draws in: the surface's, seen as sRGB.
+    scene_format: wgpu::TextureFormat,
     /// The surface's format without sRGB encoding, for the overlay.
     overlay_format: wgpu::TextureFormat,
     gpu: Gpu,
@@ -62,7 +101,7 @@ struct Running<C: Chapter> {
     paused: bool,
     last_frame: Instant,
     history: FrameHistory,
-    watcher: Option<ShaderWatcher>,
+    watcher: Option<shader::ShaderWatcher>,
     shader_error: Option<String>,
     show_help: bool,
     frames_left: Option<u32>,
@@ -76,20 +115,42 @@ struct Running<C: Chapter> {
     /// Frames drawn, and frames skipped because the window had no area.
     drawn: u64,
     skipped: u64,
+    /// For the probe: the most keys the chapter saw held at once, and how
+    /// far (in pixels) the mouse has turned the view in all.
+    held_seen: usize,
+    looked: f32,
     probe: Option<PathBuf>,
 }
 
-impl<C: Chapter> ApplicationHandler for App<C> {
+impl<C: Chapter> ApplicationHandler<Opened<C>> for App<C> {
     fn resumed(&mut self, event_loop: &ActiveEventLoop) {
-        if self.running.is_some() {
+        if self.running.is_some() || self.opening {
             return;
         }
-        match Running::<C>::open(event_loop, &self.args) {
-            Ok(running) => self.running = Some(running),
-            Err(error) => {
-                self.error = Some(error);
-                event_loop.exit();
+        let opening = match Opening::start::<C>(event_loop, &self.args) {
+            Ok(opening) => opening,
+            Err(error) => return self.fail(event_loop, error),
+        };
+        self.opening = true;
+        let proxy = self.proxy.clone();
+        let open = async move {
+            // Only fails once the loop has ended, when nobody waits for it.
+            let _ = proxy.send_event(Opened(opening.finish::<C>().await));
+        };
+        #[cfg(not(target_arch = "wasm32"))]
+        pollster::block_on(open);
+        #[cfg(target_arch = "wasm32")]
+        wasm_bindgen_futures::spawn_local(open);
+    }
+
+    fn user_event(&mut self, event_loop: &ActiveEventLoop, Opened(result): Opened<C>) {
+        self.opening = false;
+        match result {
+            Ok(running) => {
+                running.window.request_redraw();
+                self.running = Some(running);
             }
+            Err(error) => self.fail(event_loop, error),
         }
     }
 
@@ -119,6 +180,8 @@ impl<C: Chapter> ApplicationHandler for App<C> {
                 }
                 match key {
                     KeyCode::Escape if app.pointer_locked => app.lock_pointer(false),
+                    // A page is closed by its tab, not by a key.
+                    KeyCode::Escape if cfg!(target_arch = "wasm32") => {}
                     KeyCode::Escape => event_loop.exit(),
                     KeyCode::F1 => app.show_help = !app.show_help,
                     KeyCode::F12 => app.screenshot(),
@@ -146,8 +209,7 @@ impl<C: Chapter> ApplicationHandler for App<C> {
             }
             WindowEvent::RedrawRequested => {
                 if let Err(error) = app.frame() {
-                    self.error = Some(error);
-                    event_loop.exit();
+                    self.fail(event_loop, error);
                 } else if app.frames_left == Some(0) {
                     event_loop.exit();
                 }
@@ -178,59 +240,100 @@ impl<C: Chapter> ApplicationHandler for App<C> {
     }
 }
 
-impl<C: Chapter> Running<C> {
-    fn open(event_loop: &ActiveEventLoop, args: &Args) -> anyhow::Result<Self> {
-        let attributes = Window::default_attributes()
-            .with_title(format!("{} — From Triangle to Ocean", C::TITLE))
-            .with_inner_size(winit::dpi::PhysicalSize::new(args.size.width, args.size.height));
+/// How a window's (or canvas's) surface is set up, as (configuration, the
+/// format chapters draw in, the overlay's format).
+pub(crate) fn surface_config(
+    gpu: &Gpu,
+    surface: &wgpu::Surface,
+    width: u32,
+    height: u32,
+) -> anyhow::Result<(wgpu::SurfaceConfiguration, wgpu::TextureFormat, wgpu::TextureFormat)> {
+    let caps = surface.get_capabilities(&gpu.adapter);
+    let first = caps
+        .formats
+        .first()
+        .copied()
+        .ok_or_else(|| anyhow!("{} cannot draw into this window (it offers no surface formats)", gpu.describe()))?;
+    // Chapters output linear colour and let an sRGB view encode it;
+    // browsers offer only non-sRGB canvases, which can be viewed as sRGB.
+    let scene_format = caps.formats.iter().copied().find(|f| f.is_srgb()).unwrap_or(first.add_srgb_suffix());
+    let format = if caps.formats.contains(&scene_format) { scene_format } else { first };
+    let overlay_format = format.remove_srgb_suffix();
+    let config = wgpu::SurfaceConfiguration {
+        usage: wgpu::TextureUsages::RENDER_ATTACHMENT,
+        format,
+        width: width.max(1),
+        height: height.max(1),
+        // Fifo is always there and waits for vsync; lavapipe lists
+        // Immediate first, which would spin the CPU for nothing.
+        present_mode: wgpu::PresentMode::Fifo,
+        desired_maximum_frame_latency: 2,
+        alpha_mode: wgpu::CompositeAlphaMode::Auto,
+        color_space: Default::default(),
+        view_formats: [scene_format, overlay_format].into_iter().filter(|f| *f != format).collect(),
+    };
+    Ok((config, scene_format, overlay_format))
+}
+
+/// A window whose device is still being asked for.
+struct Opening {
+    window: Arc<Window>,
+    instance: wgpu::InstanceDescriptor,
+    args: Args,
+}
+
+impl Opening {
+    /// Creates the window: on the desktop at `--size`; in a browser it is
+    /// the page's canvas, as large as the page lays it out.
+    fn start<C: Chapter>(event_loop: &ActiveEventLoop, args: &Args) -> anyhow::Result<Self> {
+        let attributes = Window::default_attributes().with_title(format!("{} — From Triangle to Ocean", C::TITLE));
+        #[cfg(not(target_arch = "wasm32"))]
+        let attributes = attributes.with_inner_size(winit::dpi::PhysicalSize::new(args.size.width, args.size.height));
+        #[cfg(target_arch = "wasm32")]
+        let attributes = {
+            use winit::platform::web::WindowAttributesExtWebSys as _;
+            attributes.with_canvas(Some(crate::web::canvas()?))
+        };
         let window = Arc::new(event_loop.create_window(attributes).context("cannot create a window")?);
-        let instance = wgpu::Instance::new(wgpu::InstanceDescriptor::new_with_display_handle_from_env(Box::new(
-            event_loop.owned_display_handle(),
-        )));
+        let instance =
+            wgpu::InstanceDescriptor::new_with_display_handle_from_env(Box::new(event_loop.owned_display_handle()));
+        Ok(Self { window, instance, args: args.clone() })
+    }
+
+    /// Asks for a device that can draw into the window, then builds the
+    /// chapter and the overlay for it.
+    async fn finish<C: Chapter>(self) -> anyhow::Result<Running<C>> {
+        let Self { window, instance, args } = self;
+        let instance = crate::gpu::window_instance(instance).await;
         let surface = instance.create_surface(window.clone()).context("cannot create a surface for the window")?;
-        let gpu = pollster::block_on(Gpu::open(instance, Some(&surface), C::gpu_needs()))?;
+        let gpu = Gpu::open(instance, Some(&surface), C::gpu_needs()).await?;
         check_size(&gpu, args.size)?;
         log::info!("adapter: {}", gpu.describe());
 
-        let caps = surface.get_capabilities(&gpu.adapter);
-        // Chapters output linear colour and let an sRGB target encode it.
-        let format =
-            caps.formats.iter().copied().find(|f| f.is_srgb()).or(caps.formats.first().copied()).ok_or_else(|| {
-                anyhow!("{} cannot draw into this window (it offers no surface formats)", gpu.describe())
-            })?;
-        let overlay_format = format.remove_srgb_suffix();
         let size = window.inner_size();
-        let config = wgpu::SurfaceConfiguration {
-            usage: wgpu::TextureUsages::RENDER_ATTACHMENT,
-            format,
-            width: size.width.max(1),
-            height: size.height.max(1),
-            // Fifo is always there and waits for vsync; lavapipe lists
-            // Immediate first, which would spin the CPU for nothing.
-            present_mode: wgpu::PresentMode::Fifo,
-            desired_maximum_frame_latency: 2,
-            alpha_mode: wgpu::CompositeAlphaMode::Auto,
-            color_space: Default::default(),
-            view_formats: if overlay_format == format { vec![] } else { vec![overlay_format] },
-        };
+        let (config, scene_format, overlay_format) = surface_config(&gpu, &surface, size.width, size.height)?;
         surface.configure(&gpu.device, &config);
 
         let view = args.view_index::<C>();
-        let target = Target { format, width: config.width, height: config.height };
+        let target = Target { format: scene_format, width: config.width, height: config.height };
         let mut chapter = crate::chapter::create::<C>(&gpu, target, &args.chapter_flags)?;
         show_view(&mut chapter, view);
         let overlay = Overlay::new(&window, &gpu, overlay_format);
 
-        let watcher = ShaderWatcher::start();
+        let watcher = shader::ShaderWatcher::start();
         shader::read_from(watcher.as_ref().map(|_| PathBuf::from(shader::SHADER_DIR)));
         let status = match &watcher {
             Some(watcher) => format!("watching {} for edits", watcher.dir.display()),
             None => "shaders are built in (no source tree to watch)".into(),
         };
-        Ok(Self {
+        // An unknown URL parameter is worth more than the line above.
+        #[cfg(target_arch = "wasm32")]
+        let status = crate::web::notice().unwrap_or(status);
+        Ok(Running {
             window,
             surface,
             config,
+            scene_format,
             overlay_format,
             gpu,
             chapter,
@@ -252,12 +355,16 @@ impl<C: Chapter> Running<C> {
             status,
             drawn: 0,
             skipped: 0,
+            held_seen: 0,
+            looked: 0.0,
             probe: args.probe.clone(),
         })
     }
+}
 
+impl<C: Chapter> Running<C> {
     fn target(&self) -> Target {
-        Target { format: self.config.format, width: self.config.width, height: self.config.height }
+        Target { format: self.scene_format, width: self.config.width, height: self.config.height }
     }
 
     /// Whether there is anything to draw into: a minimised window reports
@@ -316,6 +423,11 @@ impl<C: Chapter> Running<C> {
     }
 
     fn screenshot(&mut self) {
+        if cfg!(target_arch = "wasm32") {
+            // Reading the picture back would block the page's only thread.
+            self.status = "F12 saves screenshots on the desktop (`cargo run -p <chapter>`)".into();
+            return;
+        }
         let path = PathBuf::from(format!("{}-{}-{:.2}s.png", C::NAME, C::VIEWS[self.view].name, self.time));
         let target = self.target();
         let result = crate::headless::capture(&self.gpu, &mut self.chapter, target, self.time, self.view)
@@ -331,6 +443,10 @@ impl<C: Chapter> Running<C> {
     fn frame(&mut self) -> anyhow::Result<()> {
         if self.draw()? {
             self.drawn += 1;
+            #[cfg(target_arch = "wasm32")]
+            if self.drawn == 1 {
+                crate::web::first_frame(&self.gpu.describe());
+            }
             if let Some(n) = &mut self.frames_left {
                 *n = n.saturating_sub(1);
             }
@@ -372,9 +488,13 @@ impl<C: Chapter> Running<C> {
         }
         self.reload_shaders();
         self.chapter.update(&self.input, dt);
+        self.held_seen = self.held_seen.max(self.input.held_count());
+        self.looked += self.input.look.length();
         self.input.end_frame();
 
-        let scene_view = frame.texture.create_view(&Default::default());
+        let scene_view = frame
+            .texture
+            .create_view(&wgpu::TextureViewDescriptor { format: Some(self.scene_format), ..Default::default() });
         let overlay_view = frame
             .texture
             .create_view(&wgpu::TextureViewDescriptor { format: Some(self.overlay_format), ..Default::default() });
@@ -410,7 +530,6 @@ impl<C: Chapter> Running<C> {
     /// For tests that drive the window from outside (`--probe PATH`): one
     /// line with what they cannot see in pixels, written whole each frame.
     fn write_probe(&mut self) {
-        let Some(path) = &self.probe else { return };
         let camera = match self.chapter.camera_mut() {
             Some(c) => {
                 format!("{:.4} {:.4} {:.4} {:.5} {:.5}", c.position.x, c.position.y, c.position.z, c.yaw, c.pitch)
@@ -418,14 +537,20 @@ impl<C: Chapter> Running<C> {
             None => "none".into(),
         };
         let line = format!(
-            "drawn={} skipped={} surface={}x{} view={} typing={} camera={camera}\n",
+            "drawn={} skipped={} surface={}x{} view={} typing={} held={} looked={:.0} camera={camera}\n",
             self.drawn,
             self.skipped,
             self.config.width,
             self.config.height,
             C::VIEWS[self.view].name,
             u8::from(self.overlay.ctx.egui_wants_keyboard_input()),
+            self.held_seen,
+            self.looked,
         );
+        // In a browser the test reads the line from the page instead.
+        #[cfg(target_arch = "wasm32")]
+        crate::web::set_state("probe", line.trim_end());
+        let Some(path) = &self.probe else { return };
         let partial = path.with_extension("partial");
         if std::fs::write(&partial, line).and_then(|()| std::fs::rename(&partial, path)).is_err() {
             eprintln!("cannot write the probe file {}", path.display());

@@ -17,6 +17,7 @@ use anyhow::{Context as _, bail, ensure};
 mod assets;
 mod book;
 mod prerequisites;
+mod web;
 mod window_test;
 
 fn main() -> ExitCode {
@@ -28,13 +29,15 @@ fn main() -> ExitCode {
         Some("bench") => bench(&args[1..]),
         Some("window") => window_test::run(&args[1..]),
         Some("assets") => assets::generate(),
+        Some("serve") => web::serve(&args[1..]),
+        Some("web") => web::build(&root().join("book/book")),
         Some("help" | "--help" | "-h") | None => {
             print!("{}", USAGE);
             return ExitCode::SUCCESS;
         }
-        Some(other) => {
-            Err(anyhow::anyhow!("unknown task '{other}'; the tasks are: test, snapshot, book, window, bench, assets"))
-        }
+        Some(other) => Err(anyhow::anyhow!(
+            "unknown task '{other}'; the tasks are: test, snapshot, book, serve, web, window, bench, assets"
+        )),
     };
     match result {
         Ok(()) => ExitCode::SUCCESS,
@@ -48,7 +51,9 @@ fn main() -> ExitCode {
 const USAGE: &str = "\
 cargo xtask test                           everything CI runs (prerequisites, fmt, clippy, tests, snapshots, book)
 cargo xtask snapshot [--bless] [CHAPTER..] compare every view with its reference; --bless rewrites them
-cargo xtask book                           check snapshots, copy figures, build book/book/index.html
+cargo xtask book                           check snapshots, copy figures, build the chapters for the browser and book/book/
+cargo xtask serve [PORT]                   serve book/book on http://127.0.0.1:PORT/ (default 3000)
+cargo xtask web                            only rebuild the chapters' browser pages, book/book/live/
 cargo xtask window [CHAPTER..]             drive every chapter's window under Xvfb with xdotool
 cargo xtask bench [CHAPTER..]              release build; frame times at 1280x720 into book/src/bench/
 cargo xtask assets                         paint every texture under assets/ from code

@@ -45,7 +45,7 @@ fn has_window_tools() -> bool {
 
 /// Installs Debian packages when we may (root on Debian or Ubuntu);
 /// otherwise fails with the one command to run.
-fn apt_install(why: &str, packages: &[&str]) -> anyhow::Result<()> {
+pub fn apt_install(why: &str, packages: &[&str]) -> anyhow::Result<()> {
     let install = format!("apt-get install -y --no-install-recommends {}", packages.join(" "));
     if !Path::new("/etc/debian_version").exists() {
         bail!("{why}: install the equivalent of these Debian packages: {}", packages.join(" "));

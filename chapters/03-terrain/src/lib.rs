@@ -8,11 +8,11 @@ pub mod heightfield;
 pub mod noise;
 
 use std::sync::Arc;
-use std::time::Instant;
 
 use common::chapter::uniform_entry;
 use common::glam::{Vec3, Vec4};
 use common::texture::{depth_test, depth_view};
+use common::timing::measure;
 use common::wgpu::util::DeviceExt as _;
 use common::{
     Camera, Chapter, FlyController, Frame, Gpu, Input, ShaderError, ShaderFile, Target, View, anyhow, egui, shader,
@@ -216,12 +216,9 @@ impl TerrainData {
     /// tests that create chapters again and again, share it.
     pub fn get(gpu: &Gpu, settings: TerrainSettings) -> Arc<Self> {
         gpu.cached(settings, || {
-            let start = Instant::now();
-            let field = HeightField::generate(settings);
-            let heights = start.elapsed().as_secs_f64() * 1e3;
-            let start = Instant::now();
-            let mesh = TerrainMesh::new(&gpu.device, &field);
-            Self { field, mesh, timings: (heights, start.elapsed().as_secs_f64() * 1e3) }
+            let (field, heights) = measure(|| HeightField::generate(settings));
+            let (mesh, meshes) = measure(|| TerrainMesh::new(&gpu.device, &field));
+            Self { field, mesh, timings: (heights, meshes) }
         })
     }
 }

@@ -1,0 +1,493 @@
+//! `browser URL [CHAPTER...]`: the browser test. With the book served at
+//! URL (`cargo xtask test` serves it), it opens every chapter's page in
+//! headless Chromium on SwiftShader's WebGPU and checks, for each chapter:
+//!
+//! - the still picture (`?view=…&time=…&size=800x450`, the `--screenshot`
+//!   path) read back from the canvas matches the native snapshot by FLIP,
+//!   within the chapter's browser tolerance (SwiftShader is not lavapipe);
+//! - the live page draws frames, a held key and a mouse drag reach the
+//!   chapter (its probe says so), and a canvas collapsed to 0×0 pauses and
+//!   then resumes;
+//! - nothing was written to the console as an error, and nothing panicked.
+//!
+//! Once per run it also checks that a panic's message reaches the page and
+//! the console, that an unknown URL parameter is reported, and that a
+//! browser with neither WebGPU nor WebGL2 gets a message.
+//!
+//! With `--bench FILE` it instead measures, per chapter, the time from
+//! opening the page to its first frame and the live frame time, and writes
+//! them as a Markdown table.
+
+use std::ffi::OsStr;
+use std::path::{Path, PathBuf};
+use std::process::ExitCode;
+use std::sync::{Arc, Mutex};
+use std::time::{Duration, Instant};
+
+use anyhow::{Context as _, bail, ensure};
+use common::{anyhow, image};
+use headless_chrome::protocol::cdp::{Input, Page, Runtime};
+use headless_chrome::{Browser, LaunchOptions, Tab};
+use snapshots::snapshot::{self, Comparison, Tolerance};
+
+const WIDTH: u32 = snapshots::WIDTH;
+const HEIGHT: u32 = snapshots::HEIGHT;
+/// How long one step may take: SwiftShader renders chapter 07 at a few
+/// frames a second, and building chapter 03's terrain takes seconds.
+const STEP: Duration = Duration::from_secs(120);
+
+/// The flags that give headless Chromium a WebGPU adapter with no GPU
+/// (SwiftShader's Vulkan), measured on Debian 12 with Chromium 156, and
+/// the ones that keep it from reaching for the network.
+const WEBGPU_FLAGS: &[&str] = &[
+    "--enable-unsafe-webgpu",
+    "--enable-features=Vulkan",
+    "--use-vulkan=swiftshader",
+    "--use-angle=swiftshader",
+    "--enable-unsafe-swiftshader",
+    "--ignore-gpu-blocklist",
+];
+const QUIET_FLAGS: &[&str] =
+    &["--disable-background-networking", "--disable-component-update", "--disable-sync", "--no-first-run"];
+
+// ANCHOR: tolerance
+/// How far each chapter's still picture in Chromium (SwiftShader's WebGPU)
+/// may be from its native snapshot (lavapipe), by FLIP: measured, then set
+/// a little above what was measured. Same maths, two rasterisers: edges
+/// and texture filtering differ by a level here and there.
+fn browser_tolerance(chapter: &str) -> Tolerance {
+    match chapter {
+        _ => Tolerance::DEFAULT,
+    }
+}
+// ANCHOR_END: tolerance
+
+fn main() -> ExitCode {
+    let mut args = std::env::args().skip(1);
+    let Some(url) = args.next() else {
+        eprintln!("usage: browser URL [--bench FILE] [CHAPTER...]");
+        return ExitCode::from(2);
+    };
+    let mut bench = None;
+    let mut names = Vec::new();
+    while let Some(arg) = args.next() {
+        match arg.as_str() {
+            "--bench" => bench = args.next().map(PathBuf::from),
+            "--look" => {
+                // `--look PATH_AND_QUERY`: what a page says after ten seconds, for debugging.
+                let target = args.next().unwrap_or_default();
+                return match look(&url, &target) {
+                    Ok(()) => ExitCode::SUCCESS,
+                    Err(error) => {
+                        eprintln!("browser: {error:#}");
+                        ExitCode::FAILURE
+                    }
+                };
+            }
+            name => names.push(name.to_string()),
+        }
+    }
+    let chosen: Vec<snapshots::Entry> =
+        snapshots::chapters().into_iter().filter(|e| names.is_empty() || names.iter().any(|n| n == e.name)).collect();
+    let result = match bench {
+        Some(out) => bench_all(&url, &chosen, &out),
+        None => test_all(&url, &chosen),
+    };
+    match result {
+        Ok(()) => ExitCode::SUCCESS,
+        Err(error) => {
+            eprintln!("browser: {error:#}");
+            ExitCode::FAILURE
+        }
+    }
+}
+
+fn chromium() -> PathBuf {
+    std::env::var_os("CHROMIUM").map_or_else(|| PathBuf::from("/usr/bin/chromium"), PathBuf::from)
+}
+
+fn launch(flags: &[&str]) -> anyhow::Result<Browser> {
+    let args: Vec<&OsStr> = flags.iter().chain(QUIET_FLAGS).map(OsStr::new).collect();
+    let options = LaunchOptions::default_builder()
+        .path(Some(chromium()))
+        .headless(true)
+        .sandbox(false)
+        // Without it the launcher adds --disable-gpu, and WebGPU canvases
+        // are never composited: every read-back is blank.
+        .enable_gpu(true)
+        .window_size(Some((WIDTH + 200, HEIGHT + 300)))
+        .idle_browser_timeout(Duration::from_secs(900))
+        .args(args)
+        .build()
+        .map_err(|e| anyhow::anyhow!("{e}"))?;
+    Browser::new(options).map_err(|e| anyhow::anyhow!("cannot start {}: {e}", chromium().display()))
+}
+
+/// Marks console messages that are errors.
+const ERROR: &str = "error: ";
+
+/// A page, with what it wrote to the console as errors.
+struct ChapterPage {
+    tab: Arc<Tab>,
+    errors: Arc<Mutex<Vec<String>>>,
+}
+
+impl ChapterPage {
+    fn open(browser: &Browser, url: &str) -> anyhow::Result<Self> {
+        let tab = browser.new_tab().map_err(|e| anyhow::anyhow!("{e}"))?;
+        tab.set_default_timeout(STEP);
+        let errors = Arc::new(Mutex::new(Vec::new()));
+        let sink = errors.clone();
+        tab.enable_log().map_err(|e| anyhow::anyhow!("{e}"))?;
+        tab.enable_runtime().map_err(|e| anyhow::anyhow!("{e}"))?;
+        tab.add_event_listener(Arc::new(move |event: &headless_chrome::protocol::cdp::types::Event| {
+            use headless_chrome::protocol::cdp::types::Event;
+            // Everything is kept, errors marked: `console_errors` picks them.
+            let message = match event {
+                Event::RuntimeConsoleAPICalled(call) => {
+                    let text: Vec<String> =
+                        call.params.args.iter().filter_map(|a| a.value.as_ref().map(|v| v.to_string())).collect();
+                    let error = call.params.Type == Runtime::ConsoleAPICalledEventTypeOption::Error;
+                    Some(format!("{}{}", if error { ERROR } else { "" }, text.join(" ")))
+                }
+                Event::RuntimeExceptionThrown(thrown) => {
+                    let details = &thrown.params.exception_details;
+                    let text = details.exception.as_ref().and_then(|e| e.description.clone());
+                    Some(format!("{ERROR}{} {}", details.text, text.unwrap_or_default()))
+                }
+                Event::LogEntryAdded(entry) => {
+                    let error = entry.params.entry.level == headless_chrome::protocol::cdp::Log::LogEntryLevel::Error;
+                    Some(format!("{}{}", if error { ERROR } else { "" }, entry.params.entry.text))
+                }
+                _ => None,
+            };
+            if let Some(message) = message {
+                sink.lock().unwrap_or_else(|e| e.into_inner()).push(message);
+            }
+        }))
+        .map_err(|e| anyhow::anyhow!("{e}"))?;
+        tab.navigate_to(url).map_err(|e| anyhow::anyhow!("{e}"))?;
+        tab.wait_until_navigated().map_err(|e| anyhow::anyhow!("{e}"))?;
+        Ok(Self { tab, errors })
+    }
+
+    fn eval(&self, expression: &str) -> anyhow::Result<serde_json::Value> {
+        let value = self.tab.evaluate(expression, true).map_err(|e| anyhow::anyhow!("{expression}: {e}"))?;
+        Ok(value.value.unwrap_or(serde_json::Value::Null))
+    }
+
+    fn state(&self, key: &str) -> String {
+        self.eval(&format!("document.body.dataset.{key} || ''"))
+            .ok()
+            .and_then(|v| v.as_str().map(str::to_string))
+            .unwrap_or_default()
+    }
+
+    /// Waits until `ready` holds for the page's probe line, or the page
+    /// reports an error.
+    fn wait_for(&self, what: &str, ready: impl Fn(&Probe) -> bool) -> anyhow::Result<Probe> {
+        let deadline = Instant::now() + STEP;
+        loop {
+            if self.state("status") == "error" {
+                bail!("the page reports: {}", self.state("error"));
+            }
+            if let Some(probe) = Probe::parse(&self.state("probe"))
+                && ready(&probe)
+            {
+                return Ok(probe);
+            }
+            ensure!(Instant::now() < deadline, "{what}: not within {STEP:?} (probe: {})", self.state("probe"));
+            std::thread::sleep(Duration::from_millis(100));
+        }
+    }
+
+    fn wait_status(&self, wanted: &str) -> anyhow::Result<()> {
+        let deadline = Instant::now() + STEP;
+        loop {
+            match self.state("status").as_str() {
+                "error" => bail!("the page reports: {}", self.state("error")),
+                s if s == wanted => return Ok(()),
+                _ => {}
+            }
+            ensure!(Instant::now() < deadline, "no '{wanted}' status within {STEP:?}");
+            std::thread::sleep(Duration::from_millis(100));
+        }
+    }
+
+    fn console_errors(&self) -> Vec<String> {
+        let all = self.errors.lock().unwrap_or_else(|e| e.into_inner());
+        all.iter().filter_map(|m| m.strip_prefix(ERROR)).map(str::to_string).collect()
+    }
+
+    fn console(&self) -> Vec<String> {
+        self.errors.lock().unwrap_or_else(|e| e.into_inner()).clone()
+    }
+
+    fn key(&self, code: &str, key: &str, down: bool) -> anyhow::Result<()> {
+        let kind =
+            if down { Input::DispatchKeyEventTypeOption::KeyDown } else { Input::DispatchKeyEventTypeOption::KeyUp };
+        self.tab
+            .call_method(Input::DispatchKeyEvent {
+                Type: kind,
+                modifiers: None,
+                timestamp: None,
+                text: down.then(|| key.to_string()),
+                unmodified_text: None,
+                key_identifier: None,
+                code: Some(code.into()),
+                key: Some(key.into()),
+                windows_virtual_key_code: Some(i32::from(key.to_ascii_uppercase().as_bytes()[0]) as u32),
+                native_virtual_key_code: None,
+                auto_repeat: None,
+                is_keypad: None,
+                is_system_key: None,
+                location: None,
+                commands: None,
+            })
+            .map_err(|e| anyhow::anyhow!("{e}"))?;
+        Ok(())
+    }
+
+    fn mouse(&self, kind: Input::DispatchMouseEventTypeOption, x: f64, y: f64, pressed: bool) -> anyhow::Result<()> {
+        self.tab
+            .call_method(Input::DispatchMouseEvent {
+                Type: kind,
+                x,
+                y,
+                modifiers: None,
+                timestamp: None,
+                button: Some(Input::MouseButton::Left),
+                buttons: Some(u32::from(pressed)),
+                click_count: Some(1),
+                force: None,
+                tangential_pressure: None,
+                tilt_x: None,
+                tilt_y: None,
+                twist: None,
+                delta_x: None,
+                delta_y: None,
+                pointer_Type: None,
+            })
+            .map_err(|e| anyhow::anyhow!("{e}"))?;
+        Ok(())
+    }
+
+    /// The canvas as the page shows it, read back by Chromium.
+    fn canvas(&self) -> anyhow::Result<image::RgbaImage> {
+        // Two animation frames: the picture has reached the compositor.
+        self.eval("new Promise(r => requestAnimationFrame(() => requestAnimationFrame(() => r(1))))")?;
+        let png = self
+            .tab
+            .find_element("#chapter")
+            .and_then(|canvas| canvas.capture_screenshot(Page::CaptureScreenshotFormatOption::Png))
+            .map_err(|e| anyhow::anyhow!("reading the canvas back: {e}"))?;
+        Ok(image::load_from_memory(&png).context("decoding the canvas")?.to_rgba8())
+    }
+}
+
+/// What the live runner reports each frame (`data-probe`).
+#[derive(Clone, Debug, Default)]
+struct Probe {
+    drawn: u64,
+    skipped: u64,
+    held: u64,
+    looked: f64,
+    camera: Option<Vec<f32>>,
+}
+
+impl Probe {
+    fn parse(line: &str) -> Option<Self> {
+        let field = |name: &str| line.split_whitespace().find_map(|w| w.strip_prefix(name));
+        let camera = line.split_once("camera=")?.1.trim();
+        Some(Self {
+            drawn: field("drawn=")?.parse().ok()?,
+            skipped: field("skipped=")?.parse().ok()?,
+            held: field("held=")?.parse().ok()?,
+            looked: field("looked=")?.parse().ok()?,
+            camera: (camera != "none").then(|| camera.split_whitespace().filter_map(|v| v.parse().ok()).collect()),
+        })
+    }
+}
+
+fn page_url(base: &str, chapter: &str, query: &str) -> String {
+    format!("{}/live/{chapter}/index.html{query}", base.trim_end_matches('/'))
+}
+
+fn test_all(base: &str, chapters: &[snapshots::Entry]) -> anyhow::Result<()> {
+    let started = Instant::now();
+    let browser = launch(WEBGPU_FLAGS)?;
+    let mut failures = Vec::new();
+    for entry in chapters {
+        let begun = Instant::now();
+        match test_chapter(&browser, base, entry) {
+            Ok(comparison) => {
+                println!("browser {:<14} ok in {:>5.1} s: {comparison}", entry.name, begun.elapsed().as_secs_f64())
+            }
+            Err(error) => {
+                println!("browser {:<14} FAILED: {error:#}", entry.name);
+                failures.push(entry.name);
+            }
+        }
+    }
+    if let Err(error) = test_pages(&browser, base) {
+        println!("browser pages FAILED: {error:#}");
+        failures.push("pages");
+    }
+    println!("browser test: {} chapters in {:.0} s", chapters.len(), started.elapsed().as_secs_f64());
+    ensure!(failures.is_empty(), "failed in the browser: {}", failures.join(", "));
+    Ok(())
+}
+
+// ANCHOR: chapter
+fn test_chapter(browser: &Browser, base: &str, entry: &snapshots::Entry) -> anyhow::Result<Comparison> {
+    // The still picture, through the --screenshot path, against the snapshot.
+    let view = entry.views.iter().find(|v| v.snapshot).context("no snapshot view")?.name;
+    let query = format!("?view={view}&time={}&size={WIDTH}x{HEIGHT}", entry.time);
+    let page = ChapterPage::open(browser, &page_url(base, entry.name, &query))?;
+    page.wait_status("picture")?;
+    let picture = page.canvas()?;
+    ensure!(picture.dimensions() == (WIDTH, HEIGHT), "the canvas read back is {:?}", picture.dimensions());
+    let reference = snapshots::reference_path(entry.name, view);
+    let expected = image::open(&reference).with_context(|| format!("no reference {}", reference.display()))?;
+    let (comparison, diff) = snapshot::compare(&expected.to_rgba8(), &picture);
+    let tolerance = browser_tolerance(entry.name);
+    if !comparison.passes(tolerance) {
+        let out = std::env::temp_dir().join("browser-test");
+        std::fs::create_dir_all(&out)?;
+        let (actual, diff_path) =
+            (out.join(format!("{}-{view}.png", entry.name)), out.join(format!("{}-{view}-diff.png", entry.name)));
+        picture.save(&actual)?;
+        diff.save(&diff_path)?;
+        bail!(
+            "{comparison}, allowed mean {} and {}% outliers; the canvas: {}, FLIP map: {}",
+            tolerance.mean,
+            100.0 * tolerance.outliers,
+            actual.display(),
+            diff_path.display()
+        );
+    }
+    no_console_errors(&page)?;
+    let _ = page.tab.close(false);
+
+    // The live chapter: frames, a held key, a drag, a collapsed canvas.
+    let page = ChapterPage::open(browser, &page_url(base, entry.name, ""))?;
+    let start = page.wait_for("three live frames", |p| p.drawn >= 3)?;
+    page.eval("document.getElementById('chapter').focus(), 1")?;
+    page.key("KeyW", "w", true)?;
+    let held = page.wait_for("the held W key reaching the chapter", |p| p.held >= 1 && p.drawn > start.drawn + 2);
+    page.key("KeyW", "w", false)?;
+    let held = held?;
+    if start.camera.is_some() {
+        ensure!(held.camera != start.camera, "W was held for frames, but the camera did not move");
+    }
+    let (x, y) = (f64::from(WIDTH) * 0.7, f64::from(HEIGHT) * 0.6);
+    page.mouse(Input::DispatchMouseEventTypeOption::MousePressed, x, y, true)?;
+    for step in 1..=10 {
+        page.mouse(Input::DispatchMouseEventTypeOption::MouseMoved, x + 8.0 * f64::from(step), y, true)?;
+        std::thread::sleep(Duration::from_millis(30));
+    }
+    let dragged = page.wait_for("the drag reaching the chapter", |p| p.looked > 0.0);
+    page.mouse(Input::DispatchMouseEventTypeOption::MouseReleased, x + 80.0, y, false)?;
+    let dragged = dragged?;
+    if let (Some(before), Some(after)) = (&held.camera, &dragged.camera) {
+        ensure!(before[3] != after[3], "the drag reached the runner but did not turn the camera");
+    }
+    page.eval("document.getElementById('chapter').style.height = '0px', 1")?;
+    let collapsed = page.wait_for("a 0x0 canvas skipping frames", |p| p.skipped > dragged.skipped)?;
+    page.eval("document.getElementById('chapter').style.height = '', 1")?;
+    page.wait_for("frames again after the canvas came back", |p| p.drawn > collapsed.drawn + 2)?;
+    no_console_errors(&page)?;
+    let _ = page.tab.close(false);
+    Ok(comparison)
+}
+// ANCHOR_END: chapter
+
+fn no_console_errors(page: &ChapterPage) -> anyhow::Result<()> {
+    let errors = page.console_errors();
+    ensure!(errors.is_empty(), "console errors:\n  {}", errors.join("\n  "));
+    Ok(())
+}
+
+/// What every page does with bad input, checked once on chapter 01.
+fn test_pages(browser: &Browser, base: &str) -> anyhow::Result<()> {
+    let page = ChapterPage::open(browser, &page_url(base, "triangle", "?bogus=1"))?;
+    page.wait_for("frames with an unknown parameter", |p| p.drawn >= 1)?;
+    let notice = page.state("notice");
+    ensure!(notice.contains("bogus"), "an unknown URL parameter was not reported (notice: '{notice}')");
+
+    let page = ChapterPage::open(browser, &page_url(base, "triangle", "?view=nope"))?;
+    let deadline = Instant::now() + STEP;
+    while page.state("status") != "error" {
+        ensure!(Instant::now() < deadline, "view=nope gave no error");
+        std::thread::sleep(Duration::from_millis(100));
+    }
+    let shown = page.eval("document.getElementById('message').textContent")?;
+    ensure!(shown.as_str().is_some_and(|s| s.contains("nope") && s.contains("default")), "view=nope showed {shown}");
+
+    let page = ChapterPage::open(browser, &page_url(base, "triangle", "?panic=1"))?;
+    let deadline = Instant::now() + STEP;
+    while page.state("status") != "error" {
+        ensure!(Instant::now() < deadline, "panic=1 did not show an error");
+        std::thread::sleep(Duration::from_millis(100));
+    }
+    let shown = page.eval("document.getElementById('message').textContent")?;
+    ensure!(shown.as_str().is_some_and(|s| s.contains("panicked")), "a panic showed '{shown}' in the page");
+    let console = page.console_errors();
+    ensure!(console.iter().any(|e| e.contains("panicked")), "a panic did not reach the console: {console:?}");
+    drop(page);
+
+    // No WebGPU and no WebGL: the frame says so instead of staying blank.
+    let bare = launch(&["--disable-gpu", "--disable-webgl", "--disable-3d-apis"])?;
+    let page = ChapterPage::open(&bare, &page_url(base, "triangle", ""))?;
+    let deadline = Instant::now() + STEP;
+    while page.state("status") != "error" {
+        ensure!(Instant::now() < deadline, "a browser without WebGPU or WebGL got no message");
+        std::thread::sleep(Duration::from_millis(100));
+    }
+    let shown = page.eval("document.getElementById('message').textContent")?;
+    ensure!(shown.as_str().is_some_and(|s| s.contains("WebGPU")), "without WebGPU or WebGL the page showed '{shown}'");
+    println!("browser pages ok: unknown parameter reported, bad view named, panic shown, no-adapter message");
+    Ok(())
+}
+
+fn look(base: &str, target: &str) -> anyhow::Result<()> {
+    let browser = launch(WEBGPU_FLAGS)?;
+    let page = ChapterPage::open(&browser, &format!("{}/{target}", base.trim_end_matches('/')))?;
+    std::thread::sleep(Duration::from_secs(10));
+    let c = "document.getElementById('chapter')";
+    let facts = page.eval(&format!(
+        "JSON.stringify({{data: {{...document.body.dataset}}, width: {c}.width, height: {c}.height, \
+         client: [{c}.clientWidth, {c}.clientHeight], ratio: devicePixelRatio, \
+         message: document.getElementById('message').textContent}})"
+    ))?;
+    println!("{}", facts.as_str().unwrap_or_default());
+    println!("console: {:#?}", page.console());
+    let out = std::env::temp_dir().join("browser-look.png");
+    page.canvas()?.save(&out)?;
+    let url = page.eval("document.getElementById('chapter').toDataURL('image/png')")?;
+    let url = url.as_str().unwrap_or_default();
+    println!("toDataURL: {} chars, {}", url.len(), &url[..url.len().min(80)]);
+    std::fs::write(std::env::temp_dir().join("browser-look.b64"), url)?;
+    println!("canvas: {}", out.display());
+    Ok(())
+}
+
+fn bench_all(base: &str, chapters: &[snapshots::Entry], out: &Path) -> anyhow::Result<()> {
+    let browser = launch(WEBGPU_FLAGS)?;
+    let mut rows = Vec::new();
+    for entry in chapters {
+        let page = ChapterPage::open(&browser, &page_url(base, entry.name, ""))?;
+        page.wait_for("the first frame", |p| p.drawn >= 1)?;
+        let first_ms: f64 = page.state("firstFrameMs").parse().unwrap_or(f64::NAN);
+        let before = page.wait_for("frames", |p| p.drawn >= 3)?;
+        let t0 = Instant::now();
+        std::thread::sleep(Duration::from_secs(5));
+        let after = page.wait_for("frames", |p| p.drawn > before.drawn)?;
+        let frame_ms = t0.elapsed().as_secs_f64() * 1e3 / (after.drawn - before.drawn) as f64;
+        println!("{}: first frame {first_ms:.0} ms, {frame_ms:.1} ms a frame", entry.name);
+        rows.push(format!("{}\t{first_ms:.0}\t{frame_ms:.1}\t{}", entry.name, page.state("adapter")));
+        let _ = page.tab.close(false);
+    }
+    std::fs::write(out, rows.join("\n") + "\n")?;
+    Ok(())
+}

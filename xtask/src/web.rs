@@ -1,0 +1,223 @@
+//! The browser build: every chapter compiled to WebAssembly, bound to
+//! JavaScript by `wasm-bindgen` (as a library, the same version the
+//! chapters link), each with a page of its own under the book's `live/`;
+//! a static server on 127.0.0.1 for reading it (WebGPU needs a secure
+//! context, and localhost is one); and headless Chromium to test it.
+
+use std::io::Read as _;
+use std::path::{Path, PathBuf};
+use std::process::Command;
+
+use anyhow::{Context as _, bail, ensure};
+
+use crate::{cargo, chapter_names, root, target_dir};
+
+const WASM_TARGET: &str = "wasm32-unknown-unknown";
+/// The cargo profile of the browser build (see the workspace Cargo.toml).
+const PROFILE: &str = "web";
+
+/// Rust's WebAssembly target, installed with rustup when it is missing (as
+/// the Vulkan driver is installed for the tests), or the command to run.
+fn ensure_wasm_target() -> anyhow::Result<()> {
+    let installed = Command::new("rustup").args(["target", "list", "--installed"]).output();
+    let Ok(installed) = installed else {
+        bail!(
+            "building the chapters for the browser needs Rust's {WASM_TARGET} target, and rustup is not here to \
+             install it; install it the way your Rust came (https://rustup.rs)"
+        );
+    };
+    if String::from_utf8_lossy(&installed.stdout).lines().any(|l| l.trim() == WASM_TARGET) {
+        return Ok(());
+    }
+    println!("the browser build needs the {WASM_TARGET} target: installing\n$ rustup target add {WASM_TARGET}");
+    let status = Command::new("rustup").args(["target", "add", WASM_TARGET]).status()?;
+    ensure!(status.success(), "installing failed; run: rustup target add {WASM_TARGET}");
+    Ok(())
+}
+
+/// Compiles every chapter for the browser and writes `live/<chapter>/`
+/// under `out`: the page, its script and its wasm.
+pub fn build(out: &Path) -> anyhow::Result<()> {
+    ensure_wasm_target()?;
+    let chapters = chapter_names()?;
+    let mut args = vec!["build", "--quiet", "--target", WASM_TARGET, "--profile", PROFILE];
+    for chapter in &chapters {
+        args.extend(["-p", chapter.as_str()]);
+    }
+    cargo(&args)?;
+    let live = out.join("live");
+    for chapter in &chapters {
+        let dir = live.join(chapter);
+        std::fs::create_dir_all(&dir)?;
+        let wasm = wasm_path(chapter);
+        wasm_bindgen_cli_support::Bindgen::new()
+            .input_path(&wasm)
+            .out_name(chapter)
+            .web(true)
+            .map_err(|e| anyhow::anyhow!("{e:#}"))?
+            .typescript(false)
+            .generate(&dir)
+            .map_err(|e| anyhow::anyhow!("wasm-bindgen on {}: {e:#}", wasm.display()))?;
+        std::fs::write(dir.join("index.html"), page(chapter))?;
+    }
+    println!("browser build: {} chapters in {}", chapters.len(), live.display());
+    Ok(())
+}
+
+/// Where cargo leaves a chapter's WebAssembly.
+fn wasm_path(chapter: &str) -> PathBuf {
+    target_dir().join(WASM_TARGET).join(PROFILE).join(format!("{chapter}.wasm"))
+}
+
+/// A chapter's page. Opened on its own it starts at once; inside the book's
+/// iframe it waits for a click, so that reading a page never starts GPU
+/// work unasked (and the book's arrow keys stay the book's until then).
+fn page(chapter: &str) -> String {
+    PAGE.replace("{chapter}", chapter)
+}
+
+const PAGE: &str = r#"<!doctype html>
+<html lang="en">
+<head>
+<meta charset="utf-8">
+<meta name="viewport" content="width=device-width, initial-scale=1">
+<title>{chapter} — From Triangle to Ocean</title>
+<link rel="icon" href="data:,">
+<style>
+  html, body { margin: 0; height: 100%; overflow: hidden; background: #15171c; color: #d8dbe2;
+               font: 15px/1.4 system-ui, sans-serif; }
+  canvas#chapter { display: block; width: 100%; height: 100%; outline: none; touch-action: none; }
+  #message { position: absolute; inset: 0; display: flex; align-items: center; justify-content: center;
+             text-align: center; padding: 2em; white-space: pre-wrap; }
+  #message.hidden { display: none; }
+  #message.error { background: #15171ce8; color: #ffb4a6; font-family: ui-monospace, monospace; font-size: 13px; }
+  button { font: inherit; font-size: 1.15em; padding: 0.6em 1.4em; border-radius: 6px; border: 1px solid #8894a8;
+           background: #262a33; color: inherit; cursor: pointer; }
+</style>
+</head>
+<body>
+<canvas id="chapter" tabindex="0"></canvas>
+<div id="message">loading {chapter}…</div>
+<script type="module">
+  import init from "./{chapter}.js";
+  const message = document.getElementById("message");
+  // The chapter reports through data-status: starting, running, picture or error.
+  new MutationObserver(() => {
+    const status = document.body.dataset.status;
+    if (status === "running" || status === "picture") message.className = "hidden";
+  }).observe(document.body, { attributes: true, attributeFilter: ["data-status"] });
+  async function start() {
+    message.className = "";
+    message.textContent = "starting {chapter}… (some chapters build their scene for a few seconds first)";
+    try {
+      await init({ module_or_path: "./{chapter}_bg.wasm" });
+      document.getElementById("chapter").focus();
+    } catch (error) {
+      // A panic has already put its own message in the page.
+      if (document.body.dataset.status !== "error") {
+        message.className = "error";
+        message.textContent = `the chapter could not start: ${error}`;
+        document.body.dataset.status = "error";
+      }
+      console.error(error);
+    }
+  }
+  const embedded = window.self !== window.top;
+  if (embedded) {
+    message.innerHTML = '<button type="button">▶ click to run {chapter}</button>';
+    message.querySelector("button").addEventListener("click", start, { once: true });
+  } else {
+    start();
+  }
+</script>
+</body>
+</html>
+"#;
+
+/// Serves `dir` on 127.0.0.1 from a thread; returns the port. Files only,
+/// with the content types browsers insist on (`application/wasm` for
+/// streaming compilation).
+pub fn serve_in_background(dir: &Path, port: u16) -> anyhow::Result<u16> {
+    let server = tiny_http::Server::http(("127.0.0.1", port))
+        .map_err(|e| anyhow::anyhow!("cannot serve on 127.0.0.1:{port}: {e}"))?;
+    let port = server.server_addr().to_ip().map_or(port, |a| a.port());
+    let dir = dir.to_path_buf();
+    std::thread::spawn(move || {
+        for request in server.incoming_requests() {
+            let _ = respond(&dir, request);
+        }
+    });
+    Ok(port)
+}
+
+fn respond(dir: &Path, request: tiny_http::Request) -> std::io::Result<()> {
+    let path = request.url().split(['?', '#']).next().unwrap_or("/").to_string();
+    let relative = path.trim_start_matches('/');
+    // No climbing out of the served folder.
+    let mut file = dir.to_path_buf();
+    for part in relative.split('/').filter(|p| !p.is_empty()) {
+        if part == ".." {
+            return request.respond(tiny_http::Response::empty(403));
+        }
+        file.push(part);
+    }
+    if file.is_dir() {
+        file.push("index.html");
+    }
+    let Ok(bytes) = std::fs::read(&file) else {
+        return request.respond(tiny_http::Response::from_string("not found").with_status_code(404));
+    };
+    let content_type = match file.extension().and_then(|e| e.to_str()).unwrap_or("") {
+        "html" => "text/html; charset=utf-8",
+        "js" | "mjs" => "text/javascript; charset=utf-8",
+        "wasm" => "application/wasm",
+        "css" => "text/css; charset=utf-8",
+        "svg" => "image/svg+xml",
+        "png" => "image/png",
+        "json" => "application/json",
+        "woff2" => "font/woff2",
+        "woff" => "font/woff",
+        "ttf" => "font/ttf",
+        "ico" => "image/x-icon",
+        _ => "application/octet-stream",
+    };
+    let header = tiny_http::Header::from_bytes("Content-Type", content_type).expect("a valid header");
+    request.respond(tiny_http::Response::from_data(bytes).with_header(header))
+}
+
+/// `cargo xtask serve [PORT]`: the built book on http://127.0.0.1:PORT/.
+pub fn serve(args: &[String]) -> anyhow::Result<()> {
+    let port = match args.first() {
+        Some(text) => {
+            text.parse().with_context(|| format!("the port must be a number from 1 to 65535, not '{text}'"))?
+        }
+        None => 3000,
+    };
+    let html = root().join("book/book");
+    ensure!(html.join("live").is_dir(), "{} has no live chapters yet: run `cargo xtask book` first", html.display());
+    let port = serve_in_background(&html, port)?;
+    println!("serving {} on http://127.0.0.1:{port}/ (Ctrl-C stops)", html.display());
+    loop {
+        std::thread::park();
+    }
+}
+
+/// Debian's Chromium, installed as the Vulkan driver is, or the command to run.
+pub fn ensure_chromium() -> anyhow::Result<PathBuf> {
+    let found =
+        || ["/usr/bin/chromium", "/usr/bin/chromium-browser"].map(PathBuf::from).into_iter().find(|p| p.exists());
+    if let Some(path) = found() {
+        return Ok(path);
+    }
+    crate::prerequisites::apt_install("the browser test needs Chromium", &["chromium"])?;
+    found().context("installed chromium but /usr/bin/chromium is missing")
+}
+
+/// Bytes of `path`, and of it compressed by gzip at the level static hosts use.
+pub fn sizes(path: &Path) -> anyhow::Result<(u64, u64)> {
+    let bytes = std::fs::read(path).with_context(|| format!("cannot read {}", path.display()))?;
+    let mut gz = flate2::read::GzEncoder::new(&bytes[..], flate2::Compression::new(9));
+    let mut compressed = Vec::new();
+    gz.read_to_end(&mut compressed)?;
+    Ok((bytes.len() as u64, compressed.len() as u64))
+}
