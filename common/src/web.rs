@@ -67,6 +67,7 @@ pub fn run<C: Chapter>() -> ExitCode {
     ExitCode::SUCCESS
 }
 
+// ANCHOR: page_args
 /// Reads the page's URL into the flags a chapter binary takes, so that a
 /// bad value gets the same message as a bad flag. True when a `time` was
 /// given: then the page shows a still picture.
@@ -111,6 +112,7 @@ fn page_args<C: Chapter>() -> Result<(Args, bool), String> {
     })?;
     Ok((args, picture))
 }
+// ANCHOR_END: page_args
 
 fn set_backends(value: &str) -> Result<(), String> {
     let backends = match value {

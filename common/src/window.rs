@@ -123,6 +123,7 @@ struct Running<C: Chapter> {
 }
 
 impl<C: Chapter> ApplicationHandler<Opened<C>> for App<C> {
+    // ANCHOR: resumed
     fn resumed(&mut self, event_loop: &ActiveEventLoop) {
         if self.running.is_some() || self.opening {
             return;
@@ -131,6 +132,10 @@ impl<C: Chapter> ApplicationHandler<Opened<C>> for App<C> {
             Ok(opening) => opening,
             Err(error) => return self.fail(event_loop, error),
         };
+        // A page's motion events count only while the document has focus,
+        // which an embedded frame or a test browser may never get.
+        #[cfg(target_arch = "wasm32")]
+        event_loop.listen_device_events(winit::event_loop::DeviceEvents::Always);
         self.opening = true;
         let proxy = self.proxy.clone();
         let open = async move {
@@ -142,6 +147,7 @@ impl<C: Chapter> ApplicationHandler<Opened<C>> for App<C> {
         #[cfg(target_arch = "wasm32")]
         wasm_bindgen_futures::spawn_local(open);
     }
+    // ANCHOR_END: resumed
 
     fn user_event(&mut self, event_loop: &ActiveEventLoop, Opened(result): Opened<C>) {
         self.opening = false;
@@ -240,6 +246,7 @@ impl<C: Chapter> ApplicationHandler<Opened<C>> for App<C> {
     }
 }
 
+// ANCHOR: surface
 /// How a window's (or canvas's) surface is set up, as (configuration, the
 /// format chapters draw in, the overlay's format).
 pub(crate) fn surface_config(
@@ -255,10 +262,18 @@ pub(crate) fn surface_config(
         .copied()
         .ok_or_else(|| anyhow!("{} cannot draw into this window (it offers no surface formats)", gpu.describe()))?;
     // Chapters output linear colour and let an sRGB view encode it;
-    // browsers offer only non-sRGB canvases, which can be viewed as sRGB.
-    let scene_format = caps.formats.iter().copied().find(|f| f.is_srgb()).unwrap_or(first.add_srgb_suffix());
-    let format = if caps.formats.contains(&scene_format) { scene_format } else { first };
-    let overlay_format = format.remove_srgb_suffix();
+    // WebGPU canvases are never sRGB, but can be viewed as sRGB.
+    let srgb = caps.formats.iter().copied().find(|f| f.is_srgb());
+    let views = gpu.adapter.get_downlevel_capabilities().flags.contains(wgpu::DownlevelFlags::SURFACE_VIEW_FORMATS);
+    let (format, scene_format, overlay_format) = match srgb {
+        // WebGL2 cannot view a surface in another format: the overlay
+        // draws into the sRGB surface as it is (egui handles both).
+        Some(srgb) if !views => (srgb, srgb, srgb),
+        Some(srgb) => (srgb, srgb, srgb.remove_srgb_suffix()),
+        None if views => (first, first.add_srgb_suffix(), first),
+        // Nothing encodes sRGB here: pictures come out too dark, but come out.
+        None => (first, first, first),
+    };
     let config = wgpu::SurfaceConfiguration {
         usage: wgpu::TextureUsages::RENDER_ATTACHMENT,
         format,
@@ -274,6 +289,7 @@ pub(crate) fn surface_config(
     };
     Ok((config, scene_format, overlay_format))
 }
+// ANCHOR_END: surface
 
 /// A window whose device is still being asked for.
 struct Opening {
@@ -305,7 +321,12 @@ impl Opening {
     async fn finish<C: Chapter>(self) -> anyhow::Result<Running<C>> {
         let Self { window, instance, args } = self;
         let instance = crate::gpu::window_instance(instance).await;
-        let surface = instance.create_surface(window.clone()).context("cannot create a surface for the window")?;
+        let surface = instance.create_surface(window.clone());
+        // In a browser, a canvas no backend can draw into means no WebGPU and no WebGL2.
+        #[cfg(target_arch = "wasm32")]
+        let surface = surface.map_err(|e| crate::NoAdapter { reason: e.to_string() })?;
+        #[cfg(not(target_arch = "wasm32"))]
+        let surface = surface.context("cannot create a surface for the window")?;
         let gpu = Gpu::open(instance, Some(&surface), C::gpu_needs()).await?;
         check_size(&gpu, args.size)?;
         log::info!("adapter: {}", gpu.describe());

@@ -2,9 +2,13 @@
 //!
 //! - `test`: everything CI runs: prerequisites, rustfmt, clippy, `cargo test`
 //!   (which includes the snapshot tests), every chapter in a window under
-//!   Xvfb driven by xdotool, and the book.
+//!   Xvfb driven by xdotool, the book, and every chapter's page in headless
+//!   Chromium.
 //! - `snapshot [--bless] [CHAPTER...]`: compare with, or rewrite, the reference images.
-//! - `book`: check snapshots, copy them in as figures, check anchors, build HTML, check links.
+//! - `book`: check snapshots, copy them in as figures, check anchors, build
+//!   every chapter for the browser and the HTML, check links.
+//! - `serve [PORT]`: the built book on http://127.0.0.1:PORT/.
+//! - `browser [CHAPTER...]`: only the browser test, on the built book.
 //! - `window [CHAPTER...]`: only the window test.
 //! - `bench [CHAPTER...]`: release build, frame times per view, written into the book.
 //! - `assets`: paint every texture under `assets/` from code (deterministic).
@@ -31,12 +35,13 @@ fn main() -> ExitCode {
         Some("assets") => assets::generate(),
         Some("serve") => web::serve(&args[1..]),
         Some("web") => web::build(&root().join("book/book")),
+        Some("browser") => web::browser_test(&args[1..]),
         Some("help" | "--help" | "-h") | None => {
             print!("{}", USAGE);
             return ExitCode::SUCCESS;
         }
         Some(other) => Err(anyhow::anyhow!(
-            "unknown task '{other}'; the tasks are: test, snapshot, book, serve, web, window, bench, assets"
+            "unknown task '{other}'; the tasks are: test, snapshot, book, serve, web, browser, window, bench, assets"
         )),
     };
     match result {
@@ -54,8 +59,10 @@ cargo xtask snapshot [--bless] [CHAPTER..] compare every view with its reference
 cargo xtask book                           check snapshots, copy figures, build the chapters for the browser and book/book/
 cargo xtask serve [PORT]                   serve book/book on http://127.0.0.1:PORT/ (default 3000)
 cargo xtask web                            only rebuild the chapters' browser pages, book/book/live/
+cargo xtask browser [CHAPTER..]            open every chapter's page in headless Chromium and check it
 cargo xtask window [CHAPTER..]             drive every chapter's window under Xvfb with xdotool
 cargo xtask bench [CHAPTER..]              release build; frame times at 1280x720 into book/src/bench/
+cargo xtask bench web                      wasm sizes, first frames and frame times in Chromium into book/src/bench/web.md
 cargo xtask assets                         paint every texture under assets/ from code
 ";
 
@@ -103,6 +110,7 @@ fn test() -> anyhow::Result<()> {
     window_test::run(&[])?;
     // `cargo test` has just compared every snapshot; the book only copies them.
     book::build(false)?;
+    web::browser_test(&[])?;
     println!("\nxtask test: all checks passed in {:.0} s", started.elapsed().as_secs_f64());
     Ok(())
 }
@@ -148,6 +156,9 @@ fn chapter_names() -> anyhow::Result<Vec<String>> {
 }
 
 fn bench(args: &[String]) -> anyhow::Result<()> {
+    if args.first().map(String::as_str) == Some("web") {
+        return web::bench();
+    }
     prerequisites::ensure_adapter()?;
     let all = chapter_names()?;
     let chosen: Vec<String> = if args.is_empty() { all.clone() } else { args.to_vec() };

@@ -56,6 +56,8 @@ pub fn build(out: &Path) -> anyhow::Result<()> {
             .web(true)
             .map_err(|e| anyhow::anyhow!("{e:#}"))?
             .typescript(false)
+            .remove_name_section(true)
+            .remove_producers_section(true)
             .generate(&dir)
             .map_err(|e| anyhow::anyhow!("wasm-bindgen on {}: {e:#}", wasm.display()))?;
         std::fs::write(dir.join("index.html"), page(chapter))?;
@@ -221,3 +223,127 @@ pub fn sizes(path: &Path) -> anyhow::Result<(u64, u64)> {
     gz.read_to_end(&mut compressed)?;
     Ok((bytes.len() as u64, compressed.len() as u64))
 }
+
+/// The browser test (`tests/src/bin/browser.rs`) on the built book, served
+/// on a free port of 127.0.0.1 for as long as it runs.
+pub fn browser_test(chapters: &[String]) -> anyhow::Result<()> {
+    let chromium = ensure_chromium()?;
+    let html = root().join("book/book");
+    ensure!(html.join("live").is_dir(), "{} has no live chapters: run `cargo xtask book` first", html.display());
+    let port = serve_in_background(&html, 0)?;
+    let url = format!("http://127.0.0.1:{port}");
+    let mut args = vec!["run", "--quiet", "-p", "snapshots", "--bin", "browser", "--", url.as_str()];
+    args.extend(chapters.iter().map(String::as_str));
+    run_browser_bin(&args, &chromium)
+}
+
+fn run_browser_bin(args: &[&str], chromium: &Path) -> anyhow::Result<()> {
+    println!("\n$ cargo {}", args.join(" "));
+    let status = Command::new(std::env::var("CARGO").unwrap_or_else(|_| "cargo".into()))
+        .args(args)
+        .current_dir(root())
+        .env("CHROMIUM", chromium)
+        .status()
+        .context("cannot run cargo")?;
+    ensure!(status.success(), "the browser test failed");
+    Ok(())
+}
+
+// ANCHOR: bench
+/// `cargo xtask bench web`: for every chapter of the built book, its wasm's
+/// size (raw and gzip), the time from opening its page in headless
+/// Chromium to its first frame, its live frame time there, the native
+/// release build's frame time at the same size on the same machine, and
+/// whether it renders on WebGL2. Written to `book/src/bench/web.md`.
+pub fn bench() -> anyhow::Result<()> {
+    crate::prerequisites::ensure_adapter()?;
+    let chromium = ensure_chromium()?;
+    let html = root().join("book/book");
+    ensure!(html.join("live").is_dir(), "{} has no live chapters: run `cargo xtask book` first", html.display());
+    let chapters = chapter_names()?;
+    let port = serve_in_background(&html, 0)?;
+    let url = format!("http://127.0.0.1:{port}");
+    let rows_file = target_dir().join("bench-web.tsv");
+    let rows_path = rows_file.display().to_string();
+    run_browser_bin(
+        &["run", "--quiet", "-p", "snapshots", "--bin", "browser", "--", &url, "--bench", &rows_path],
+        &chromium,
+    )?;
+    let rows = std::fs::read_to_string(&rows_file)?;
+    let mut build = vec!["build", "--quiet", "--release"];
+    for chapter in &chapters {
+        build.extend(["-p", chapter.as_str()]);
+    }
+    cargo(&build)?;
+
+    let mut table = String::from(
+        "| chapter | wasm | gzip | page to first frame | frame in Chromium | native frame | WebGL2 |\n\
+         |---|---:|---:|---:|---:|---:|---|\n",
+    );
+    let mut adapter = String::new();
+    for row in rows.lines() {
+        let fields: Vec<&str> = row.split('\t').collect();
+        let [chapter, first_ms, frame_ms, surface, webgl2, browser_adapter] = fields[..] else {
+            bail!("unexpected bench row: {row}");
+        };
+        adapter = browser_adapter.to_string();
+        let (raw, gzip) = sizes(&html.join("live").join(chapter).join(format!("{chapter}_bg.wasm")))?;
+        let native = native_frame_ms(chapter, surface)?;
+        let mb = |bytes: u64| format!("{:.2} MB", bytes as f64 / 1e6);
+        table.push_str(&format!(
+            "| {chapter} | {} | {} | {first_ms} ms | {frame_ms} ms | {native} | {webgl2} |\n",
+            mb(raw),
+            mb(gzip)
+        ));
+    }
+    let cpu = std::fs::read_to_string("/proc/cpuinfo")
+        .ok()
+        .and_then(|info| {
+            info.lines()
+                .find_map(|l| l.strip_prefix("model name").map(|m| m.trim_start_matches([' ', '\t', ':']).to_string()))
+        })
+        .unwrap_or_else(|| "unknown CPU".into());
+    let page = format!(
+        "Measured by `cargo xtask bench web` on {cpu} ({} threads), no GPU: the browser is headless Chromium \
+         with WebGPU on SwiftShader ({adapter}), the native build runs on lavapipe. Sizes are of the wasm \
+         as served (`opt-level = \"z\"`, fat LTO, one codegen unit, `panic = \"abort\"`, no name section), gzip \
+         at level 9. \"Page to first frame\" is `performance.now()` at the live runner's first frame. Frame \
+         times are the mean over five seconds of the live page (its canvas fills an 1000-pixel-wide \
+         window), and the native release build's median `--bench` frame at the same size. WebGL2: the first \
+         view rendered with `backend=webgl2`, its FLIP mean against the snapshot, or why it failed.\n\n{table}",
+        std::thread::available_parallelism().map_or(0, |n| n.get())
+    );
+    let out = root().join("book/src/bench/web.md");
+    std::fs::write(&out, page)?;
+    println!("wrote {}", out.display());
+    Ok(())
+}
+
+/// The native release build's median frame for `chapter`'s first view at
+/// `surface` (`WxH`), as `--bench` measures it.
+fn native_frame_ms(chapter: &str, surface: &str) -> anyhow::Result<String> {
+    let binary = target_dir().join("release").join(chapter);
+    let output = Command::new(&binary)
+        .args(["--bench", "--frames", "10", "--size", surface, "--view"])
+        .arg(first_view(&binary)?)
+        .envs(crate::quiet_env())
+        .output()
+        .with_context(|| format!("cannot run {}", binary.display()))?;
+    ensure!(output.status.success(), "{chapter} --bench failed: {}", String::from_utf8_lossy(&output.stderr));
+    let text = String::from_utf8(output.stdout)?;
+    // | view | frame (CPU+GPU) | min | median | p95 |
+    let median = text
+        .lines()
+        .find(|l| l.contains("frame (CPU+GPU)"))
+        .and_then(|l| l.split('|').nth(4))
+        .map(|m| m.trim().to_string())
+        .context("no frame row in the native bench")?;
+    Ok(format!("{median} ms"))
+}
+
+fn first_view(binary: &Path) -> anyhow::Result<String> {
+    let output = Command::new(binary).arg("--list-views").output()?;
+    let text = String::from_utf8(output.stdout)?;
+    text.split_whitespace().next().map(str::to_string).context("the chapter lists no views")
+}
+// ANCHOR_END: bench
