@@ -21,6 +21,27 @@ use crate::{Chapter, Gpu, PassTimer, Target};
 /// The URL parameters a chapter page understands.
 const PARAMETERS: &[&str] = &["view", "time", "size", "backend"];
 
+const WEBGL_ADVICE: &str = "\n\nThis browser offers no WebGPU, and this chapter needs more than WebGL2 \
+     gives (the book's page on running in the browser says what). Open it in a browser with WebGPU: \
+     Chrome or Edge 113 or later, Safari 26 or later, Firefox 141 or later on Windows.";
+
+/// Called once the device exists: on WebGL2, the overlay says so, and a
+/// later failure says what to use instead.
+pub fn note_backend(gpu: &Gpu) {
+    if gpu.adapter.get_info().backend != wgpu::Backend::Gl {
+        return;
+    }
+    ON_WEBGL.set(true);
+    let webgl = "running on WebGL2: this browser offers no WebGPU";
+    log::warn!("{webgl}");
+    let notice = match notice() {
+        Some(earlier) => format!("{webgl}; {earlier}"),
+        None => webgl.to_string(),
+    };
+    set_state("notice", &notice);
+    NOTICE.with(|n| *n.borrow_mut() = Some(notice));
+}
+
 /// Recorded once the live runner has drawn its first frame: the page's
 /// status becomes `running`, and `data-first-frame-ms` says how long after
 /// the page began loading that was.
@@ -34,6 +55,8 @@ pub fn first_frame(adapter: &str) {
 thread_local! {
     static BACKENDS: RefCell<wgpu::Backends> = const { RefCell::new(wgpu::Backends::BROWSER_WEBGPU.union(wgpu::Backends::GL)) };
     static NOTICE: RefCell<Option<String>> = const { RefCell::new(None) };
+    /// The page fell back to WebGL2: a panic then says what to use instead.
+    static ON_WEBGL: std::cell::Cell<bool> = const { std::cell::Cell::new(false) };
     /// What a still picture keeps alive so that the canvas keeps showing it.
     static KEPT: RefCell<Vec<Box<dyn std::any::Any>>> = const { RefCell::new(Vec::new()) };
 }
@@ -42,7 +65,8 @@ thread_local! {
 pub fn run<C: Chapter>() -> ExitCode {
     std::panic::set_hook(Box::new(|info| {
         console_error_panic_hook::hook(info);
-        show_error(&format!("the chapter panicked: {info}"));
+        let advice = if ON_WEBGL.get() { WEBGL_ADVICE } else { "" };
+        show_error(&format!("the chapter panicked: {info}{advice}"));
     }));
     let _ = console_log::init_with_level(log::Level::Warn);
     set_state("status", "starting");
@@ -189,6 +213,7 @@ async fn still_picture<C: Chapter>(args: &Args) -> anyhow::Result<()> {
     let surface =
         instance.create_surface(wgpu::SurfaceTarget::Canvas(canvas)).context("cannot draw into the canvas")?;
     let gpu = Gpu::open(instance, Some(&surface), C::gpu_needs()).await?;
+    note_backend(&gpu);
     check_size(&gpu, args.size)?;
     let (config, scene_format, _) = crate::window::surface_config(&gpu, &surface, width, height)?;
     surface.configure(&gpu.device, &config);

@@ -328,6 +328,8 @@ impl Opening {
         #[cfg(not(target_arch = "wasm32"))]
         let surface = surface.context("cannot create a surface for the window")?;
         let gpu = Gpu::open(instance, Some(&surface), C::gpu_needs()).await?;
+        #[cfg(target_arch = "wasm32")]
+        crate::web::note_backend(&gpu);
         check_size(&gpu, args.size)?;
         log::info!("adapter: {}", gpu.describe());
 

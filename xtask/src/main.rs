@@ -157,7 +157,7 @@ fn chapter_names() -> anyhow::Result<Vec<String>> {
 
 fn bench(args: &[String]) -> anyhow::Result<()> {
     if args.first().map(String::as_str) == Some("web") {
-        return web::bench();
+        return web::bench(args.get(1).map(String::as_str) == Some("--tabulate"));
     }
     prerequisites::ensure_adapter()?;
     let all = chapter_names()?;

@@ -255,7 +255,7 @@ fn run_browser_bin(args: &[&str], chromium: &Path) -> anyhow::Result<()> {
 /// Chromium to its first frame, its live frame time there, the native
 /// release build's frame time at the same size on the same machine, and
 /// whether it renders on WebGL2. Written to `book/src/bench/web.md`.
-pub fn bench() -> anyhow::Result<()> {
+pub fn bench(tabulate_only: bool) -> anyhow::Result<()> {
     crate::prerequisites::ensure_adapter()?;
     let chromium = ensure_chromium()?;
     let html = root().join("book/book");
@@ -265,10 +265,13 @@ pub fn bench() -> anyhow::Result<()> {
     let url = format!("http://127.0.0.1:{port}");
     let rows_file = target_dir().join("bench-web.tsv");
     let rows_path = rows_file.display().to_string();
-    run_browser_bin(
-        &["run", "--quiet", "-p", "snapshots", "--bin", "browser", "--", &url, "--bench", &rows_path],
-        &chromium,
-    )?;
+    // `--tabulate`: write the page again from the last run's browser figures.
+    if !tabulate_only {
+        run_browser_bin(
+            &["run", "--quiet", "-p", "snapshots", "--bin", "browser", "--", &url, "--bench", &rows_path],
+            &chromium,
+        )?;
+    }
     let rows = std::fs::read_to_string(&rows_file)?;
     let mut build = vec!["build", "--quiet", "--release"];
     for chapter in &chapters {
@@ -289,6 +292,7 @@ pub fn bench() -> anyhow::Result<()> {
         adapter = browser_adapter.to_string();
         let (raw, gzip) = sizes(&html.join("live").join(chapter).join(format!("{chapter}_bg.wasm")))?;
         let native = native_frame_ms(chapter, surface)?;
+        let webgl2 = webgl2_cell(webgl2);
         let mb = |bytes: u64| format!("{:.2} MB", bytes as f64 / 1e6);
         table.push_str(&format!(
             "| {chapter} | {} | {} | {first_ms} ms | {frame_ms} ms | {native} | {webgl2} |\n",
@@ -339,6 +343,15 @@ fn native_frame_ms(chapter: &str, surface: &str) -> anyhow::Result<String> {
         .map(|m| m.trim().to_string())
         .context("no frame row in the native bench")?;
     Ok(format!("{median} ms"))
+}
+
+/// The browser's WebGL2 verdict, short enough for a table cell: the FLIP
+/// figure, or the part of wgpu's error after "Caused by:".
+fn webgl2_cell(verdict: &str) -> String {
+    let Some(error) = verdict.strip_prefix("fails: ") else { return format!("runs ({verdict})") };
+    let cause = error.split_once("Caused by:").map_or(error, |(_, cause)| cause);
+    let cause = cause.split("This is not").next().unwrap_or(cause).split_whitespace().collect::<Vec<_>>().join(" ");
+    format!("fails: {}", cause.replace('|', "/"))
 }
 
 fn first_view(binary: &Path) -> anyhow::Result<String> {
