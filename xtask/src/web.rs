@@ -300,6 +300,7 @@ pub fn bench(tabulate_only: bool) -> anyhow::Result<()> {
             mb(gzip)
         ));
     }
+    let adapter = adapter.trim();
     let cpu = std::fs::read_to_string("/proc/cpuinfo")
         .ok()
         .and_then(|info| {
@@ -309,10 +310,10 @@ pub fn bench(tabulate_only: bool) -> anyhow::Result<()> {
         .unwrap_or_else(|| "unknown CPU".into());
     let page = format!(
         "Measured by `cargo xtask bench web` on {cpu} ({} threads), no GPU: the browser is headless Chromium \
-         with WebGPU on SwiftShader ({adapter}), the native build runs on lavapipe. Sizes are of the wasm \
-         as served (`opt-level = \"z\"`, fat LTO, one codegen unit, `panic = \"abort\"`, no name section), gzip \
+         with WebGPU on SwiftShader (wgpu names it `{adapter}`), the native build runs on lavapipe. Sizes are of the wasm \
+         as served (`opt-level = \"z\"`, fat LTO, one codegen unit, `panic = \"abort\"`, stripped), gzip \
          at level 9. \"Page to first frame\" is `performance.now()` at the live runner's first frame. Frame \
-         times are the mean over five seconds of the live page (its canvas fills an 1000-pixel-wide \
+         times are the mean over five seconds of the live page (its canvas fills the test browser's \
          window), and the native release build's median `--bench` frame at the same size. WebGL2: the first \
          view rendered with `backend=webgl2`, its FLIP mean against the snapshot, or why it failed.\n\n{table}",
         std::thread::available_parallelism().map_or(0, |n| n.get())
