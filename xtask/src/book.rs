@@ -134,7 +134,10 @@ fn check_links(html_root: &Path) -> anyhow::Result<Vec<String>> {
                 for (start, _) in text.match_indices(attribute) {
                     let value = &text[start + attribute.len()..];
                     let link = &value[..value.find('"').unwrap_or(0)];
-                    let external = link.contains("://") || link.starts_with("//") || link.starts_with("mailto:");
+                    let external = link.contains("://")
+                        || link.starts_with("//")
+                        || link.starts_with("mailto:")
+                        || link.starts_with("data:");
                     let target = link.split(['#', '?']).next().unwrap_or("");
                     if external || target.is_empty() {
                         continue;
