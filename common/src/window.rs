@@ -6,6 +6,7 @@
 
 use std::path::PathBuf;
 use std::sync::Arc;
+use std::sync::atomic::{AtomicBool, Ordering};
 
 use web_time::{Duration, Instant};
 
@@ -120,6 +121,8 @@ struct Running<C: Chapter> {
     held_seen: usize,
     looked: f32,
     probe: Option<PathBuf>,
+    /// Whether the GPU has finished the last frame submitted (browser only).
+    last_frame_done: Arc<AtomicBool>,
 }
 
 impl<C: Chapter> ApplicationHandler<Opened<C>> for App<C> {
@@ -381,6 +384,7 @@ impl Opening {
             held_seen: 0,
             looked: 0.0,
             probe: args.probe.clone(),
+            last_frame_done: Arc::new(AtomicBool::new(true)),
         })
     }
 }
@@ -464,6 +468,9 @@ impl<C: Chapter> Running<C> {
 
     /// Draws a frame if the window can show one, and reports to the probe.
     fn frame(&mut self) -> anyhow::Result<()> {
+        if !self.gpu_caught_up() {
+            return Ok(()); // neither drawn nor skipped: asked again next animation frame
+        }
         if self.draw()? {
             self.drawn += 1;
             #[cfg(target_arch = "wasm32")]
@@ -478,6 +485,20 @@ impl<C: Chapter> Running<C> {
         }
         self.write_probe();
         Ok(())
+    }
+
+    /// Whether the last frame submitted has finished on the GPU. On the
+    /// desktop `get_current_texture` blocks when frames pile up, so it is
+    /// always true there. A browser never blocks: it queues whatever a page
+    /// submits, and a frame slower than the display would put input seconds
+    /// behind the picture. So the browser keeps one frame in flight.
+    fn gpu_caught_up(&self) -> bool {
+        if cfg!(not(target_arch = "wasm32")) {
+            return true;
+        }
+        // WebGL2 learns of finished work (its fences) only when polled.
+        let _ = self.gpu.device.poll(wgpu::PollType::Poll);
+        self.last_frame_done.load(Ordering::Acquire)
     }
 
     // ANCHOR: frame
@@ -544,6 +565,11 @@ impl<C: Chapter> Running<C> {
             overlay.draw(gpu, &mut encoder, &overlay_view, size, window, |ctx| ui_state.show(ctx))
         };
         self.gpu.queue.submit(extra.into_iter().chain([encoder.finish()]));
+        if cfg!(target_arch = "wasm32") {
+            self.last_frame_done.store(false, Ordering::Release);
+            let done = self.last_frame_done.clone();
+            self.gpu.queue.on_submitted_work_done(move || done.store(true, Ordering::Release));
+        }
         self.window.pre_present_notify();
         self.gpu.queue.present(frame);
         Ok(true)

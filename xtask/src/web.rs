@@ -313,8 +313,9 @@ pub fn bench(tabulate_only: bool) -> anyhow::Result<()> {
          with WebGPU on SwiftShader (wgpu names it `{adapter}`), the native build runs on lavapipe. Sizes are of the wasm \
          as served (`opt-level = \"z\"`, fat LTO, one codegen unit, `panic = \"abort\"`, stripped), gzip \
          at level 9. \"Page to first frame\" is `performance.now()` at the live runner's first frame. Frame \
-         times are the mean over five seconds of the live page (its canvas fills the test browser's \
-         window), and the native release build's median `--bench` frame at the same size. WebGL2: the first \
+         times are the live page's, from the start of one frame to the start of another at least five \
+         seconds later, over the frames between (the page keeps one frame in flight, so each was finished \
+         on the GPU; its canvas fills the test browser's window), and the native release build's median `--bench` frame at the same size. WebGL2: the first \
          view rendered with `backend=webgl2`, its FLIP mean against the snapshot, or why it failed.\n\n{table}",
         std::thread::available_parallelism().map_or(0, |n| n.get())
     );
