@@ -1,7 +1,7 @@
 //! The contract every chapter fulfils, so that one runner can open it in a
 //! window, render it headless to a PNG, benchmark it and snapshot-test it.
 
-use crate::{Camera, Gpu, GpuNeeds, Input, PassTimer, ShaderError};
+use crate::{Camera, Gpu, GpuNeeds, Input, PassTimer, Preparation, ShaderError};
 
 /// A named picture a chapter can show: the default scene, a preset, or a
 /// debug view such as the depth buffer. Every view is a snapshot and a
@@ -243,6 +243,16 @@ pub trait Chapter: Sized + 'static {
     /// Device features the chapter requires or can use.
     fn gpu_needs() -> GpuNeeds {
         GpuNeeds::default()
+    }
+
+    /// Long CPU work that [`Chapter::new`] needs done first (chapter 03's
+    /// height field), cut into steps that leave their results in
+    /// [`Gpu::cached`], where `new` finds them. A browser page runs one step
+    /// at a time and shows its progress between them, where one long call
+    /// would freeze the page; the desktop skips this, and `new` does the
+    /// work in one go. `None` when there is nothing (left) to do.
+    fn prepare(_gpu: &Gpu) -> Option<Preparation> {
+        None
     }
 
     /// Builds buffers, textures and pipelines for `target`.

@@ -164,6 +164,16 @@ impl Gpu {
         }
     }
 
+    /// Whether [`Gpu::cached`] holds a value of type `V` made for `key`.
+    pub fn is_cached<K, V>(&self, key: &K) -> bool
+    where
+        K: PartialEq + Send + 'static,
+        V: Send + Sync + 'static,
+    {
+        let mut cache = self.cache.lock().unwrap_or_else(|e| e.into_inner());
+        cache.iter_mut().find_map(|entry| entry.downcast_mut::<(K, Arc<V>)>()).is_some_and(|(k, _)| k == key)
+    }
+
     /// One line naming the adapter, for logs and bench tables.
     pub fn describe(&self) -> String {
         let info = self.adapter.get_info();

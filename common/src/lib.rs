@@ -16,6 +16,7 @@ pub mod input;
 pub mod mesh;
 mod overlay;
 pub mod parallel;
+pub mod preparation;
 pub mod primitives;
 pub mod shader;
 pub mod texture;
@@ -30,6 +31,7 @@ pub use cli::run;
 pub use gpu::{Gpu, GpuNeeds, NoAdapter};
 pub use input::Input;
 pub use mesh::{Mesh, MeshData, Vertex};
+pub use preparation::Preparation;
 pub use shader::{ShaderError, ShaderFile};
 pub use timing::{PassTimer, Stats};
 

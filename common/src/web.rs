@@ -195,6 +195,44 @@ pub fn show_error(message: &str) {
     }
 }
 
+// ANCHOR: prepare
+/// Runs the chapter's [`Chapter::prepare`] a step at a time. Between steps
+/// the page gets its thread back: it paints the progress message, and
+/// handles input, resizes and the test's questions. `data-progress` says
+/// how far it got, `data-longest-step-ms` the longest the page waited.
+pub async fn prepare<C: Chapter>(gpu: &Gpu) {
+    let Some(mut preparation) = C::prepare(gpu) else { return };
+    let now = || web_sys::window().and_then(|w| w.performance()).map_or(0.0, |p| p.now());
+    let message = web_sys::window().and_then(|w| w.document()).and_then(|d| d.get_element_by_id("message"));
+    let mut longest: f64 = 0.0;
+    loop {
+        let started = now();
+        let done = preparation.step(gpu);
+        longest = longest.max(now() - started);
+        set_state("progress", &format!("{done:.3}"));
+        set_state("longestStepMs", &format!("{longest:.0}"));
+        if done >= 1.0 {
+            return;
+        }
+        if let Some(message) = &message {
+            message.set_text_content(Some(&format!("{}… {:.0} %", preparation.what, 100.0 * done)));
+        }
+        next_task().await;
+    }
+}
+
+/// Resolves in a later task of the page's event loop, after the browser
+/// has had its chance to paint and to handle input.
+async fn next_task() {
+    let promise = js_sys::Promise::new(&mut |resolve, _| {
+        if let Some(window) = web_sys::window() {
+            let _ = window.set_timeout_with_callback(&resolve);
+        }
+    });
+    let _ = wasm_bindgen_futures::JsFuture::from(promise).await;
+}
+// ANCHOR_END: prepare
+
 // ANCHOR: still
 /// What `--screenshot` does, into the canvas: the chapter made at the
 /// picture's size, switched to the view, one frame at the given time.
@@ -215,6 +253,7 @@ async fn still_picture<C: Chapter>(args: &Args) -> anyhow::Result<()> {
     let gpu = Gpu::open(instance, Some(&surface), C::gpu_needs()).await?;
     note_backend(&gpu);
     check_size(&gpu, args.size)?;
+    prepare::<C>(&gpu).await;
     let (config, scene_format, _) = crate::window::surface_config(&gpu, &surface, width, height)?;
     surface.configure(&gpu.device, &config);
 

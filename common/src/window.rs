@@ -335,6 +335,10 @@ impl Opening {
         crate::web::note_backend(&gpu);
         check_size(&gpu, args.size)?;
         log::info!("adapter: {}", gpu.describe());
+        // Long work in steps, so that the page shows progress (the desktop
+        // does it in `Chapter::new`, in one go).
+        #[cfg(target_arch = "wasm32")]
+        crate::web::prepare::<C>(&gpu).await;
 
         let size = window.inner_size();
         let (config, scene_format, overlay_format) = surface_config(&gpu, &surface, size.width, size.height)?;

@@ -11,7 +11,10 @@ struct DepthView {
     // 1: show the stored value itself, 0: convert it back to a distance.
     raw: u32,
 };
-@group(0) @binding(0) var depth_buffer: texture_depth_2d;
+// Read as a plain float texture rather than `texture_depth_2d`: WebGPU
+// allows both for a depth buffer, and WebGL2's GLSL cannot fetch texels
+// from a depth texture declared as one.
+@group(0) @binding(0) var depth_buffer: texture_2d<f32>;
 @group(0) @binding(1) var<uniform> params: DepthView;
 
 // One triangle over the whole screen (shaders/common/fullscreen.wgsl).
@@ -23,7 +26,7 @@ fn vs_fullscreen(@builtin(vertex_index) index: u32) -> FullscreenOutput {
 // ANCHOR: linearize
 @fragment
 fn fs_depth(@builtin(position) pixel: vec4<f32>) -> @location(0) vec4<f32> {
-    let stored = textureLoad(depth_buffer, vec2<i32>(pixel.xy), 0);
+    let stored = textureLoad(depth_buffer, vec2<i32>(pixel.xy), 0).r;
     var grey = stored;
     if params.raw == 0u {
         // Invert the projection: stored = far (d - near) / ((far - near) d).

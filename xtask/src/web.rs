@@ -110,7 +110,7 @@ const PAGE: &str = r#"<!doctype html>
   }).observe(document.body, { attributes: true, attributeFilter: ["data-status"] });
   async function start() {
     message.className = "";
-    message.textContent = "starting {chapter}… (some chapters build their scene for a few seconds first)";
+    message.textContent = "starting {chapter}…";
     try {
       await init({ module_or_path: "./{chapter}_bg.wasm" });
       document.getElementById("chapter").focus();
@@ -280,13 +280,13 @@ pub fn bench(tabulate_only: bool) -> anyhow::Result<()> {
     cargo(&build)?;
 
     let mut table = String::from(
-        "| chapter | wasm | gzip | page to first frame | frame in Chromium | native frame | WebGL2 |\n\
-         |---|---:|---:|---:|---:|---:|---|\n",
+        "| chapter | wasm | gzip | page to first frame | longest task | frame in Chromium | native frame | WebGL2 |\n\
+         |---|---:|---:|---:|---:|---:|---:|---|\n",
     );
     let mut adapter = String::new();
     for row in rows.lines() {
         let fields: Vec<&str> = row.split('\t').collect();
-        let [chapter, first_ms, frame_ms, surface, webgl2, browser_adapter] = fields[..] else {
+        let [chapter, first_ms, longest_task_ms, frame_ms, surface, webgl2, browser_adapter] = fields[..] else {
             bail!("unexpected bench row: {row}");
         };
         adapter = browser_adapter.to_string();
@@ -295,7 +295,7 @@ pub fn bench(tabulate_only: bool) -> anyhow::Result<()> {
         let webgl2 = webgl2_cell(webgl2);
         let mb = |bytes: u64| format!("{:.2} MB", bytes as f64 / 1e6);
         table.push_str(&format!(
-            "| {chapter} | {} | {} | {first_ms} ms | {frame_ms} ms | {native} | {webgl2} |\n",
+            "| {chapter} | {} | {} | {first_ms} ms | {longest_task_ms} ms | {frame_ms} ms | {native} | {webgl2} |\n",
             mb(raw),
             mb(gzip)
         ));
@@ -312,7 +312,10 @@ pub fn bench(tabulate_only: bool) -> anyhow::Result<()> {
         "Measured by `cargo xtask bench web` on {cpu} ({} threads), no GPU: the browser is headless Chromium \
          with WebGPU on SwiftShader (wgpu names it `{adapter}`), the native build runs on lavapipe. Sizes are of the wasm \
          as served (`opt-level = \"z\"`, fat LTO, one codegen unit, `panic = \"abort\"`, stripped), gzip \
-         at level 9. \"Page to first frame\" is `performance.now()` at the live runner's first frame. Frame \
+         at level 9. \"Page to first frame\" is `performance.now()` at the live runner's first frame; \"longest \
+         task\" the longest the page's thread was busy at a stretch before it (by the browser's Long Tasks API, \
+         which reports tasks over 50 ms; 0 when there was none): for that long the page neither painted nor \
+         answered input. Frame \
          times are the live page's, from the start of one frame to the start of another at least five \
          seconds later, over the frames between (the page keeps one frame in flight, so each was finished \
          on the GPU; its canvas fills the test browser's window), and the native release build's median `--bench` frame at the same size. WebGL2: the first \

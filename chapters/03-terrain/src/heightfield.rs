@@ -80,6 +80,60 @@ impl TerrainSettings {
     }
 }
 
+/// A height field being generated a band of rows at a time: all at once
+/// on the desktop, a band between two of a browser page's tasks there
+/// (see [`crate::TerrainData::prepare`]).
+pub struct HeightRows {
+    pub settings: TerrainSettings,
+    /// Samples a side, and so rows in all.
+    pub size: usize,
+    /// Where the cliff runs, worked out once per column.
+    cliff: Vec<f32>,
+    heights: Vec<f32>,
+}
+
+impl HeightRows {
+    pub fn new(settings: TerrainSettings) -> Self {
+        let size = settings.samples() as usize;
+        let cliff = (0..size).map(|x| settings.cliff_line(x as f32 * settings.spacing)).collect();
+        Self { settings, size, cliff, heights: Vec::with_capacity(size * size) }
+    }
+
+    /// Rows sampled so far.
+    pub fn done(&self) -> usize {
+        self.heights.len() / self.size
+    }
+
+    // ANCHOR: generate
+    /// Samples the next `count` rows (fewer at the end). Every sample is
+    /// independent of the others, so `map_bands` gives each CPU core a band
+    /// of the rows and joins the bands in order.
+    pub fn add(&mut self, count: usize) {
+        let (size, first) = (self.size, self.done());
+        let count = count.min(size - first);
+        let (settings, cliff) = (&self.settings, &self.cliff);
+        let band = common::parallel::map_bands(count, |rows| {
+            let mut band = Vec::with_capacity(rows.len() * size);
+            for z in rows.map(|row| first + row) {
+                for (x, &cliff_line) in cliff.iter().enumerate() {
+                    let (wx, wz) = (x as f32 * settings.spacing, z as f32 * settings.spacing);
+                    band.push(settings.height_with_cliff_at(wx, wz, cliff_line));
+                }
+            }
+            band
+        });
+        self.heights.extend(band);
+    }
+    // ANCHOR_END: generate
+
+    /// The field, once every row is sampled (rows not sampled yet are
+    /// sampled now).
+    pub fn finish(mut self) -> HeightField {
+        self.add(self.size);
+        HeightField { settings: self.settings, size: self.size as u32, heights: self.heights }
+    }
+}
+
 /// Heights on a square grid, row by row (z), `size` samples a side.
 pub struct HeightField {
     pub settings: TerrainSettings,
@@ -88,25 +142,10 @@ pub struct HeightField {
 }
 
 impl HeightField {
-    // ANCHOR: generate
-    /// Samples every grid point. Rows are independent, so `map_bands` gives
-    /// each CPU core a band of rows and joins the bands in order.
+    /// Samples every grid point, all rows at once.
     pub fn generate(settings: TerrainSettings) -> Self {
-        let size = settings.samples() as usize;
-        let cliff: Vec<f32> = (0..size).map(|x| settings.cliff_line(x as f32 * settings.spacing)).collect();
-        let heights = common::parallel::map_bands(size, |rows| {
-            let mut band = Vec::with_capacity(rows.len() * size);
-            for z in rows {
-                for (x, &cliff_line) in cliff.iter().enumerate() {
-                    let (wx, wz) = (x as f32 * settings.spacing, z as f32 * settings.spacing);
-                    band.push(settings.height_with_cliff_at(wx, wz, cliff_line));
-                }
-            }
-            band
-        });
-        Self { settings, size: size as u32, heights }
+        HeightRows::new(settings).finish()
     }
-    // ANCHOR_END: generate
 
     /// Height at grid point (x, z), clamped to the edge of the field.
     pub fn height(&self, x: i64, z: i64) -> f32 {
@@ -157,6 +196,21 @@ mod tests {
         assert_eq!(a.height(37, 91), small().height_at(37.0, 91.0));
         let other_seed = HeightField::generate(TerrainSettings { seed: 8, ..small() });
         assert_ne!(a.heights, other_seed.heights);
+    }
+
+    #[test]
+    fn rows_added_a_few_at_a_time_give_the_same_field() {
+        let whole = HeightField::generate(small());
+        for step in [1, 7, 50, 1000] {
+            let mut rows = HeightRows::new(small());
+            let mut calls = 0;
+            while rows.done() < rows.size {
+                rows.add(step);
+                calls += 1;
+            }
+            assert_eq!(calls, rows.size.div_ceil(step), "{step} rows a step");
+            assert_eq!(rows.finish().heights, whole.heights, "{step} rows a step");
+        }
     }
 
     #[test]

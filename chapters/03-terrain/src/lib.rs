@@ -21,7 +21,7 @@ use common::{
 
 use chunks::{Aabb, CHUNK_VERTICES, TerrainVertex, chunk_bounds, chunk_indices, chunk_vertices, coarse_indices};
 use culling::Frustum;
-use heightfield::{CHUNK_QUADS, HeightField, TerrainSettings};
+use heightfield::{CHUNK_QUADS, HeightField, HeightRows, TerrainSettings};
 
 pub const VIEWS: &[View] = &[
     View::mode("default", "the terrain, coloured by height and slope, with its cliff"),
@@ -63,19 +63,33 @@ pub struct TerrainMesh {
 
 impl TerrainMesh {
     pub fn new(device: &wgpu::Device, field: &HeightField) -> Self {
+        let (vertices, bounds) = Self::chunk_rows(field, 0..field.settings.chunks_per_side);
+        Self::upload(device, field.settings.chunks_per_side, &vertices, bounds)
+    }
+
+    /// The vertices and bounding boxes of the chunks in rows `rows`, row
+    /// by row. Rows of chunks are independent: each core builds a band.
+    pub fn chunk_rows(field: &HeightField, rows: std::ops::Range<u32>) -> (Vec<TerrainVertex>, Vec<Aabb>) {
         let n = field.settings.chunks_per_side;
-        // Rows of chunks are independent: each core builds a band of them.
-        let chunk_row = |cz: usize| (0..n).map(move |cx| (cx, cz as u32));
-        let vertices = common::parallel::map_bands(n as usize, |rows| {
-            rows.flat_map(chunk_row).flat_map(|(cx, cz)| chunk_vertices(field, cx, cz)).collect()
+        let chunks = |band: std::ops::Range<usize>| {
+            band.flat_map(move |row| (0..n).map(move |cx| (cx, rows.start + row as u32)))
+        };
+        let vertices = common::parallel::map_bands(rows.len(), |band| {
+            chunks(band).flat_map(|(cx, cz)| chunk_vertices(field, cx, cz)).collect()
         });
-        let bounds = common::parallel::map_bands(n as usize, |rows| {
-            rows.flat_map(chunk_row).map(|(cx, cz)| chunk_bounds(field, cx, cz)).collect()
+        let bounds = common::parallel::map_bands(rows.len(), |band| {
+            chunks(band).map(|(cx, cz)| chunk_bounds(field, cx, cz)).collect()
         });
+        (vertices, bounds)
+    }
+
+    /// Puts every chunk's vertices in one buffer, beside the index buffers
+    /// all chunks share.
+    pub fn upload(device: &wgpu::Device, chunks_per_side: u32, vertices: &[TerrainVertex], bounds: Vec<Aabb>) -> Self {
         let buffer = |label, contents: &[u8], usage| {
             device.create_buffer_init(&wgpu::util::BufferInitDescriptor { label: Some(label), contents, usage })
         };
-        let vertex_buffer = buffer("terrain vertices", bytemuck::cast_slice(&vertices), wgpu::BufferUsages::VERTEX);
+        let vertex_buffer = buffer("terrain vertices", bytemuck::cast_slice(vertices), wgpu::BufferUsages::VERTEX);
         let (indices, coarse) = (chunk_indices(), coarse_indices(8));
         Self {
             vertex_buffer,
@@ -84,7 +98,7 @@ impl TerrainMesh {
             coarse_index_buffer: buffer("coarse indices", bytemuck::cast_slice(&coarse), wgpu::BufferUsages::INDEX),
             coarse_index_count: coarse.len() as u32,
             bounds,
-            chunks_per_side: n,
+            chunks_per_side,
         }
     }
 
@@ -216,10 +230,112 @@ impl TerrainData {
     /// tests that create chapters again and again, share it.
     pub fn get(gpu: &Gpu, settings: TerrainSettings) -> Arc<Self> {
         gpu.cached(settings, || {
-            let (field, heights) = measure(|| HeightField::generate(settings));
-            let (mesh, meshes) = measure(|| TerrainMesh::new(&gpu.device, &field));
-            Self { field, mesh, timings: (heights, meshes) }
+            let mut build = TerrainBuild::new(settings);
+            loop {
+                match build {
+                    TerrainBuild::Done(data) => return data,
+                    unfinished => build = unfinished.step(&gpu.device),
+                }
+            }
         })
+    }
+
+    /// [`TerrainData::get`] in steps, for [`Chapter::prepare`]: a browser
+    /// page shows its progress between them. `None` when the data is
+    /// already made.
+    pub fn prepare(gpu: &Gpu, settings: TerrainSettings) -> Option<common::Preparation> {
+        if gpu.is_cached::<TerrainSettings, Self>(&settings) {
+            return None;
+        }
+        let mut build = Some(TerrainBuild::new(settings));
+        Some(common::Preparation::new("generating the terrain", move |gpu| {
+            let Some(unfinished) = build.take() else { return 1.0 };
+            match unfinished.step(&gpu.device) {
+                TerrainBuild::Done(data) => {
+                    gpu.cached(settings, || data);
+                    1.0
+                }
+                next => build.insert(next).progress(),
+            }
+        }))
+    }
+}
+
+/// The terrain made a slice at a time: rows of heights, then rows of
+/// chunk meshes, then the upload. [`TerrainData::get`] takes the same
+/// steps in one go, so every test of the terrain tests the steps too.
+enum TerrainBuild {
+    /// Milliseconds spent so far in `ms`.
+    Heights {
+        rows: HeightRows,
+        ms: f64,
+    },
+    /// Milliseconds spent on heights, then on meshes, in `timings`.
+    Meshes {
+        field: HeightField,
+        vertices: Vec<TerrainVertex>,
+        bounds: Vec<Aabb>,
+        timings: (f64, f64),
+    },
+    Done(TerrainData),
+}
+
+impl TerrainBuild {
+    /// About a tenth of a second each in a browser on the machine the
+    /// book's figures come from.
+    const HEIGHT_ROWS_PER_STEP: usize = 64;
+    const CHUNK_ROWS_PER_STEP: u32 = 8;
+    /// The heights' share of the whole work, as measured natively (1650 ms
+    /// of heights to 645 ms of meshes).
+    const HEIGHTS_SHARE: f32 = 0.72;
+
+    fn new(settings: TerrainSettings) -> Self {
+        Self::Heights { rows: HeightRows::new(settings), ms: 0.0 }
+    }
+
+    /// The next slice of work done.
+    fn step(self, device: &wgpu::Device) -> Self {
+        match self {
+            Self::Heights { mut rows, ms } => {
+                let ((), took) = measure(|| rows.add(Self::HEIGHT_ROWS_PER_STEP));
+                if rows.done() < rows.size {
+                    return Self::Heights { rows, ms: ms + took };
+                }
+                let chunks = rows.settings.chunks_per_side.pow(2) as usize;
+                let vertices = Vec::with_capacity(chunks * CHUNK_VERTICES as usize);
+                Self::Meshes { field: rows.finish(), vertices, bounds: Vec::new(), timings: (ms + took, 0.0) }
+            }
+            Self::Meshes { field, mut vertices, mut bounds, mut timings } => {
+                let n = field.settings.chunks_per_side;
+                let first = bounds.len() as u32 / n;
+                if first < n {
+                    let rows = first..(first + Self::CHUNK_ROWS_PER_STEP).min(n);
+                    let ((more_vertices, more_bounds), ms) = measure(|| TerrainMesh::chunk_rows(&field, rows));
+                    vertices.extend(more_vertices);
+                    bounds.extend(more_bounds);
+                    timings.1 += ms;
+                    return Self::Meshes { field, vertices, bounds, timings };
+                }
+                // Every chunk is built: the upload is the last step.
+                let (mesh, ms) = measure(|| TerrainMesh::upload(device, n, &vertices, bounds));
+                timings.1 += ms;
+                Self::Done(TerrainData { field, mesh, timings })
+            }
+            done @ Self::Done(_) => done,
+        }
+    }
+
+    /// The fraction of the whole work done.
+    fn progress(&self) -> f32 {
+        match self {
+            Self::Heights { rows, .. } => Self::HEIGHTS_SHARE * rows.done() as f32 / rows.size as f32,
+            Self::Meshes { field, bounds, .. } => {
+                let chunks = field.settings.chunks_per_side.pow(2) as f32;
+                // The upload is still to come.
+                Self::HEIGHTS_SHARE + (1.0 - Self::HEIGHTS_SHARE) * 0.95 * bounds.len() as f32 / chunks
+            }
+            Self::Done(_) => 1.0,
+        }
     }
 }
 
@@ -460,6 +576,11 @@ impl Chapter for TerrainChapter {
 
     fn gpu_needs() -> common::GpuNeeds {
         gpu_needs()
+    }
+
+    /// The terrain is the long part of starting: in steps, so a page shows its progress.
+    fn prepare(gpu: &Gpu) -> Option<common::Preparation> {
+        TerrainData::prepare(gpu, TerrainSettings::default())
     }
 
     fn new(gpu: &Gpu, target: Target) -> anyhow::Result<Self> {

@@ -140,6 +140,11 @@ impl Chapter for FogChapter {
         terrain::gpu_needs()
     }
 
+    /// The terrain is the long part of starting: in steps, so a page shows its progress.
+    fn prepare(gpu: &Gpu) -> Option<common::Preparation> {
+        terrain::TerrainData::prepare(gpu, TerrainSettings::default())
+    }
+
     fn new(gpu: &Gpu, target: Target) -> anyhow::Result<Self> {
         let device = &gpu.device;
         let terrain = TerrainRenderer::new(gpu, TerrainSettings::default());

@@ -328,6 +328,11 @@ impl Chapter for SkyboxChapter {
         terrain::gpu_needs()
     }
 
+    /// The terrain is the long part of starting: in steps, so a page shows its progress.
+    fn prepare(gpu: &Gpu) -> Option<common::Preparation> {
+        terrain::TerrainData::prepare(gpu, terrain::heightfield::TerrainSettings::default())
+    }
+
     fn new(gpu: &Gpu, target: Target) -> anyhow::Result<Self> {
         let plain = MarsPlain::new(gpu, target.format)?;
         let sky = Sky::new(gpu, target.format)?;

@@ -338,6 +338,11 @@ impl Chapter for WaterChapter {
         terrain::gpu_needs()
     }
 
+    /// The terrain is the long part of starting: in steps, so a page shows its progress.
+    fn prepare(gpu: &Gpu) -> Option<common::Preparation> {
+        terrain::TerrainData::prepare(gpu, terrain::heightfield::TerrainSettings::default())
+    }
+
     fn new(gpu: &Gpu, target: Target) -> anyhow::Result<Self> {
         let device = &gpu.device;
         let plain = MarsPlain::new(gpu, target.format)?;

@@ -41,8 +41,14 @@ const FILES: &[(&str, &[u8])] = builtin![
 /// A built-in file by its path under `assets/` (`..` allowed, as MTL
 /// files write them).
 pub fn read(path: &Path) -> Result<Vec<u8>, ReadError> {
+    find(FILES, path)
+}
+
+/// A file of `files` (made by [`builtin!`]) by its path under `assets/`.
+/// Chapters 10 and 11 embed only the files they use, in lists of their own.
+pub fn find(files: &[(&str, &[u8])], path: &Path) -> Result<Vec<u8>, ReadError> {
     let wanted = normalise(path);
-    FILES
+    files
         .iter()
         .find(|(name, _)| Path::new(name) == wanted)
         .map(|(_, bytes)| bytes.to_vec())

@@ -14,9 +14,16 @@ use textures::scenes::world_uvs;
 
 use crate::game::{Game, Level, PropKind, Surface};
 
-/// The files this chapter carries besides chapter 09's: the models it
-/// dresses the level with, the crate's wood, and the background layers.
+/// The files this chapter carries: the models it dresses the level with,
+/// the textures of the level and the models, and the background layers.
+/// Only these, not all of chapter 09's, so that the browser downloads less.
 const FILES: &[(&str, &[u8])] = textures::builtin![
+    "textures/concrete/albedo.png",
+    "textures/concrete/normal.png",
+    "textures/brick/albedo.png",
+    "textures/brick/normal.png",
+    "textures/metal/albedo.png",
+    "textures/metal/normal.png",
     "models/tree/tree.obj",
     "models/tree/tree.mtl",
     "models/rock/rock.obj",
@@ -32,14 +39,9 @@ const FILES: &[(&str, &[u8])] = textures::builtin![
     "layers/near.png",
 ];
 
-/// A built-in file by its path under `assets/`: this chapter's, or else
-/// chapter 09's.
+/// A built-in file by its path under `assets/`.
 pub fn read(path: &Path) -> Result<Vec<u8>, ReadError> {
-    let wanted = textures::obj::normalise(path);
-    match FILES.iter().find(|(name, _)| Path::new(name) == wanted) {
-        Some((_, bytes)) => Ok(bytes.to_vec()),
-        None => textures::builtin::read(path),
-    }
+    textures::builtin::find(FILES, path)
 }
 
 // ANCHOR: blocks

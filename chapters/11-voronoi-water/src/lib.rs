@@ -299,6 +299,19 @@ impl VoronoiWaterChapter {
     // ANCHOR_END: shadow_focus
 }
 
+/// The boat and its textures: the only files of chapter 09's this chapter
+/// embeds, so that the browser downloads no more than it draws.
+const BOAT_FILES: &[(&str, &[u8])] = textures::builtin![
+    "models/boat/boat.obj",
+    "models/boat/boat.mtl",
+    "textures/metal/albedo.png",
+    "textures/metal/normal.png",
+];
+
+fn read_builtin(path: &std::path::Path) -> Result<Vec<u8>, common::files::ReadError> {
+    textures::builtin::find(BOAT_FILES, path)
+}
+
 impl Chapter for VoronoiWaterChapter {
     const NAME: &'static str = env!("CARGO_PKG_NAME");
     const TITLE: &'static str = "11 · Voronoi water";
@@ -331,12 +344,12 @@ impl Chapter for VoronoiWaterChapter {
         let islands = IslandRenderer::new(gpu, &scene_lights, &atmosphere)?;
         let sky = Sky::new(gpu, &scene_lights.layout, &atmosphere)?;
         // The boat: chapter 09's model, materials and loader.
-        let loaded = obj::load(std::path::Path::new("models/boat/boat.obj"), &textures::builtin::read)?;
+        let loaded = obj::load(std::path::Path::new("models/boat/boat.obj"), &read_builtin)?;
         for warning in &loaded.warnings {
             eprintln!("warning: {warning}");
         }
         let mut mips = MipMaker::new(gpu)?;
-        let mut up = Uploader::new(gpu, &mut mips, &textures::builtin::read);
+        let mut up = Uploader::new(gpu, &mut mips, &read_builtin);
         let mut materials = Materials::new(&mut up);
         let boat = upload_model(&mut up, &mut materials, &loaded.model, "boat");
         up.finish();
