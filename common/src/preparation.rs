@@ -6,6 +6,7 @@
 
 use crate::Gpu;
 
+// ANCHOR: preparation
 /// Work made of steps, each returning the fraction done so far.
 pub struct Preparation {
     /// What is being made, for the page's message: "generating the terrain".
@@ -24,9 +25,5 @@ impl Preparation {
     pub fn step(&mut self, gpu: &Gpu) -> f32 {
         (self.step)(gpu)
     }
-
-    /// Does every step that is left.
-    pub fn finish(mut self, gpu: &Gpu) {
-        while self.step(gpu) < 1.0 {}
-    }
 }
+// ANCHOR_END: preparation

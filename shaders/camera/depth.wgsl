@@ -11,11 +11,14 @@ struct DepthView {
     // 1: show the stored value itself, 0: convert it back to a distance.
     raw: u32,
 };
-// Read as a plain float texture rather than `texture_depth_2d`: WebGPU
-// allows both for a depth buffer, and WebGL2's GLSL cannot fetch texels
-// from a depth texture declared as one.
+// Read as a plain float texture rather than `texture_depth_2d`, through a
+// nearest sampler rather than `textureLoad`: WebGPU allows both, and it is
+// the way that also works on WebGL2, whose GLSL cannot fetch texels from a
+// depth texture declared as one, and which reads 0 from a depth texture
+// unless the sampler it goes through filters with "nearest".
 @group(0) @binding(0) var depth_buffer: texture_2d<f32>;
 @group(0) @binding(1) var<uniform> params: DepthView;
+@group(0) @binding(2) var nearest: sampler;
 
 // One triangle over the whole screen (shaders/common/fullscreen.wgsl).
 @vertex
@@ -26,7 +29,9 @@ fn vs_fullscreen(@builtin(vertex_index) index: u32) -> FullscreenOutput {
 // ANCHOR: linearize
 @fragment
 fn fs_depth(@builtin(position) pixel: vec4<f32>) -> @location(0) vec4<f32> {
-    let stored = textureLoad(depth_buffer, vec2<i32>(pixel.xy), 0).r;
+    // `pixel.xy` is the pixel's centre: the nearest texel is its own.
+    let uv = pixel.xy / vec2<f32>(textureDimensions(depth_buffer));
+    let stored = textureSampleLevel(depth_buffer, nearest, uv, 0.0).r;
     var grey = stored;
     if params.raw == 0u {
         // Invert the projection: stored = far (d - near) / ((far - near) d).

@@ -311,7 +311,8 @@ pub fn bench(tabulate_only: bool) -> anyhow::Result<()> {
     let page = format!(
         "Measured by `cargo xtask bench web` on {cpu} ({} threads), no GPU: the browser is headless Chromium \
          with WebGPU on SwiftShader (wgpu names it `{adapter}`), the native build runs on lavapipe. Sizes are of the wasm \
-         as served (`opt-level = \"z\"`, fat LTO, one codegen unit, `panic = \"abort\"`, stripped), gzip \
+         as served (`opt-level = \"z\"`, fat LTO, one codegen unit, `panic = \"abort\"`, WebAssembly SIMD, no debug \
+         info or symbol names), gzip \
          at level 9. \"Page to first frame\" is `performance.now()` at the live runner's first frame; \"longest \
          task\" the longest the page's thread was busy at a stretch before it (by the browser's Long Tasks API, \
          which reports tasks over 50 ms; 0 when there was none): for that long the page neither painted nor \

@@ -215,12 +215,15 @@ fn depth_group(
     depth: &wgpu::TextureView,
     params: &wgpu::Buffer,
 ) -> wgpu::BindGroup {
+    // Nearest is the default filter: each pixel reads exactly its texel.
+    let nearest = gpu.device.create_sampler(&wgpu::SamplerDescriptor { label: Some("nearest"), ..Default::default() });
     gpu.device.create_bind_group(&wgpu::BindGroupDescriptor {
         label: Some("depth view"),
         layout,
         entries: &[
             wgpu::BindGroupEntry { binding: 0, resource: wgpu::BindingResource::TextureView(depth) },
             wgpu::BindGroupEntry { binding: 1, resource: params.as_entire_binding() },
+            wgpu::BindGroupEntry { binding: 2, resource: wgpu::BindingResource::Sampler(&nearest) },
         ],
     })
 }
@@ -388,6 +391,12 @@ impl Chapter for CameraChapter {
                         has_dynamic_offset: false,
                         min_binding_size: wgpu::BufferSize::new(16),
                     },
+                    count: None,
+                },
+                wgpu::BindGroupLayoutEntry {
+                    binding: 2,
+                    visibility: wgpu::ShaderStages::FRAGMENT,
+                    ty: wgpu::BindingType::Sampler(wgpu::SamplerBindingType::NonFiltering),
                     count: None,
                 },
             ],

@@ -204,8 +204,17 @@ impl ChapterPage {
         }))
         .map_err(|e| anyhow::anyhow!("{e}"))?;
         tab.navigate_to(url).map_err(|e| anyhow::anyhow!("navigating to {url}: {e}"))?;
-        tab.wait_until_navigated().map_err(|e| anyhow::anyhow!("loading {url}: {e}"))?;
-        Ok(Self { tab, errors })
+        let page = Self { tab, errors };
+        // Not `wait_until_navigated`: that waits for the network to be
+        // quiet, which Chromium decides only once the page's thread is
+        // idle, so it would sleep through a chapter's whole preparation.
+        let deadline = Instant::now() + STEP;
+        let parsed = format!("location.href === {} && document.readyState !== 'loading'", serde_json::json!(url));
+        while page.eval(&parsed).ok() != Some(serde_json::Value::Bool(true)) {
+            ensure!(Instant::now() < deadline, "{url} did not load within {STEP:?}");
+            std::thread::sleep(Duration::from_millis(50));
+        }
+        Ok(page)
     }
 
     fn eval(&self, expression: &str) -> anyhow::Result<serde_json::Value> {
