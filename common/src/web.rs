@@ -199,25 +199,21 @@ pub fn show_error(message: &str) {
 /// Runs the chapter's [`Chapter::prepare`] a step at a time. Between steps
 /// the page gets its thread back: it paints the progress message, and
 /// handles input, resizes and the test's questions. `data-progress` says
-/// how far it got, `data-longest-step-ms` the longest the page waited.
+/// how far it got.
 pub async fn prepare<C: Chapter>(gpu: &Gpu) {
     let Some(mut preparation) = C::prepare(gpu) else { return };
-    let now = || web_sys::window().and_then(|w| w.performance()).map_or(0.0, |p| p.now());
     let message = web_sys::window().and_then(|w| w.document()).and_then(|d| d.get_element_by_id("message"));
-    let mut longest: f64 = 0.0;
     loop {
-        let started = now();
         let done = preparation.step(gpu);
-        longest = longest.max(now() - started);
         set_state("progress", &format!("{done:.3}"));
-        set_state("longestStepMs", &format!("{longest:.0}"));
+        if let Some(message) = &message {
+            message.set_text_content(Some(&format!("{}… {:.0} %", preparation.what, 100.0 * done.min(1.0))));
+        }
+        // After the last step too: making the chapter is a task of its own.
+        next_task().await;
         if done >= 1.0 {
             return;
         }
-        if let Some(message) = &message {
-            message.set_text_content(Some(&format!("{}… {:.0} %", preparation.what, 100.0 * done)));
-        }
-        next_task().await;
     }
 }
 

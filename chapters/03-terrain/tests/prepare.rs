@@ -21,8 +21,8 @@ fn steps_rise_to_one_and_leave_the_terrain_for_new() {
         }
         assert!(progress.len() < 100, "no end in sight: {progress:?}");
     }
-    // 17 steps of 64 rows of heights, 2 of 8 rows of chunks, the upload.
-    assert_eq!(progress.len(), 17 + 2 + 1, "{progress:?}");
+    // 17 steps of 64 rows of heights, 4 of 4 rows of chunks, the upload.
+    assert_eq!(progress.len(), 17 + 4 + 1, "{progress:?}");
     assert!(progress.windows(2).all(|pair| pair[0] < pair[1]), "{progress:?}");
     assert!(progress.iter().all(|p| (0.0..=1.0).contains(p)), "{progress:?}");
 

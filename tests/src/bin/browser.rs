@@ -142,6 +142,10 @@ fn launch(flags: &[&str]) -> anyhow::Result<Browser> {
 /// in steps (`Chapter::prepare`).
 const PREPARING: &[&str] = &["terrain", "fog", "instancing", "skybox", "water"];
 
+/// What must render on WebGL2, as (chapter, view): the book says these
+/// chapters run there.
+const WEBGL2_VIEWS: [(&str, &str); 3] = [("triangle", "default"), ("camera", "default"), ("camera", "depth")];
+
 /// Marks console messages that are errors.
 const ERROR: &str = "error: ";
 
@@ -538,10 +542,16 @@ fn test_pages(browser: &Browser, base: &str) -> anyhow::Result<()> {
     ensure!(console.iter().any(|e| e.contains("panicked")), "a panic did not reach the console: {console:?}");
     drop(page);
 
-    // The book says chapter 01 runs on WebGL2: it must, and look the same.
-    let triangle = snapshots::chapters().into_iter().find(|e| e.name == "triangle").context("no chapter 01")?;
-    let on_webgl2 = webgl2_picture(browser, base, &triangle).context("chapter 01 on WebGL2")?;
-    ensure!(on_webgl2.passes(Tolerance::DEFAULT), "chapter 01 on WebGL2 against its snapshot: {on_webgl2}");
+    // The book says chapters 01 and 02 run on WebGL2: they must, and look
+    // the same, the depth buffer read back by chapter 02 included.
+    let mut on_webgl2 = Vec::new();
+    for (chapter, view) in WEBGL2_VIEWS {
+        let entry = snapshots::chapters().into_iter().find(|e| e.name == chapter).context("no such chapter")?;
+        let comparison = webgl2_picture(browser, base, &entry, view).with_context(|| format!("{chapter} on WebGL2"))?;
+        ensure!(comparison.passes(Tolerance::DEFAULT), "{chapter}/{view} on WebGL2 against its snapshot: {comparison}");
+        on_webgl2.push(format!("{chapter}/{view} FLIP mean {:.4}", comparison.mean));
+    }
+    let on_webgl2 = on_webgl2.join(", ");
 
     // No WebGPU and no WebGL: the frame says so instead of staying blank.
     let bare = launch(&["--disable-gpu", "--disable-webgl", "--disable-3d-apis"])?;
@@ -554,8 +564,8 @@ fn test_pages(browser: &Browser, base: &str) -> anyhow::Result<()> {
     let shown = page.eval("document.getElementById('message').textContent")?;
     ensure!(shown.as_str().is_some_and(|s| s.contains("WebGPU")), "without WebGPU or WebGL the page showed '{shown}'");
     println!(
-        "browser pages ok: unknown parameter reported, bad view named, panic shown, chapter 01 on WebGL2 \
-         ({on_webgl2}), no-adapter message"
+        "browser pages ok: unknown parameter reported, bad view named, panic shown, on WebGL2 {on_webgl2}, \
+         no-adapter message"
     );
     Ok(())
 }
@@ -644,7 +654,8 @@ fn longest_task_ms(page: &ChapterPage) -> anyhow::Result<f64> {
 /// Whether the chapter's first view renders on WebGL2: "FLIP 0.0123"
 /// against the native snapshot, or "fails: <the page's error>".
 fn webgl2(browser: &Browser, base: &str, entry: &snapshots::Entry) -> String {
-    match webgl2_picture(browser, base, entry) {
+    let view = entry.views.iter().find(|v| v.snapshot).map_or("default", |v| v.name);
+    match webgl2_picture(browser, base, entry, view) {
         Ok(comparison) => format!("FLIP {:.4}", comparison.mean),
         Err(error) => {
             let text = format!("{error:#}").replace(['\n', '\t'], " ");
@@ -653,10 +664,9 @@ fn webgl2(browser: &Browser, base: &str, entry: &snapshots::Entry) -> String {
     }
 }
 
-/// The chapter's first view drawn on WebGL2 (`backend=webgl2`), compared
-/// with its native snapshot.
-fn webgl2_picture(browser: &Browser, base: &str, entry: &snapshots::Entry) -> anyhow::Result<Comparison> {
-    let view = entry.views.iter().find(|v| v.snapshot).map_or("default", |v| v.name);
+/// A view of the chapter drawn on WebGL2 (`backend=webgl2`), compared with
+/// its native snapshot.
+fn webgl2_picture(browser: &Browser, base: &str, entry: &snapshots::Entry, view: &str) -> anyhow::Result<Comparison> {
     let query = format!("?view={view}&time={}&size={WIDTH}x{HEIGHT}&backend=webgl2", entry.time);
     let page = ChapterPage::open(browser, &page_url(base, entry.name, &query))?;
     page.wait_status("picture")?;
