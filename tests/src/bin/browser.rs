@@ -438,18 +438,13 @@ fn test_chapter(browser: &Browser, base: &str, entry: &snapshots::Entry) -> anyh
     let progress = page.wait_status("picture")?;
     // Chapters that build the terrain do it in steps, between which the
     // page paints its progress and answers us. A page that froze would
-    // answer only once it was done, and the browser would report one task
-    // as long as the whole preparation.
+    // answer only once it was done. (How long its tasks were is for
+    // `bench web`: two pages share Chromium's one GPU process here, and a
+    // page waiting on it counts as busy.)
     if PREPARING.contains(&entry.name) {
         ensure!(
             progress.iter().any(|&p| p > 0.0 && p < 1.0),
             "no progress was seen while the terrain was prepared (seen: {progress:?}): the page froze"
-        );
-        let longest = longest_task_ms(&page)?;
-        let started_ms = page.eval("performance.now()")?.as_f64().context("no clock in the page")?;
-        ensure!(
-            longest < 0.25 * started_ms,
-            "the page's longest task took {longest:.0} ms of the {started_ms:.0} ms it took to start: it froze"
         );
     }
     let picture = page.canvas()?;
