@@ -438,9 +438,10 @@ fn test_chapter(browser: &Browser, base: &str, entry: &snapshots::Entry) -> anyh
     let progress = page.wait_status("picture")?;
     // Chapters that build the terrain do it in steps, between which the
     // page paints its progress and answers us. A page that froze would
-    // answer only once it was done. (How long its tasks were is for
-    // `bench web`: two pages share Chromium's one GPU process here, and a
-    // page waiting on it counts as busy.)
+    // answer only once it was done. (How long its tasks were is measured
+    // by `bench web`, not here: with two pages at once, a full run saw
+    // single tasks of seconds, most likely waits on Chromium's one GPU
+    // process while it drew the other page.)
     if PREPARING.contains(&entry.name) {
         ensure!(
             progress.iter().any(|&p| p > 0.0 && p < 1.0),
