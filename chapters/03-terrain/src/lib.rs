@@ -62,11 +62,6 @@ pub struct TerrainMesh {
 }
 
 impl TerrainMesh {
-    pub fn new(device: &wgpu::Device, field: &HeightField) -> Self {
-        let (vertices, bounds) = Self::chunk_rows(field, 0..field.settings.chunks_per_side);
-        Self::upload(device, field.settings.chunks_per_side, &vertices, bounds)
-    }
-
     /// The vertices and bounding boxes of the chunks in rows `rows`, row
     /// by row. Rows of chunks are independent: each core builds a band.
     pub fn chunk_rows(field: &HeightField, rows: std::ops::Range<u32>) -> (Vec<TerrainVertex>, Vec<Aabb>) {
