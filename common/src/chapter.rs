@@ -184,6 +184,24 @@ pub fn sampler_entry(binding: u32) -> wgpu::BindGroupLayoutEntry {
     }
 }
 
+/// A bind-group layout entry for a read-only storage buffer of any size.
+/// Chapters 08–11 keep the values their shaders branch or loop on here
+/// rather than in a uniform buffer: Mesa's lavapipe 22.3 compiles a new
+/// copy of a shader whose branches read a uniform buffer every time it is
+/// bound, and never frees the old copy (the book's chapter 08 pitfalls).
+pub fn storage_entry(binding: u32, visibility: wgpu::ShaderStages) -> wgpu::BindGroupLayoutEntry {
+    wgpu::BindGroupLayoutEntry {
+        binding,
+        visibility,
+        ty: wgpu::BindingType::Buffer {
+            ty: wgpu::BufferBindingType::Storage { read_only: true },
+            has_dynamic_offset: false,
+            min_binding_size: None,
+        },
+        count: None,
+    }
+}
+
 /// A bind-group layout entry for a uniform buffer of `size` bytes (chapter 02
 /// spells these out; later chapters call this).
 pub fn uniform_entry(binding: u32, visibility: wgpu::ShaderStages, size: usize) -> wgpu::BindGroupLayoutEntry {

@@ -7,6 +7,7 @@ use web_time::Instant;
 use anyhow::{Context as _, bail};
 
 use crate::chapter::FlagValues;
+use crate::memory::{Growth, MemoryUse};
 use crate::{Chapter, Frame, Gpu, PassTimer, Stats, Target};
 
 /// Offscreen pictures are 8-bit RGBA with sRGB encoding, like a PNG.
@@ -251,6 +252,9 @@ pub struct BenchReport {
     pub setup_ms: f64,
     /// The chapter's own figures ([`Chapter::stats`]).
     pub stats: String,
+    /// Memory at the end of the first and second thirds of the measured
+    /// frames and after the last.
+    pub memory: Growth,
 }
 
 /// Renders `frames` frames offscreen (after a few warm-up frames) and
@@ -272,7 +276,16 @@ pub fn bench<C: Chapter>(
     let mut wall = Vec::new();
     let mut passes: Vec<(&'static str, Vec<f64>)> = Vec::new();
     let mut cpu: Vec<(&'static str, Vec<f64>)> = Vec::new();
+    // Memory is read before frames `reading_at`: a third of the measured
+    // frames apart, from the end of the first third, since the first frames
+    // still settle (allocator arenas, driver caches).
+    let third = frames / 3;
+    let reading_at = [3 + third, 3 + 2 * third, 3 + 3 * third];
+    let mut memory = [MemoryUse::default(); 3];
     for i in 0..frames + 3 {
+        if let Some(k) = reading_at.iter().position(|&at| at == i) {
+            memory[k] = MemoryUse::now(&gpu.device);
+        }
         let start = Instant::now();
         draw_frame(gpu, &mut chapter, &offscreen.view, request.time, request.view, &timer);
         gpu.device.poll(wgpu::PollType::wait_indefinitely()).context("waiting for the frame")?;
@@ -292,6 +305,10 @@ pub fn bench<C: Chapter>(
             }
         }
     }
+    if reading_at[2] == frames + 3 {
+        memory[2] = MemoryUse::now(&gpu.device);
+    }
+    let memory = Growth { readings: memory, frames: [u64::from(third); 2] };
     let summarise = |series: Vec<(&'static str, Vec<f64>)>| {
         series.into_iter().filter_map(|(l, s)| Some((l, Stats::of(&s)?))).collect()
     };
@@ -304,5 +321,6 @@ pub fn bench<C: Chapter>(
         cpu: summarise(cpu),
         setup_ms,
         stats: chapter.stats(gpu),
+        memory,
     })
 }

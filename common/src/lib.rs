@@ -13,6 +13,7 @@ pub mod fullscreen;
 pub mod gpu;
 pub mod headless;
 pub mod input;
+pub mod memory;
 pub mod mesh;
 mod overlay;
 pub mod parallel;

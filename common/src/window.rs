@@ -19,6 +19,7 @@ use winit::window::{CursorGrabMode, Window, WindowId};
 
 use crate::args::{Args, check_size};
 use crate::chapter::show_view;
+use crate::memory::MemoryUse;
 use crate::overlay::{FrameHistory, Overlay};
 use crate::shader;
 use crate::{Chapter, Frame, Gpu, Input, PassTimer, Target};
@@ -123,6 +124,9 @@ struct Running<C: Chapter> {
     probe: Option<PathBuf>,
     /// Whether the GPU has finished the last frame submitted (browser only).
     last_frame_done: Arc<AtomicBool>,
+    /// What the overlay shows of memory, and when it was last read.
+    memory: MemoryUse,
+    memory_read: Option<Instant>,
 }
 
 impl<C: Chapter> ApplicationHandler<Opened<C>> for App<C> {
@@ -389,6 +393,8 @@ impl Opening {
             looked: 0.0,
             probe: args.probe.clone(),
             last_frame_done: Arc::new(AtomicBool::new(true)),
+            memory: MemoryUse::default(),
+            memory_read: None,
         })
     }
 }
@@ -531,6 +537,9 @@ impl<C: Chapter> Running<C> {
         };
 
         self.history.push(dt);
+        if self.memory_read.is_none_or(|read| now - read >= Duration::from_millis(500)) {
+            (self.memory, self.memory_read) = (MemoryUse::now(&self.gpu.device), Some(now));
+        }
         if !self.paused {
             self.time += dt;
         }
@@ -565,6 +574,7 @@ impl<C: Chapter> Running<C> {
                 show_help: &mut self.show_help,
                 status: &self.status,
                 adapter: gpu.adapter.get_info().name,
+                memory: self.memory,
             };
             overlay.draw(gpu, &mut encoder, &overlay_view, size, window, |ctx| ui_state.show(ctx))
         };
@@ -583,6 +593,9 @@ impl<C: Chapter> Running<C> {
     /// For tests that drive the window from outside (`--probe PATH`): one
     /// line with what they cannot see in pixels, written whole each frame.
     fn write_probe(&mut self) {
+        if cfg!(not(target_arch = "wasm32")) && self.probe.is_none() {
+            return;
+        }
         let camera = match self.chapter.camera_mut() {
             Some(c) => {
                 format!("{:.4} {:.4} {:.4} {:.5} {:.5}", c.position.x, c.position.y, c.position.z, c.yaw, c.pitch)
@@ -590,7 +603,7 @@ impl<C: Chapter> Running<C> {
             None => "none".into(),
         };
         let line = format!(
-            "drawn={} skipped={} surface={}x{} view={} typing={} held={} looked={:.0} camera={camera}\n",
+            "drawn={} skipped={} surface={}x{} view={} typing={} held={} looked={:.0} {} camera={camera}\n",
             self.drawn,
             self.skipped,
             self.config.width,
@@ -599,6 +612,7 @@ impl<C: Chapter> Running<C> {
             u8::from(self.overlay.ctx.egui_wants_keyboard_input()),
             self.held_seen,
             self.looked,
+            MemoryUse::now(&self.gpu.device).probe_fields(),
         );
         // In a browser the test reads the line from the page instead.
         #[cfg(target_arch = "wasm32")]
@@ -623,6 +637,7 @@ struct UiState<'a, C: Chapter> {
     show_help: &'a mut bool,
     status: &'a str,
     adapter: String,
+    memory: MemoryUse,
 }
 
 impl<C: Chapter> UiState<'_, C> {
@@ -637,6 +652,8 @@ impl<C: Chapter> UiState<'_, C> {
             let ms = self.history.mean_ms();
             ui.label(format!("{:.0} FPS  ·  {ms:.2} ms  ·  {}", 1000.0 / ms.max(1e-3), self.adapter));
             self.history.graph(ui);
+            ui.small(format!("memory: {}", self.memory.describe()))
+                .on_hover_text("read twice a second; it should not grow while nothing changes");
             let before = *self.view;
             egui::ComboBox::from_label("view").selected_text(C::VIEWS[*self.view].name).show_ui(ui, |ui| {
                 for (i, view) in C::VIEWS.iter().enumerate() {

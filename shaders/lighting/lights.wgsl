@@ -24,7 +24,13 @@ struct Frame {
     // Clusters across, down and deep (clusters.rs: GRID).
     grid: vec4<u32>,
 };
-@group(0) @binding(0) var<uniform> frame: Frame;
+// A read-only storage buffer, not a uniform one, although it is small and
+// the same for every fragment: the loop below runs `options.x` times and
+// branches on `options.y` and `.w`, and Mesa's lavapipe (22.3, Debian 12)
+// compiles a new copy of any shader whose branches read a uniform buffer
+// each time it is bound, and never frees the old one: about a megabyte a
+// frame for this chapter. See the book's chapter 08 pitfalls.
+@group(0) @binding(0) var<storage, read> frame: Frame;
 
 // 64 bytes, as GpuLight in lights.rs. A point light has cos_outer = −3:
 // every direction is inside its "cone".

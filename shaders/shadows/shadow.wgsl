@@ -24,7 +24,8 @@ struct Shadow {
 // bilinear filtering (four texels' answers, weighted).
 @group(3) @binding(1) var compare_nearest: sampler_comparison;
 @group(3) @binding(2) var compare_linear: sampler_comparison;
-@group(3) @binding(3) var<uniform> shadow: Shadow;
+// Storage, not uniform: `sunlit` switches on `options.x` (lights.wgsl's `frame` says why).
+@group(3) @binding(3) var<storage, read> shadow: Shadow;
 // ANCHOR_END: bindings
 
 // ANCHOR: project

@@ -78,7 +78,9 @@ struct Material {
 };
 @group(1) @binding(0) var albedo_map: texture_2d<f32>;
 @group(1) @binding(1) var normal_map: texture_2d<f32>;
-@group(1) @binding(2) var<uniform> material: Material;
+// Storage, not uniform: `textured.wgsl` branches on `flags`, and lavapipe
+// would compile a new shader for every material bound (lights.wgsl's `frame`).
+@group(1) @binding(2) var<storage, read> material: Material;
 // ANCHOR_END: material
 
 // ANCHOR: tbn

@@ -15,7 +15,7 @@ struct ViewOptions {
     padding: vec2<f32>,
 };
 @group(2) @binding(0) var surface_sampler: sampler;
-@group(2) @binding(1) var<uniform> options: ViewOptions;
+@group(2) @binding(1) var<storage, read> options: ViewOptions;
 // ANCHOR_END: bindings
 
 @vertex

@@ -3,8 +3,9 @@
 //! resizes the window through 1×1 and back, minimises and restores it (ten
 //! times each), drags with the mouse and checks that the camera turned, holds
 //! a key and clicks the overlay and checks that the camera stops once the key
-//! is let go, then closes the window with Esc. Any panic, wgpu validation
-//! error, non-zero exit or frame that never comes fails it.
+//! is let go, watches memory over 2 × 10 frames, then closes the window
+//! with Esc. Any panic, wgpu validation error, non-zero exit, frame that
+//! never comes or memory that grows frame after frame fails it.
 //!
 //! What cannot be seen in pixels (frames drawn, the surface's size, the
 //! camera) the chapter reports through its hidden `--probe FILE` flag.
@@ -22,6 +23,11 @@ use crate::{chapter_names, quiet_env, target_dir};
 const SIZE: (u32, u32) = (640, 360);
 const STEP_TIMEOUT: Duration = Duration::from_secs(90);
 const CYCLES: usize = 10;
+/// Frames between the memory readings (see `memory_stays_flat`).
+const MEMORY_FRAMES: u64 = 10;
+/// The most memory may grow by steadily, in bytes a frame: the chapters'
+/// own figure, `common::memory::LEAK_BOUND`, which says why.
+const LEAK_BOUND: f64 = 32.0 * 1024.0;
 
 /// x, y, z, yaw and pitch, as the probe reports them; `None` for chapters
 /// without a camera.
@@ -34,6 +40,10 @@ struct Probe {
     surface: (u32, u32),
     /// The overlay has the keyboard (a text field is being edited).
     typing: bool,
+    /// The process's resident memory and the GPU's buffers and textures, in
+    /// bytes (`None` where the chapter cannot say).
+    memory: Option<u64>,
+    gpu: Option<u64>,
     camera: Pose,
 }
 
@@ -50,7 +60,9 @@ impl Probe {
             Some(values.try_into().ok()?)
         };
         let typing = field("typing=")? == "1";
-        Some(Self { drawn, surface: (w.parse().ok()?, h.parse().ok()?), typing, camera })
+        let bytes = |name: &str| field(name).and_then(|v| v.parse().ok());
+        let (memory, gpu) = (bytes("memory="), bytes("gpu="));
+        Some(Self { drawn, surface: (w.parse().ok()?, h.parse().ok()?), typing, memory, gpu, camera })
     }
 }
 
@@ -262,6 +274,37 @@ impl<'d> Session<'d> {
         Ok([held.camera, released, later])
     }
 
+    /// Reads memory three times, `MEMORY_FRAMES` frames apart, after
+    /// everything else (so caches are full); fails when it grew by more
+    /// than `LEAK_BOUND` a frame over both stretches. A leak grows it over
+    /// both; a one-off allocation over one. Returns the steady growth of the
+    /// process and of the GPU's buffers and textures, in bytes a frame.
+    fn memory_stays_flat(&mut self) -> anyhow::Result<(f64, Option<f64>)> {
+        let first = self.frames(1, "a frame before watching memory")?;
+        let second = self.frames(MEMORY_FRAMES, "frames while watching memory")?;
+        let third = self.frames(MEMORY_FRAMES, "more frames while watching memory")?;
+        let steady = |read: fn(&Probe) -> Option<u64>| -> Option<f64> {
+            let [a, b, c] = [&first, &second, &third].map(|p| read(p).map(|v| v as f64));
+            let (n, m) = ((second.drawn - first.drawn) as f64, (third.drawn - second.drawn) as f64);
+            Some(((b? - a?) / n).min((c? - b?) / m))
+        };
+        let process = steady(|p| p.memory).with_context(|| format!("{}: the probe reports no memory", self.chapter))?;
+        let gpu = steady(|p| p.gpu);
+        for (what, growth) in [("the process's memory", Some(process)), ("the GPU's buffers and textures", gpu)] {
+            if let Some(growth) = growth {
+                ensure!(
+                    growth <= LEAK_BOUND,
+                    "{}: {what} grew by {:.0} KB a frame over {} frames (more than {:.0} KB a frame): a leak",
+                    self.chapter,
+                    growth / 1024.0,
+                    third.drawn - first.drawn,
+                    LEAK_BOUND / 1024.0
+                );
+            }
+        }
+        Ok((process, gpu))
+    }
+
     fn close(mut self) -> anyhow::Result<()> {
         self.x(&["windowfocus"])?;
         self.x(&["key", "Escape"])?;
@@ -309,10 +352,13 @@ fn drive(display: &Display, chapter: &str, dir: &Path) -> anyhow::Result<String>
         );
     }
     let turned = before.is_some();
+    let (process, gpu) = session.memory_stays_flat()?;
     session.close()?;
+    let gpu = gpu.map_or("no GPU count".into(), |g| format!("GPU {:+.1} KB", g / 1024.0));
     Ok(format!(
-        "{chapter}: {CYCLES}× resized through 1×1, {CYCLES}× minimised and restored, {}, closed cleanly ({:.0} s)",
+        "{chapter}: {CYCLES}× resized through 1×1, {CYCLES}× minimised and restored, {}, memory {:+.1} KB and {gpu} a frame, closed cleanly ({:.0} s)",
         if turned { "drag turned the camera, W stopped on release" } else { "no camera to drag" },
+        process / 1024.0,
         started.elapsed().as_secs_f64()
     ))
 }
@@ -367,10 +413,12 @@ mod tests {
 
     #[test]
     fn probe_lines_parse() {
-        let line = "drawn=12 skipped=3 surface=640x360 view=day typing=1 camera=1.0 2.0 3.0 0.5 -0.25\n";
+        let line =
+            "drawn=12 skipped=3 surface=640x360 view=day typing=1 memory=1000 gpu=n/a camera=1.0 2.0 3.0 0.5 -0.25\n";
         let probe = Probe::parse(line).unwrap();
         let camera = Some([1.0, 2.0, 3.0, 0.5, -0.25]);
-        assert_eq!(probe, Probe { drawn: 12, surface: (640, 360), typing: true, camera });
+        let expected = Probe { drawn: 12, surface: (640, 360), typing: true, memory: Some(1000), gpu: None, camera };
+        assert_eq!(probe, expected);
         let none = Probe::parse("drawn=1 skipped=0 surface=1x1 view=flat typing=0 camera=none").unwrap();
         assert_eq!(none.camera, None);
         assert!(Probe::parse("drawn=").is_none());

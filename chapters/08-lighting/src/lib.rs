@@ -11,7 +11,7 @@ pub mod clusters;
 pub mod lights;
 pub mod paths;
 
-use common::chapter::{FILTERABLE, mesh_pipeline, sampler_entry, texture_entry, uniform_entry};
+use common::chapter::{FILTERABLE, mesh_pipeline, sampler_entry, storage_entry, texture_entry, uniform_entry};
 use common::glam::{Mat3, Mat4, Vec3};
 use common::wgpu::util::DeviceExt as _;
 use common::{
@@ -253,19 +253,6 @@ pub struct LoopOptions {
     pub heat_map: bool,
 }
 
-fn storage_entry(binding: u32, visibility: wgpu::ShaderStages) -> wgpu::BindGroupLayoutEntry {
-    wgpu::BindGroupLayoutEntry {
-        binding,
-        visibility,
-        ty: wgpu::BindingType::Buffer {
-            ty: wgpu::BufferBindingType::Storage { read_only: true },
-            has_dynamic_offset: false,
-            min_binding_size: None,
-        },
-        count: None,
-    }
-}
-
 // ANCHOR: scene_lights
 /// The lights of a frame on the GPU: group 0 of `lights.wgsl`, with the
 /// frame's camera and sun, every light, and the cluster lists. A piece with
@@ -285,7 +272,7 @@ impl SceneLights {
         let layout = device.create_bind_group_layout(&wgpu::BindGroupLayoutDescriptor {
             label: Some("lights"),
             entries: &[
-                uniform_entry(0, stages, std::mem::size_of::<FrameUniform>()),
+                storage_entry(0, stages),
                 storage_entry(1, stages),
                 storage_entry(2, stages),
                 storage_entry(3, stages),
@@ -295,11 +282,8 @@ impl SceneLights {
             device.create_buffer(&wgpu::BufferDescriptor { label: Some(label), size, usage, mapped_at_creation: false })
         };
         let storage = wgpu::BufferUsages::STORAGE | wgpu::BufferUsages::COPY_DST;
-        let frame = buffer(
-            "frame",
-            std::mem::size_of::<FrameUniform>() as u64,
-            wgpu::BufferUsages::UNIFORM | wgpu::BufferUsages::COPY_DST,
-        );
+        // Storage, not uniform: see `frame` in lights.wgsl.
+        let frame = buffer("frame", std::mem::size_of::<FrameUniform>() as u64, storage);
         let lights = buffer("lights", u64::from(MAX_LIGHTS) * 64, storage);
         let ranges = buffer("cluster ranges", CLUSTERS as u64 * 8, storage);
         let indices = buffer("cluster lights", 4 * 4096, storage);

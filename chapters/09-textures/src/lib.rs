@@ -16,7 +16,7 @@ use std::path::{Path, PathBuf};
 use std::sync::Arc;
 
 use common::args::UsageError;
-use common::chapter::{mesh_pipeline, sampler_entry, uniform_entry};
+use common::chapter::{mesh_pipeline, sampler_entry, storage_entry};
 use common::glam::{Mat4, Quat, Vec3};
 use common::{
     Camera, Chapter, ChapterFlag, FlagValues, FlyController, Frame, Gpu, Input, ShaderError, Target, View, anyhow,
@@ -234,15 +234,13 @@ impl TexturedRenderer {
         let device = &gpu.device;
         let layout = device.create_bind_group_layout(&wgpu::BindGroupLayoutDescriptor {
             label: Some("view"),
-            entries: &[
-                sampler_entry(0),
-                uniform_entry(1, wgpu::ShaderStages::FRAGMENT, std::mem::size_of::<ViewOptions>()),
-            ],
+            entries: &[sampler_entry(0), storage_entry(1, wgpu::ShaderStages::FRAGMENT)],
         });
         let options = device.create_buffer(&wgpu::BufferDescriptor {
             label: Some("view options"),
             size: std::mem::size_of::<ViewOptions>() as u64,
-            usage: wgpu::BufferUsages::UNIFORM | wgpu::BufferUsages::COPY_DST,
+            // Storage, not uniform: the shader branches on it (see `storage_entry`).
+            usage: wgpu::BufferUsages::STORAGE | wgpu::BufferUsages::COPY_DST,
             mapped_at_creation: false,
         });
         let anisotropy =

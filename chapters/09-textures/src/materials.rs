@@ -7,7 +7,7 @@ use std::collections::HashMap;
 use std::path::{Path, PathBuf};
 use std::rc::Rc;
 
-use common::chapter::{FILTERABLE, texture_entry, uniform_entry};
+use common::chapter::{FILTERABLE, storage_entry, texture_entry};
 use common::glam::Vec3;
 use common::image::RgbaImage;
 use common::wgpu::util::DeviceExt as _;
@@ -203,7 +203,8 @@ impl Materials {
             entries: &[
                 texture_entry(0, FILTERABLE),
                 texture_entry(1, FILTERABLE),
-                uniform_entry(2, wgpu::ShaderStages::FRAGMENT, std::mem::size_of::<MaterialUniform>()),
+                // Storage, not uniform: the shader branches on `flags` (see `storage_entry`).
+                storage_entry(2, wgpu::ShaderStages::FRAGMENT),
             ],
         });
         let one = |rgba: [u8; 4]| RgbaImage::from_pixel(1, 1, common::image::Rgba(rgba));
@@ -281,7 +282,7 @@ impl Materials {
         let buffer = gpu.device.create_buffer_init(&wgpu::util::BufferInitDescriptor {
             label: Some(&desc.name),
             contents: bytemuck::bytes_of(&uniform),
-            usage: wgpu::BufferUsages::UNIFORM,
+            usage: wgpu::BufferUsages::STORAGE,
         });
         let group = |albedo: &wgpu::TextureView, normal: &wgpu::TextureView| {
             gpu.device.create_bind_group(&wgpu::BindGroupDescriptor {

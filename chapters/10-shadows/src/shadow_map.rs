@@ -4,7 +4,7 @@
 //! renders the depth with a bias, and binds the map for the main pass with
 //! the settings its filters need.
 
-use common::chapter::{texture_entry, uniform_entry};
+use common::chapter::{storage_entry, texture_entry, uniform_entry};
 use common::glam::{Mat4, Vec3};
 use common::{Gpu, PassTimer, ShaderError, shader, wgpu};
 use textures::DrawList;
@@ -261,13 +261,15 @@ impl ShadowMap {
                 texture_entry(0, wgpu::TextureSampleType::Depth),
                 comparison_entry(1),
                 comparison_entry(2),
-                uniform_entry(3, fragment, std::mem::size_of::<ShadowUniform>()),
+                // Storage, not uniform: `sunlit` switches on the filter (see `storage_entry`).
+                storage_entry(3, fragment),
             ],
         });
         let uniform = device.create_buffer(&wgpu::BufferDescriptor {
             label: Some("shadow"),
             size: std::mem::size_of::<ShadowUniform>() as u64,
-            usage: wgpu::BufferUsages::UNIFORM | wgpu::BufferUsages::COPY_DST,
+            // The caster pass reads its first 64 bytes as a uniform.
+            usage: wgpu::BufferUsages::STORAGE | wgpu::BufferUsages::UNIFORM | wgpu::BufferUsages::COPY_DST,
             mapped_at_creation: false,
         });
         let caster_group_layout = device.create_bind_group_layout(&wgpu::BindGroupLayoutDescriptor {

@@ -1,0 +1,171 @@
+//! How much memory a running chapter holds: the process's (its resident
+//! set, or a page's WebAssembly heap) and the GPU's (the bytes of every
+//! buffer and texture the device holds). The overlay shows both, the
+//! window test's probe reports them, `--bench` measures how they change
+//! over its frames, and `cargo xtask test` fails a chapter whose memory
+//! grows frame after frame.
+
+/// Memory in use now, in bytes; `None` where this platform cannot say.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct MemoryUse {
+    /// The process's resident memory on the desktop (`VmRSS` on Linux); in
+    /// a browser, the WebAssembly heap (it grows and never shrinks).
+    pub process: Option<u64>,
+    /// The bytes of every buffer and texture alive on the device, counted
+    /// by wgpu (its `counters` feature) where the backend keeps the count:
+    /// Vulkan and DX12. On a software rasteriser this memory is also part
+    /// of `process`; on a graphics card it is not.
+    pub gpu: Option<u64>,
+}
+
+impl MemoryUse {
+    /// What `device` and this process hold now.
+    pub fn now(device: &wgpu::Device) -> Self {
+        Self { process: process_bytes(), gpu: gpu_bytes(device) }
+    }
+
+    /// "412 MB process, 38.2 MB GPU" for the overlay.
+    pub fn describe(&self) -> String {
+        let mb = |bytes: Option<u64>| bytes.map_or("n/a".into(), |b| format!("{:.1} MB", b as f64 / 1e6));
+        let process = if cfg!(target_arch = "wasm32") { "heap" } else { "process" };
+        format!("{} {process}, {} GPU buffers + textures", mb(self.process), mb(self.gpu))
+    }
+}
+
+impl MemoryUse {
+    /// `memory=BYTES gpu=BYTES` (or `n/a`) for the window test's probe line.
+    pub fn probe_fields(&self) -> String {
+        let value = |v: Option<u64>| v.map_or("n/a".into(), |v| v.to_string());
+        format!("memory={} gpu={}", value(self.process), value(self.gpu))
+    }
+
+    /// Reads back [`MemoryUse::probe_fields`] from a probe line; `None` when
+    /// the line has no such fields.
+    pub fn from_probe(line: &str) -> Option<Self> {
+        let field = |name: &str| line.split_whitespace().find_map(|w| w.strip_prefix(name));
+        let value = |w: &str| if w == "n/a" { Some(None) } else { w.parse().ok().map(Some) };
+        Some(Self { process: value(field("memory=")?)?, gpu: value(field("gpu=")?)? })
+    }
+}
+
+/// Buffers and textures alive on `device`, by wgpu's count; `None` when
+/// the backend keeps no count (it then reports zero for both).
+pub fn gpu_bytes(device: &wgpu::Device) -> Option<u64> {
+    let hal = device.get_internal_counters().hal;
+    let bytes = hal.buffer_memory.read() + hal.texture_memory.read();
+    (bytes > 0).then_some(bytes as u64)
+}
+
+/// The process's resident memory now (not its peak), where the system says.
+#[cfg(not(target_arch = "wasm32"))]
+pub fn process_bytes() -> Option<u64> {
+    let status = std::fs::read_to_string("/proc/self/status").ok()?;
+    let line = status.lines().find(|l| l.starts_with("VmRSS:"))?;
+    let kib: u64 = line.split_whitespace().nth(1)?.parse().ok()?;
+    Some(kib * 1024)
+}
+
+/// The page's WebAssembly heap: the module's linear memory.
+#[cfg(target_arch = "wasm32")]
+pub fn process_bytes() -> Option<u64> {
+    use wasm_bindgen::JsCast as _;
+    let memory = wasm_bindgen::memory().dyn_into::<js_sys::WebAssembly::Memory>().ok()?;
+    let buffer = memory.buffer().dyn_into::<js_sys::ArrayBuffer>().ok()?;
+    Some(u64::from(buffer.byte_length()))
+}
+
+/// Three readings of memory, `frames[0]` and then `frames[1]` frames
+/// apart: how it changed over a run. A leak grows memory between every two readings; a one-off
+/// allocation (a cache filled, an allocator taking a bigger arena) grows it
+/// between two of them only. So the steady growth is the smaller of the two.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Growth {
+    pub readings: [MemoryUse; 3],
+    pub frames: [u64; 2],
+}
+
+/// The most a chapter's memory may grow by steadily, in bytes a frame,
+/// before `cargo xtask test` calls it a leak. Chapters that do not leak
+/// grow by under 10 KB a frame (measured in the window and headless), the
+/// leaks found so far by 1.4 to 25 MB a frame.
+pub const LEAK_BOUND: f64 = 32.0 * 1024.0;
+
+impl Growth {
+    /// Bytes a frame the process grew by steadily (negative: it shrank).
+    pub fn process_per_frame(&self) -> Option<f64> {
+        self.steady(|m| m.process)
+    }
+
+    /// Bytes a frame the GPU's buffers and textures grew by steadily.
+    pub fn gpu_per_frame(&self) -> Option<f64> {
+        self.steady(|m| m.gpu)
+    }
+
+    fn steady(&self, read: impl Fn(&MemoryUse) -> Option<u64>) -> Option<f64> {
+        let [a, b, c] = self.readings.map(|m| read(&m).map(|v| v as f64));
+        let [n, m] = self.frames.map(|f| f.max(1) as f64);
+        Some(((b? - a?) / n).min((c? - b?) / m))
+    }
+
+    /// One line, which `cargo xtask test` reads back (see [`Growth::parse`]):
+    /// `memory: process A B C bytes, gpu D E F bytes, after N and M frames`.
+    pub fn line(&self) -> String {
+        let values = |read: fn(&MemoryUse) -> Option<u64>| {
+            self.readings.iter().map(|m| read(m).map_or("n/a".into(), |v| v.to_string())).collect::<Vec<_>>().join(" ")
+        };
+        format!(
+            "memory: process {} bytes, gpu {} bytes, after {} and {} frames",
+            values(|m| m.process),
+            values(|m| m.gpu),
+            self.frames[0],
+            self.frames[1]
+        )
+    }
+
+    /// Reads back what [`Growth::line`] wrote (anywhere in `text`).
+    pub fn parse(text: &str) -> Option<Self> {
+        let rest = text.lines().find_map(|l| l.split_once("memory: process "))?.1;
+        let words: Vec<&str> = rest.split_whitespace().collect();
+        let value = |w: &str| if w == "n/a" { Some(None) } else { w.parse().ok().map(Some) };
+        let [a, b, c, "bytes,", "gpu", d, e, f, "bytes,", "after", n, "and", m, "frames", ..] = words.as_slice() else {
+            return None;
+        };
+        let reading = |process: &str, gpu: &str| Some(MemoryUse { process: value(process)?, gpu: value(gpu)? });
+        let frames = [n.parse().ok()?, m.parse().ok()?];
+        Some(Self { readings: [reading(a, d)?, reading(b, e)?, reading(c, f)?], frames })
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn reading(process: u64, gpu: Option<u64>) -> MemoryUse {
+        MemoryUse { process: Some(process), gpu }
+    }
+
+    #[test]
+    fn lines_read_back() {
+        let growth = Growth {
+            readings: [reading(100_000, Some(4096)), reading(130_000, None), reading(160_000, Some(4096))],
+            frames: [15, 15],
+        };
+        let text = format!("| a | table |\n- default: {}\n", growth.line());
+        assert_eq!(Growth::parse(&text), Some(growth));
+        assert_eq!(growth.process_per_frame(), Some(2000.0));
+        assert_eq!(growth.gpu_per_frame(), None, "no count in the middle reading");
+        assert_eq!(Growth::parse("memory: process 1 2 3 bytes"), None, "a cut line is no reading");
+    }
+
+    #[test]
+    fn a_one_off_step_is_not_a_leak() {
+        let step = Growth {
+            readings: [reading(100, None), reading(36_000_100, None), reading(36_000_100, None)],
+            frames: [20, 20],
+        };
+        assert_eq!(step.process_per_frame(), Some(0.0));
+        let leak =
+            Growth { readings: [reading(0, None), reading(20_000, None), reading(60_000, None)], frames: [20, 40] };
+        assert_eq!(leak.process_per_frame(), Some(1000.0));
+    }
+}
