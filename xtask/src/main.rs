@@ -103,14 +103,28 @@ fn quiet_env() -> Vec<(String, String)> {
 
 fn test() -> anyhow::Result<()> {
     let started = std::time::Instant::now();
-    prerequisites::ensure_adapter()?;
-    cargo(&["fmt", "--all", "--", "--check"])?;
-    cargo(&["clippy", "--workspace", "--all-targets", "--", "-D", "warnings"])?;
-    cargo(&["test", "--workspace"])?;
-    window_test::run(&[])?;
+    let mut times: Vec<(&str, f64)> = Vec::new();
+    let mut step = |name: &'static str, run: &dyn Fn() -> anyhow::Result<()>| -> anyhow::Result<()> {
+        let begun = std::time::Instant::now();
+        let result = run();
+        times.push((name, begun.elapsed().as_secs_f64()));
+        let so_far: Vec<String> = times.iter().map(|(n, s)| format!("{n} {s:.0} s")).collect();
+        println!(
+            "\nxtask test: {name} {} after {:.0} s ({})",
+            if result.is_ok() { "passed" } else { "FAILED" },
+            begun.elapsed().as_secs_f64(),
+            so_far.join(", ")
+        );
+        result
+    };
+    step("prerequisites", &prerequisites::ensure_adapter)?;
+    step("fmt", &|| cargo(&["fmt", "--all", "--", "--check"]))?;
+    step("clippy", &|| cargo(&["clippy", "--workspace", "--all-targets", "--", "-D", "warnings"]))?;
+    step("cargo test", &|| cargo(&["test", "--workspace"]))?;
+    step("window", &|| window_test::run(&[]))?;
     // `cargo test` has just compared every snapshot; the book only copies them.
-    book::build(false)?;
-    web::browser_test(&[])?;
+    step("book", &|| book::build(false))?;
+    step("browser", &|| web::browser_test(&[]))?;
     println!("\nxtask test: all checks passed in {:.0} s", started.elapsed().as_secs_f64());
     Ok(())
 }
