@@ -34,8 +34,13 @@ fn run_native<C: Chapter>() -> ExitCode {
         Err(error) => error.exit(),
     };
     if args.list_views {
+        use std::io::Write as _;
+        // `--list-views | head -1` closes the pipe early: stop quietly then.
+        let mut out = std::io::stdout().lock();
         for view in C::VIEWS {
-            println!("{:<14} {}", view.name, view.about);
+            if writeln!(out, "{:<14} {}", view.name, view.about).is_err() {
+                break;
+            }
         }
         return ExitCode::SUCCESS;
     }

@@ -5,6 +5,7 @@
 
 use std::any::Any;
 use std::fmt;
+use std::path::PathBuf;
 use std::sync::{Arc, Mutex};
 
 /// The adapter, device and queue a chapter draws with.
@@ -15,6 +16,8 @@ pub struct Gpu {
     pub queue: wgpu::Queue,
     /// See [`Gpu::cached`].
     cache: Mutex<Vec<Box<dyn Any + Send>>>,
+    /// See [`Gpu::read_shaders_from`].
+    shader_root: Mutex<Option<PathBuf>>,
 }
 
 /// What a chapter needs beyond the WebGPU baseline. Optional features are
@@ -134,7 +137,7 @@ impl Gpu {
             .await
             .map_err(|e| NoAdapter { reason: format!("request_device failed: {e}") })?;
 
-        Ok(Self { instance, adapter, device, queue, cache: Mutex::default() })
+        Ok(Self { instance, adapter, device, queue, cache: Mutex::default(), shader_root: Mutex::default() })
     }
 
     /// Returns the value made for `key` on this device, making it first if
@@ -172,6 +175,20 @@ impl Gpu {
     {
         let mut cache = self.cache.lock().unwrap_or_else(|e| e.into_inner());
         cache.iter_mut().find_map(|entry| entry.downcast_mut::<(K, Arc<V>)>()).is_some_and(|(k, _)| k == key)
+    }
+
+    /// Makes the shaders this device builds come from `root` (a folder laid
+    /// out like `shaders/`) instead of the copies embedded in the binary,
+    /// or from the embedded copies again with `None`. The window points
+    /// this at the source tree it watches for edits (hot reload); a test
+    /// points it at a scratch copy it breaks, on a device of its own.
+    pub fn read_shaders_from(&self, root: Option<PathBuf>) {
+        *self.shader_root.lock().unwrap_or_else(|e| e.into_inner()) = root;
+    }
+
+    /// Where this device's shaders come from: see [`Gpu::read_shaders_from`].
+    pub fn shader_root(&self) -> Option<PathBuf> {
+        self.shader_root.lock().unwrap_or_else(|e| e.into_inner()).clone()
     }
 
     /// One line naming the adapter, for logs and bench tables.

@@ -2,8 +2,7 @@
 //! naga_oil's `#import`, validated by naga with readable diagnostics, and
 //! re-read from disk while a window is open (hot reload).
 
-use std::path::PathBuf;
-use std::sync::Mutex;
+use std::path::{Path, PathBuf};
 #[cfg(not(target_arch = "wasm32"))]
 use std::sync::mpsc;
 
@@ -66,21 +65,10 @@ pub fn scratch_copy(name: &str) -> std::io::Result<PathBuf> {
     Ok(root)
 }
 
-/// Where shader text comes from: `None` for the embedded copies, or a
-/// folder laid out like `shaders/`.
-static DISK_ROOT: Mutex<Option<PathBuf>> = Mutex::new(None);
-
-/// Reads shaders from `root` (a folder laid out like `shaders/`) instead of
-/// the embedded copies, or from the embedded copies again with `None`. The
-/// window runner points this at the source tree it watches for edits.
-pub fn read_from(root: Option<PathBuf>) {
-    *DISK_ROOT.lock().unwrap_or_else(|e| e.into_inner()) = root;
-}
-
 impl ShaderFile {
-    /// The current text: from disk while hot reload is on, else embedded.
-    pub fn source(&self) -> Result<String, ShaderError> {
-        let root = DISK_ROOT.lock().unwrap_or_else(|e| e.into_inner()).clone();
+    /// The text under `root` (a folder laid out like `shaders/`, where hot
+    /// reload reads), or the embedded copy with `None`.
+    pub fn source(&self, root: Option<&Path>) -> Result<String, ShaderError> {
         match root {
             Some(root) => {
                 let path = root.join(self.path);
@@ -90,18 +78,21 @@ impl ShaderFile {
         }
     }
 
-    /// Composes the current text with its imports, validates it, and
-    /// creates a shader module from it. On a device with WebGPU's
-    /// `clip_distances` feature, `CLIP_DISTANCES` is defined for
-    /// `#ifdef`s in the WGSL (chapter 07 clips with it).
-    pub fn module(&self, device: &wgpu::Device) -> Result<wgpu::ShaderModule, ShaderError> {
+    /// Composes the current text (where `gpu` reads shaders from: see
+    /// [`crate::Gpu::read_shaders_from`]) with its imports, validates it,
+    /// and creates a shader module from it on `gpu`'s device. On a device
+    /// with WebGPU's `clip_distances` feature, `CLIP_DISTANCES` is defined
+    /// for `#ifdef`s in the WGSL (chapter 07 clips with it).
+    pub fn module(&self, gpu: &crate::Gpu) -> Result<wgpu::ShaderModule, ShaderError> {
+        let root = gpu.shader_root();
         let mut imports = Vec::new();
         for import in self.imports {
-            imports.push((import.path, import.source()?));
+            imports.push((import.path, import.source(root.as_deref())?));
         }
+        let device = &gpu.device;
         let clip_distances = device.features().contains(wgpu::Features::CLIP_DISTANCES);
         let defs: &[&str] = if clip_distances { &["CLIP_DISTANCES"] } else { &[] };
-        let module = compose_with(&self.source()?, self.path, &imports, defs)?;
+        let module = compose_with(&self.source(root.as_deref())?, self.path, &imports, defs)?;
         Ok(device.create_shader_module(wgpu::ShaderModuleDescriptor {
             label: Some(self.path),
             source: wgpu::ShaderSource::Naga(std::borrow::Cow::Owned(module)),

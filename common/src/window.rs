@@ -355,7 +355,7 @@ impl Opening {
         let overlay = Overlay::new(&window, &gpu, overlay_format);
 
         let watcher = shader::ShaderWatcher::start();
-        shader::read_from(watcher.as_ref().map(|_| PathBuf::from(shader::SHADER_DIR)));
+        gpu.read_shaders_from(watcher.as_ref().map(|_| PathBuf::from(shader::SHADER_DIR)));
         let status = match &watcher {
             Some(watcher) => format!("watching {} for edits", watcher.dir.display()),
             None => "shaders are built in (no source tree to watch)".into(),
@@ -479,7 +479,13 @@ impl<C: Chapter> Running<C> {
     /// Draws a frame if the window can show one, and reports to the probe.
     fn frame(&mut self) -> anyhow::Result<()> {
         if !self.gpu_caught_up() {
-            return Ok(()); // neither drawn nor skipped: asked again next animation frame
+            // Neither drawn nor skipped: ask again next animation frame.
+            // `about_to_wait` asks only while the canvas has an area, so a
+            // canvas that collapsed while a frame was in flight was never
+            // asked again: the page never counted it skipped (the browser
+            // test waited for that in vain, now and then).
+            self.window.request_redraw();
+            return Ok(());
         }
         if self.draw()? {
             self.drawn += 1;

@@ -122,10 +122,43 @@ fn test() -> anyhow::Result<()> {
     step("clippy", &|| cargo(&["clippy", "--workspace", "--all-targets", "--", "-D", "warnings"]))?;
     step("cargo test", &|| cargo(&["test", "--workspace"]))?;
     step("window", &|| window_test::run(&[]))?;
+    step("shared builds", &chapters_reuse_the_test_build)?;
     // `cargo test` has just compared every snapshot; the book only copies them.
     step("book", &|| book::build(false))?;
     step("browser", &|| web::browser_test(&[]))?;
     println!("\nxtask test: all checks passed in {:.0} s", started.elapsed().as_secs_f64());
+    Ok(())
+}
+
+/// After the window test's workspace build, `cargo run -p CHAPTER` (the
+/// README's first command) must find everything built: a chapter built
+/// alone gets the same dependency features as the workspace build (see
+/// the list at the end of common's desktop dependencies), or it would
+/// rebuild naga, wgpu and egui first. Asks cargo, per chapter, which of
+/// its artifacts are fresh.
+fn chapters_reuse_the_test_build() -> anyhow::Result<()> {
+    for chapter in chapter_names()? {
+        let output = Command::new(std::env::var("CARGO").unwrap_or_else(|_| "cargo".into()))
+            .args(["build", "--quiet", "--message-format=json", "-p", &chapter])
+            .current_dir(root())
+            .output()
+            .context("cannot run cargo")?;
+        ensure!(output.status.success(), "`cargo build -p {chapter}` failed");
+        let stale: Vec<String> = String::from_utf8_lossy(&output.stdout)
+            .lines()
+            .filter_map(|line| serde_json::from_str::<serde_json::Value>(line).ok())
+            .filter(|m| m["reason"] == "compiler-artifact" && m["fresh"] == false)
+            .map(|m| m["target"]["name"].as_str().unwrap_or("?").to_string())
+            .collect();
+        ensure!(
+            stale.is_empty(),
+            "`cargo run -p {chapter}` would rebuild {} after the workspace build: its features differ \
+             (compare `cargo tree -e features -p {chapter}` with the workspace's and add what differs to the \
+             list at the end of common's desktop dependencies)",
+            stale.join(", ")
+        );
+    }
+    println!("every chapter alone reuses the workspace build (`cargo run -p NAME` compiles nothing)");
     Ok(())
 }
 

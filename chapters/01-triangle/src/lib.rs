@@ -94,7 +94,7 @@ fn build_pipeline(
 
 impl Triangle {
     fn pipelines(gpu: &Gpu, format: wgpu::TextureFormat) -> Result<[wgpu::RenderPipeline; 2], ShaderError> {
-        let module = shader!("triangle/triangle.wgsl").module(&gpu.device)?;
+        let module = shader!("triangle/triangle.wgsl").module(gpu)?;
         gpu.catch_validation(|| {
             [
                 build_pipeline(&gpu.device, &module, format, "vs_main", "fs_main"),

@@ -274,8 +274,8 @@ impl CameraChapter {
         layouts: &[wgpu::PipelineLayout; 2],
         format: wgpu::TextureFormat,
     ) -> Result<Pipelines, ShaderError> {
-        let scene = shader!("camera/scene.wgsl").module(&gpu.device)?;
-        let depth = shader!("camera/depth.wgsl", imports: ["common/fullscreen.wgsl"]).module(&gpu.device)?;
+        let scene = shader!("camera/scene.wgsl").module(gpu)?;
+        let depth = shader!("camera/depth.wgsl", imports: ["common/fullscreen.wgsl"]).module(gpu)?;
         gpu.catch_validation(|| Pipelines {
             shaded: scene_pipeline(&gpu.device, &layouts[0], &scene, format, "fs_main"),
             normals: scene_pipeline(&gpu.device, &layouts[0], &scene, format, "fs_normals"),

@@ -433,7 +433,7 @@ impl TerrainRenderer {
         layout: &wgpu::PipelineLayout,
         format: wgpu::TextureFormat,
     ) -> Result<wgpu::RenderPipeline, ShaderError> {
-        let module = shader.module(&gpu.device)?;
+        let module = shader.module(gpu)?;
         gpu.catch_validation(|| {
             gpu.device.create_render_pipeline(&wgpu::RenderPipelineDescriptor {
                 label: Some(shader.path),

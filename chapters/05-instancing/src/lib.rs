@@ -396,7 +396,7 @@ impl MarsPlain {
         layouts: &[wgpu::PipelineLayout; 2],
         format: wgpu::TextureFormat,
     ) -> Result<RockPipelines, ShaderError> {
-        let module = rocks_shader().module(&gpu.device)?;
+        let module = rocks_shader().module(gpu)?;
         gpu.catch_validation(|| RockPipelines {
             instanced: rock_pipeline(gpu, &module, &layouts[0], format, "vs_instanced", "fs_main"),
             one_per_draw: rock_pipeline(gpu, &module, &layouts[1], format, "vs_single", "fs_main"),

@@ -132,7 +132,7 @@ fn sky_pipeline(
     layout: &wgpu::PipelineLayout,
     format: wgpu::TextureFormat,
 ) -> Result<wgpu::RenderPipeline, ShaderError> {
-    let module = sky_shader().module(&gpu.device)?;
+    let module = sky_shader().module(gpu)?;
     // Test against the scene's depth, but leave it alone: the sky is at the
     // far plane, and passes only where the buffer still says 1.
     let depth = wgpu::DepthStencilState {

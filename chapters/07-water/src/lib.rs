@@ -289,8 +289,8 @@ fn build_pipelines(
     show_layout: &wgpu::PipelineLayout,
     format: wgpu::TextureFormat,
 ) -> Result<(wgpu::RenderPipeline, wgpu::RenderPipeline), ShaderError> {
-    let water = water_shader().module(&gpu.device)?;
-    let show = show_shader().module(&gpu.device)?;
+    let water = water_shader().module(gpu)?;
+    let show = show_shader().module(gpu)?;
     gpu.catch_validation(|| {
         let surface = gpu.device.create_render_pipeline(&wgpu::RenderPipelineDescriptor {
             label: Some("water"),

@@ -154,7 +154,7 @@ impl Bloom {
         layout: &wgpu::PipelineLayout,
         format: wgpu::TextureFormat,
     ) -> Result<(wgpu::RenderPipeline, wgpu::RenderPipeline), ShaderError> {
-        let module = bloom_shader().module(&gpu.device)?;
+        let module = bloom_shader().module(gpu)?;
         // Upsampling blends into the level below: result = up × spread + level × (1 − spread).
         let mix = wgpu::BlendComponent {
             src_factor: wgpu::BlendFactor::Constant,

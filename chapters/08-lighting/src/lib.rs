@@ -417,7 +417,7 @@ impl ToneMap {
         layout: &wgpu::PipelineLayout,
         format: wgpu::TextureFormat,
     ) -> Result<wgpu::RenderPipeline, ShaderError> {
-        let module = shader!("lighting/tonemap.wgsl", imports: ["common/fullscreen.wgsl"]).module(&gpu.device)?;
+        let module = shader!("lighting/tonemap.wgsl", imports: ["common/fullscreen.wgsl"]).module(gpu)?;
         gpu.catch_validation(|| {
             fullscreen::pipeline(&gpu.device, "tone map", layout, &module, "fs_composite", format.into(), None)
         })
@@ -541,8 +541,8 @@ impl CitySky {
     }
 
     fn pipeline(gpu: &Gpu, layout: &wgpu::PipelineLayout) -> Result<wgpu::RenderPipeline, ShaderError> {
-        let module = shader!("lighting/sky.wgsl", imports: ["lighting/lights.wgsl", "common/fullscreen.wgsl"])
-            .module(&gpu.device)?;
+        let module =
+            shader!("lighting/sky.wgsl", imports: ["lighting/lights.wgsl", "common/fullscreen.wgsl"]).module(gpu)?;
         // At the far plane, behind everything drawn before it.
         let depth = wgpu::DepthStencilState {
             format: common::texture::DEPTH_FORMAT,
@@ -592,7 +592,7 @@ struct Pipelines {
 }
 
 fn build_pipelines(gpu: &Gpu, layout: &wgpu::PipelineLayout) -> Result<Pipelines, ShaderError> {
-    let module = city_shader().module(&gpu.device)?;
+    let module = city_shader().module(gpu)?;
     let buffers = [Some(Vertex::LAYOUT), Some(GpuInstance::LAYOUT)];
     let mesh = |entries| mesh_pipeline(&gpu.device, layout, &module, entries, &buffers, HDR_FORMAT.into());
     gpu.catch_validation(|| Pipelines {

@@ -270,7 +270,7 @@ impl TexturedRenderer {
 
     fn pipelines(gpu: &Gpu, layout: &wgpu::PipelineLayout) -> Result<Pipelines, ShaderError> {
         let module = shader!("textures/textured.wgsl", imports: ["lighting/lights.wgsl", "textures/surface.wgsl"])
-            .module(&gpu.device)?;
+            .module(gpu)?;
         let buffers = [Some(TexturedVertex::LAYOUT), Some(ModelInstance::LAYOUT)];
         let pipeline =
             |fragment| mesh_pipeline(&gpu.device, layout, &module, ("vs_main", fragment), &buffers, HDR_FORMAT.into());

@@ -38,7 +38,7 @@ pub struct MipMaker {
 impl MipMaker {
     pub fn new(gpu: &Gpu) -> Result<Self, ShaderError> {
         let device = &gpu.device;
-        let module = shader!("textures/mipmap.wgsl", imports: ["common/fullscreen.wgsl"]).module(device)?;
+        let module = shader!("textures/mipmap.wgsl", imports: ["common/fullscreen.wgsl"]).module(gpu)?;
         let layout = device.create_bind_group_layout(&wgpu::BindGroupLayoutDescriptor {
             label: Some("mip level above"),
             entries: &[texture_entry(0, FILTERABLE), sampler_entry(1)],

@@ -221,7 +221,7 @@ impl ShadowedRenderer {
             "shadows/scene.wgsl",
             imports: ["lighting/lights.wgsl", "textures/surface.wgsl", "shadows/shadow.wgsl"]
         )
-        .module(&gpu.device)?;
+        .module(gpu)?;
         let buffers = [Some(TexturedVertex::LAYOUT), Some(ModelInstance::LAYOUT)];
         let pipeline =
             |fragment| mesh_pipeline(&gpu.device, layout, &module, ("vs_main", fragment), &buffers, HDR_FORMAT.into());

@@ -96,7 +96,7 @@ impl Lines {
         layout: &wgpu::PipelineLayout,
         format: wgpu::TextureFormat,
     ) -> Result<wgpu::RenderPipeline, ShaderError> {
-        let module = shader!("shadows/lines.wgsl").module(&gpu.device)?;
+        let module = shader!("shadows/lines.wgsl").module(gpu)?;
         gpu.catch_validation(|| {
             gpu.device.create_render_pipeline(&wgpu::RenderPipelineDescriptor {
                 label: Some("lines"),

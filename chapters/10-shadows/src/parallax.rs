@@ -157,7 +157,7 @@ impl Parallax {
     // ANCHOR_END: planes
 
     fn pipeline(gpu: &Gpu, layout: &wgpu::PipelineLayout) -> Result<wgpu::RenderPipeline, ShaderError> {
-        let module = shader!("shadows/layers.wgsl", imports: ["lighting/lights.wgsl"]).module(&gpu.device)?;
+        let module = shader!("shadows/layers.wgsl", imports: ["lighting/lights.wgsl"]).module(gpu)?;
         let buffer = wgpu::VertexBufferLayout {
             array_stride: std::mem::size_of::<LayerVertex>() as u64,
             step_mode: wgpu::VertexStepMode::Vertex,

@@ -313,7 +313,7 @@ impl ShadowMap {
     }
 
     fn module(gpu: &Gpu) -> Result<wgpu::ShaderModule, ShaderError> {
-        shader!("shadows/caster.wgsl", imports: ["textures/surface.wgsl"]).module(&gpu.device)
+        shader!("shadows/caster.wgsl", imports: ["textures/surface.wgsl"]).module(gpu)
     }
 
     // ANCHOR: texture
@@ -513,7 +513,7 @@ impl MapView {
         layout: &wgpu::PipelineLayout,
         format: wgpu::TextureFormat,
     ) -> Result<wgpu::RenderPipeline, ShaderError> {
-        let module = shader!("shadows/show_depth.wgsl", imports: ["common/fullscreen.wgsl"]).module(&gpu.device)?;
+        let module = shader!("shadows/show_depth.wgsl", imports: ["common/fullscreen.wgsl"]).module(gpu)?;
         gpu.catch_validation(|| {
             common::fullscreen::pipeline(
                 &gpu.device,

@@ -217,7 +217,7 @@ impl Sky {
             "voronoi-water/sky.wgsl",
             imports: ["common/fullscreen.wgsl", "voronoi-water/atmosphere.wgsl"]
         )
-        .module(&gpu.device)?;
+        .module(gpu)?;
         // Under everything: neither tests nor writes depth.
         let depth = wgpu::DepthStencilState {
             depth_write_enabled: Some(false),

@@ -145,7 +145,7 @@ impl IslandRenderer {
             "voronoi-water/islands.wgsl",
             imports: ["lighting/lights.wgsl", "voronoi-water/atmosphere.wgsl"]
         )
-        .module(&gpu.device)?;
+        .module(gpu)?;
         let buffers = [
             Some(wgpu::VertexBufferLayout {
                 array_stride: std::mem::size_of::<IslandVertex>() as u64,

@@ -232,7 +232,7 @@ impl SeaRenderer {
                 "voronoi-water/atmosphere.wgsl"
             ]
         )
-        .module(device)?;
+        .module(gpu)?;
         let lit = || mesh_pipeline(device, layout, &module, ("vs_sea", "fs_sea"), &[], HDR_FORMAT.into());
         let wire = || {
             device.create_render_pipeline(&wgpu::RenderPipelineDescriptor {

@@ -215,8 +215,8 @@ impl Voronoi {
         flood_layout: &wgpu::PipelineLayout,
     ) -> Result<[wgpu::RenderPipeline; 4], ShaderError> {
         let device = &gpu.device;
-        let cones = shader!("voronoi-water/cones.wgsl").module(device)?;
-        let flood = shader!("voronoi-water/jump_flood.wgsl", imports: ["common/fullscreen.wgsl"]).module(device)?;
+        let cones = shader!("voronoi-water/cones.wgsl").module(gpu)?;
+        let flood = shader!("voronoi-water/jump_flood.wgsl", imports: ["common/fullscreen.wgsl"]).module(gpu)?;
         let id_target = Some(wgpu::ColorTargetState::from(ID_FORMAT));
         let pipeline = |label, layout, module, (vertex, fragment), topology, depth: bool| {
             device.create_render_pipeline(&wgpu::RenderPipelineDescriptor {

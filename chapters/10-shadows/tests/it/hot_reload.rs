@@ -1,6 +1,6 @@
 //! A broken edit of the shadow pass's shader, while the chapter runs: the
-//! diagnostic comes back and the last good pipelines keep drawing. (Its own
-//! test binary: it points the shader root at a temporary copy.)
+//! diagnostic comes back and the last good pipelines keep drawing. (The shader root
+//! belongs to the test's own device.)
 
 use common::headless::{OFFSCREEN_FORMAT, capture};
 use common::{Chapter, Gpu, Target, shader};
@@ -9,11 +9,11 @@ use shadows::ShadowsChapter;
 #[test]
 fn a_broken_caster_shader_keeps_the_last_good_shadow_pass() {
     let root = shader::scratch_copy("shadows-hot-reload").unwrap();
-    shader::read_from(Some(root.clone()));
     let file = root.join("shadows/caster.wgsl");
     let original = std::fs::read_to_string(&file).unwrap();
 
     let gpu = Gpu::headless(ShadowsChapter::gpu_needs()).unwrap();
+    gpu.read_shaders_from(Some(root.clone()));
     let target = Target { format: OFFSCREEN_FORMAT, width: 160, height: 90 };
     let mut chapter = ShadowsChapter::new(&gpu, target).unwrap();
     let good = capture(&gpu, &mut chapter, target, 5.7, 0).unwrap();
@@ -30,6 +30,5 @@ fn a_broken_caster_shader_keeps_the_last_good_shadow_pass() {
     std::fs::write(&file, original).unwrap();
     chapter.reload_shaders(&gpu).unwrap();
     assert_eq!(capture(&gpu, &mut chapter, target, 5.7, 0).unwrap(), good);
-    shader::read_from(None);
     let _ = std::fs::remove_dir_all(&root);
 }

@@ -1,6 +1,6 @@
 //! Hot reload, end to end without a window: a broken shader edit reports
 //! naga's diagnostic and the last good pipeline keeps drawing; the fix
-//! reloads. (Its own test binary: it points the shader root at a temp dir.)
+//! reloads. (The shader root belongs to the test's own device.)
 
 use common::headless::{OFFSCREEN_FORMAT, capture};
 use common::{Chapter, Gpu, GpuNeeds, Target, shader};
@@ -13,9 +13,9 @@ fn a_broken_edit_keeps_the_last_good_pipeline() {
     std::fs::create_dir_all(file.parent().unwrap()).unwrap();
     let original = std::fs::read_to_string(format!("{}/triangle/triangle.wgsl", shader::SHADER_DIR)).unwrap();
     std::fs::write(&file, &original).unwrap();
-    shader::read_from(Some(root.clone()));
 
     let gpu = Gpu::headless(GpuNeeds::default()).unwrap();
+    gpu.read_shaders_from(Some(root.clone()));
     let target = Target { format: OFFSCREEN_FORMAT, width: 96, height: 64 };
     let mut chapter = Triangle::new(&gpu, target).unwrap();
     let good = capture(&gpu, &mut chapter, target, 0.0, 0).unwrap();
@@ -37,7 +37,5 @@ fn a_broken_edit_keeps_the_last_good_pipeline() {
     chapter.reload_shaders(&gpu).unwrap();
     let edited = capture(&gpu, &mut chapter, target, 0.0, 0).unwrap();
     assert_eq!(edited.get_pixel(48, 32).0, [255, 255, 255, 255]);
-
-    shader::read_from(None);
     std::fs::remove_dir_all(root).unwrap();
 }

@@ -1,7 +1,7 @@
 //! Broken edits of the sea's and the diagram's shaders while the chapter
 //! runs: the diagnostic comes back and the last good pipelines keep
-//! drawing; the fix reloads. (Its own test binary: it points the shader
-//! root at a temporary copy.)
+//! drawing; the fix reloads. (The shader root belongs to the test's own
+//! device.)
 
 use common::headless::{OFFSCREEN_FORMAT, capture};
 use common::{Chapter, Gpu, Target, shader};
@@ -10,9 +10,9 @@ use voronoi_water::VoronoiWaterChapter;
 #[test]
 fn broken_sea_and_cone_shaders_keep_the_last_good_pipelines() {
     let root = shader::scratch_copy("voronoi-water-hot-reload").unwrap();
-    shader::read_from(Some(root.clone()));
 
     let gpu = Gpu::headless(VoronoiWaterChapter::gpu_needs()).unwrap();
+    gpu.read_shaders_from(Some(root.clone()));
     let target = Target { format: OFFSCREEN_FORMAT, width: 160, height: 90 };
     let mut chapter = VoronoiWaterChapter::new(&gpu, target).unwrap();
     let good = capture(&gpu, &mut chapter, target, 20.0, 0).unwrap();
@@ -34,6 +34,5 @@ fn broken_sea_and_cone_shaders_keep_the_last_good_pipelines() {
         chapter.reload_shaders(&gpu).unwrap();
     }
     assert_eq!(capture(&gpu, &mut chapter, target, 20.0, 0).unwrap(), good);
-    shader::read_from(None);
     let _ = std::fs::remove_dir_all(&root);
 }

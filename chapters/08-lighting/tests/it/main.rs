@@ -1,0 +1,8 @@
+//! Chapter 08's integration tests, one binary: the bloom chain, light extremes, and the three shading models.
+//!
+//! One test binary per crate: each links wgpu, naga, egui and winit, so
+//! every extra file here would be another link of all of them.
+
+mod bloom;
+mod extremes;
+mod shading;

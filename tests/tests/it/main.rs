@@ -1,0 +1,8 @@
+//! Workspace-level tests that need more than one chapter's pieces, one binary: clip distances, hot reload, light culling. (The snapshot comparison is its own harness, `tests/snapshots.rs`.)
+//!
+//! One test binary per crate: each links wgpu, naga, egui and winit, so
+//! every extra file here would be another link of all of them.
+
+mod clipping;
+mod hot_reload;
+mod light_culling;
