@@ -1071,6 +1071,12 @@ fn lights_per_pixel(
     light_count: usize,
     culling: bool,
 ) -> Option<f64> {
+    // Copying a depth texture out is optional on downlevel backends (GL):
+    // without it the figure is "n/a" rather than a wgpu validation panic.
+    let copies = wgpu::DownlevelFlags::DEPTH_TEXTURE_AND_BUFFER_COPIES;
+    if !gpu.adapter.get_downlevel_capabilities().flags.contains(copies) {
+        return None;
+    }
     let depths = common::headless::read_floats(gpu, &hdr.depth_texture).ok()?;
     let (width, height) = (hdr.depth_texture.width(), hdr.depth_texture.height());
     let (near, far) = (camera.near, camera.far);
