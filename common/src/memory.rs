@@ -59,8 +59,19 @@ pub fn gpu_bytes(device: &wgpu::Device) -> Option<u64> {
 /// The process's resident memory now (not its peak), where the system says.
 #[cfg(not(target_arch = "wasm32"))]
 pub fn process_bytes() -> Option<u64> {
+    status_bytes("VmRSS:")
+}
+
+/// The most memory this process has held at once so far, in bytes (its
+/// peak resident set, `VmHWM`), where the system says; `None` elsewhere.
+pub fn peak_process_bytes() -> Option<u64> {
+    status_bytes("VmHWM:")
+}
+
+/// A size in `/proc/self/status` (Linux), in bytes.
+fn status_bytes(field: &str) -> Option<u64> {
     let status = std::fs::read_to_string("/proc/self/status").ok()?;
-    let line = status.lines().find(|l| l.starts_with("VmRSS:"))?;
+    let line = status.lines().find(|l| l.starts_with(field))?;
     let kib: u64 = line.split_whitespace().nth(1)?.parse().ok()?;
     Some(kib * 1024)
 }

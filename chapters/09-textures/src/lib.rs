@@ -603,7 +603,7 @@ impl Chapter for TexturesChapter {
             objects: loaded.objects,
             scale,
             load_ms: Some(load_ms),
-            peak_memory: common::timing::peak_memory(),
+            peak_memory: common::memory::peak_process_bytes(),
         };
         Ok(())
     }
