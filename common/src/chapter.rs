@@ -47,6 +47,26 @@ impl View {
     }
 }
 
+/// How far a picture may be from its reference and still pass, by NVIDIA's
+/// FLIP metric (the snapshot tests compute it): a mean over the image and a
+/// share of visibly wrong pixels.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Tolerance {
+    /// Largest allowed mean FLIP error over the image (0 = identical, 1 = opposite).
+    pub mean: f32,
+    /// Largest allowed fraction of pixels whose FLIP error exceeds
+    /// [`Tolerance::OUTLIER_ERROR`]: catches a small object gone missing,
+    /// which barely moves the mean.
+    pub outliers: f32,
+}
+
+impl Tolerance {
+    /// FLIP error above which a pixel counts as visibly wrong.
+    pub const OUTLIER_ERROR: f32 = 0.3;
+    /// Allows rasteriser and driver differences, not missing geometry.
+    pub const DEFAULT: Self = Self { mean: 0.01, outliers: 0.001 };
+}
+
 /// The colour target a chapter draws into: the window's surface or an
 /// offscreen texture. Pipelines are built for `format`.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -247,6 +267,14 @@ pub trait Chapter: Sized + 'static {
     const VIEWS: &'static [View];
     /// Scene time at which snapshots and `--screenshot` are taken by default.
     const SNAPSHOT_TIME: f32 = 1.0;
+    /// How far the chapter's still picture in a browser (SwiftShader's
+    /// WebGPU) may be from the same picture rendered natively (lavapipe):
+    /// same shaders, two rasterisers, so edges and texture filtering differ
+    /// by a level here and there. Measured per chapter by the browser test.
+    const BROWSER_TOLERANCE: Tolerance = Tolerance::DEFAULT;
+    /// Whether [`Chapter::prepare`] cuts work into steps: the browser test
+    /// then expects to see the page's progress between them.
+    const PREPARES_IN_STEPS: bool = false;
     /// Frames `--bench` measures per view unless `--frames` says otherwise:
     /// fewer for chapters whose frames take a second on a software rasteriser.
     const BENCH_FRAMES: u32 = 100;

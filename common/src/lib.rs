@@ -27,7 +27,7 @@ pub mod web;
 mod window;
 
 pub use camera::{Camera, FlyController};
-pub use chapter::{Chapter, ChapterFlag, FlagValues, Frame, Target, View, ViewKind, show_view};
+pub use chapter::{Chapter, ChapterFlag, FlagValues, Frame, Target, Tolerance, View, ViewKind, show_view};
 pub use cli::run;
 pub use gpu::{Gpu, GpuNeeds, NoAdapter};
 pub use input::Input;

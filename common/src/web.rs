@@ -175,6 +175,16 @@ pub fn canvas() -> anyhow::Result<web_sys::HtmlCanvasElement> {
     Ok(canvas)
 }
 
+/// The chapter the page runs: its body's `data-chapter` (every chapter's
+/// page loads the same program, the book's `live`).
+pub fn page_chapter() -> String {
+    web_sys::window()
+        .and_then(|w| w.document())
+        .and_then(|d| d.body())
+        .and_then(|body| body.dataset().get("chapter"))
+        .unwrap_or_default()
+}
+
 /// Sets `data-KEY` on the page's body: `status` (starting, picture, error),
 /// `probe` (the live runner's state line), `error`, `notice`.
 pub fn set_state(key: &str, value: &str) {

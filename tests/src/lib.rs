@@ -1,5 +1,6 @@
-//! The snapshot registry: every chapter, every view, rendered offscreen at a
-//! fixed size and time and compared with `tests/snapshots/<chapter>/<view>.png`.
+//! The snapshot test: every view of every chapter (from `course`'s
+//! records), rendered offscreen at a fixed size and time and compared with
+//! `tests/snapshots/<chapter>/<view>.png`.
 //!
 //! `cargo test` checks them, and checks that views are pure (a live chapter
 //! that has been through every other view draws each view exactly as a
@@ -7,15 +8,15 @@
 //! crate's binary with `--bless`) writes references.
 
 pub mod bench_tables;
-pub mod diagrams;
 pub mod snapshot;
 
 use std::path::{Path, PathBuf};
 use std::sync::{Arc, Mutex};
 
 use common::glam::Vec3;
-use common::headless::{OFFSCREEN_FORMAT, Offscreen, draw_frame, read_texture};
-use common::{Camera, Chapter, Gpu, GpuNeeds, PassTimer, Target, View, ViewKind, anyhow, image, show_view};
+use common::headless::OFFSCREEN_FORMAT;
+use common::{Camera, Gpu, GpuNeeds, Target, ViewKind, anyhow, image};
+pub use course::{AnyChapter, Record, chapters, find};
 
 use snapshot::{Comparison, Tolerance};
 
@@ -24,52 +25,9 @@ use snapshot::{Comparison, Tolerance};
 pub const WIDTH: u32 = 800;
 pub const HEIGHT: u32 = 450;
 
-/// Every chapter, in book order. A new chapter adds one line here (and one
-/// dependency in Cargo.toml); a test fails if a chapter crate is missing.
-pub fn chapters() -> Vec<Entry> {
-    vec![
-        entry::<triangle::Triangle>(),
-        entry::<camera::CameraChapter>(),
-        entry::<terrain::TerrainChapter>(),
-        entry::<fog::FogChapter>(),
-        entry::<instancing::InstancingChapter>(),
-        entry::<skybox::SkyboxChapter>(),
-        entry::<water::WaterChapter>(),
-        entry::<lighting::LightingChapter>(),
-        entry::<textures::TexturesChapter>(),
-        entry::<shadows::ShadowsChapter>(),
-        entry::<voronoi_water::VoronoiWaterChapter>(),
-    ]
-}
-
-/// One chapter as the snapshot tests see it.
-pub struct Entry {
-    pub name: &'static str,
-    pub views: &'static [View],
-    pub time: f32,
-    needs: GpuNeeds,
-    /// How far each view may drift from its reference (see [`Tolerance`]).
-    pub tolerance: fn(usize) -> Tolerance,
-    open: fn(&Gpu) -> anyhow::Result<Box<dyn Live>>,
-}
-
-fn entry<C: Chapter>() -> Entry {
-    Entry {
-        name: C::NAME,
-        views: C::VIEWS,
-        time: C::SNAPSHOT_TIME,
-        needs: C::gpu_needs(),
-        tolerance: |_| Tolerance::DEFAULT,
-        open: |gpu| Ok(Box::new(LiveChapter { chapter: C::new(gpu, target())?, views: C::VIEWS })),
-    }
-}
-
-fn target() -> Target {
+/// Snapshots are rendered into this target.
+pub fn target() -> Target {
     Target { format: OFFSCREEN_FORMAT, width: WIDTH, height: HEIGHT }
-}
-
-pub fn find(name: &str) -> Option<Entry> {
-    chapters().into_iter().find(|e| e.name == name)
 }
 
 /// `tests/snapshots`, where the references live.
@@ -122,60 +80,27 @@ pub fn lease(needs: GpuNeeds) -> anyhow::Result<Lease> {
     Ok(Lease { needs, gpu: Some(gpu) })
 }
 
-/// A chapter instance, whatever its type.
-trait Live {
-    /// As the overlay does: the view's settings, and a preset's camera.
-    fn show(&mut self, view: usize);
-    fn reset_camera(&mut self, view: usize);
-    fn camera(&mut self) -> Option<Camera>;
-    fn set_camera(&mut self, camera: Camera);
-    /// Renders `view` at `time`; returns the picture and the passes it drew.
-    fn render(&mut self, gpu: &Gpu, view: usize, time: f32) -> anyhow::Result<(image::RgbaImage, Vec<&'static str>)>;
-}
-
-struct LiveChapter<C: Chapter> {
-    chapter: C,
-    views: &'static [View],
-}
-
-impl<C: Chapter> Live for LiveChapter<C> {
-    fn show(&mut self, view: usize) {
-        show_view(&mut self.chapter, view);
-    }
-
-    fn reset_camera(&mut self, view: usize) {
-        self.chapter.reset_camera(view);
-    }
-
-    fn camera(&mut self) -> Option<Camera> {
-        self.chapter.camera_mut().copied()
-    }
-
-    fn set_camera(&mut self, camera: Camera) {
-        if let Some(c) = self.chapter.camera_mut() {
-            *c = camera;
-        }
-    }
-
-    fn render(&mut self, gpu: &Gpu, view: usize, time: f32) -> anyhow::Result<(image::RgbaImage, Vec<&'static str>)> {
-        debug_assert!(view < self.views.len());
-        let offscreen = Offscreen::new(&gpu.device, target());
-        let timer = PassTimer::off();
-        draw_frame(gpu, &mut self.chapter, &offscreen.view, time, view, &timer);
-        let mut passes = timer.take_labels();
-        passes.extend(timer.take_cpu().into_iter().map(|(label, _)| label));
-        Ok((read_texture(gpu, &offscreen.texture)?, passes))
-    }
-}
-
 /// The outcome for one view.
 pub struct ViewResult {
     pub view: &'static str,
     pub outcome: Result<Comparison, String>,
 }
 
-impl Entry {
-    pub fn gpu(&self) -> anyhow::Result<Lease> {
+/// What the snapshot test does with a chapter's record.
+pub trait Snapshots {
+    /// A device with the chapter's needs.
+    fn gpu(&self) -> anyhow::Result<Lease>;
+    /// Renders every view and compares it with its reference; also checks
+    /// the bench table. Returns each view's outcome and the table's problems.
+    fn check(&self) -> anyhow::Result<(Vec<ViewResult>, Vec<String>)>;
+    /// Rewrites every view's reference; returns the paths.
+    fn bless(&self) -> anyhow::Result<Vec<PathBuf>>;
+    /// [`Snapshots::check`], and that views are pure; returns every problem.
+    fn check_purity(&self) -> anyhow::Result<Vec<String>>;
+}
+
+impl Snapshots for Record {
+    fn gpu(&self) -> anyhow::Result<Lease> {
         lease(self.needs)
     }
 
@@ -184,18 +109,18 @@ impl Entry {
     /// (views are pure, and `check_purity` proves it), compares each with its
     /// reference, and checks the chapter's bench table against the passes
     /// each view drew.
-    pub fn check(&self) -> anyhow::Result<(Vec<ViewResult>, Vec<String>)> {
+    fn check(&self) -> anyhow::Result<(Vec<ViewResult>, Vec<String>)> {
         let gpu = self.gpu()?;
-        let mut chapter = (self.open)(&gpu)?;
+        let mut chapter = (self.open)(&gpu, target())?;
         let mut results = Vec::new();
         let mut passes = Vec::new();
         for (i, view) in self.views.iter().enumerate().filter(|(_, v)| v.snapshot) {
             chapter.show(i);
             chapter.reset_camera(i);
             let outcome =
-                chapter.render(&gpu, i, self.time).map_err(|e| format!("{e:#}")).and_then(|(image, drawn)| {
+                chapter.render(&gpu, i, self.snapshot_time).map_err(|e| format!("{e:#}")).and_then(|(image, drawn)| {
                     passes.push((view.name, drawn));
-                    self.compare(i, &image)
+                    compare(self, i, &image)
                 });
             results.push(ViewResult { view: view.name, outcome });
         }
@@ -204,22 +129,17 @@ impl Entry {
     }
     // ANCHOR_END: check
 
-    fn compare(&self, view: usize, image: &image::RgbaImage) -> Result<Comparison, String> {
-        let reference = reference_path(self.name, self.views[view].name);
-        snapshot::check(image, &reference, (self.tolerance)(view)).map_err(|e| e.to_string())
-    }
-
     /// Renders every view with a fresh instance, as `--screenshot` does, and
     /// writes it as the new reference. Returns the paths.
-    pub fn bless(&self) -> anyhow::Result<Vec<PathBuf>> {
+    fn bless(&self) -> anyhow::Result<Vec<PathBuf>> {
         let gpu = self.gpu()?;
         let mut written = Vec::new();
         for (i, view) in self.views.iter().enumerate().filter(|(_, v)| v.snapshot) {
             let path = reference_path(self.name, view.name);
             std::fs::create_dir_all(path.parent().expect("reference paths have a folder"))?;
-            let mut chapter = (self.open)(&gpu)?;
+            let mut chapter = (self.open)(&gpu, target())?;
             chapter.show(i);
-            chapter.render(&gpu, i, self.time)?.0.save(&path)?;
+            chapter.render(&gpu, i, self.snapshot_time)?.0.save(&path)?;
             for stale in ["actual", "diff"] {
                 let _ = std::fs::remove_file(snapshot::sibling(&path, stale));
             }
@@ -233,13 +153,17 @@ impl Entry {
     /// One live instance flies somewhere and passes through every view;
     /// then, for each view, it selects it and resets the camera as the
     /// overlay's button does, and must draw the same bytes as a fresh
-    /// instance showing that view. Modes must leave the camera alone, and
-    /// presets must set all of it. Each fresh picture is also compared with
+    /// instance showing that view. The reference is a fresh instance's
+    /// picture (`bless` makes one per view), so where the live picture has
+    /// the reference's very bytes that is shown without drawing again; only
+    /// where it differs (another driver, or a real difference) is a fresh
+    /// instance drawn to tell the two apart. Modes must leave the camera
+    /// alone, and presets must set all of it. Each picture is compared with
     /// the reference, and the bench table with the passes drawn. Returns
     /// every problem found.
-    pub fn check_purity(&self) -> anyhow::Result<Vec<String>> {
+    fn check_purity(&self) -> anyhow::Result<Vec<String>> {
         let gpu = self.gpu()?;
-        let mut live = (self.open)(&gpu)?;
+        let mut live = (self.open)(&gpu, target())?;
         let mut problems = Vec::new();
         let mut passes = Vec::new();
         if let Some(start) = live.camera() {
@@ -249,29 +173,35 @@ impl Entry {
             live.show(view);
         }
         for (i, view) in self.views.iter().enumerate() {
-            problems.extend(self.camera_rules(live.as_mut(), i));
+            problems.extend(camera_rules(self, live.as_mut(), i));
             if !view.snapshot {
                 continue;
             }
             live.show(i);
             live.reset_camera(i);
-            let (after_the_others, _) = live.render(&gpu, i, self.time)?;
-            let mut fresh = (self.open)(&gpu)?;
-            fresh.show(i);
-            let (fresh_picture, drawn) = fresh.render(&gpu, i, self.time)?;
+            let (after_the_others, drawn) = live.render(&gpu, i, self.snapshot_time)?;
             passes.push((view.name, drawn));
-            if after_the_others != fresh_picture {
-                let path = std::env::temp_dir().join(format!("{}-{}-after-other-views.png", self.name, view.name));
-                after_the_others.save(&path)?;
-                problems.push(format!(
-                    "{}/{}: after the other views and a camera reset, the picture differs from a fresh instance's \
-                     (a view that depends on history, or a render that is not deterministic); it is {}",
-                    self.name,
-                    view.name,
-                    path.display()
-                ));
-            }
-            if let Err(e) = self.compare(i, &fresh_picture) {
+            let reference = image::open(reference_path(self.name, view.name)).ok().map(|r| r.to_rgba8());
+            let picture = if reference.as_ref() == Some(&after_the_others) {
+                after_the_others
+            } else {
+                let mut fresh = (self.open)(&gpu, target())?;
+                fresh.show(i);
+                let (fresh_picture, _) = fresh.render(&gpu, i, self.snapshot_time)?;
+                if after_the_others != fresh_picture {
+                    let path = std::env::temp_dir().join(format!("{}-{}-after-other-views.png", self.name, view.name));
+                    after_the_others.save(&path)?;
+                    problems.push(format!(
+                        "{}/{}: after the other views and a camera reset, the picture differs from a fresh \
+                         instance's (a view that depends on history, or a render that is not deterministic); it is {}",
+                        self.name,
+                        view.name,
+                        path.display()
+                    ));
+                }
+                fresh_picture
+            };
+            if let Err(e) = compare(self, i, &picture) {
                 problems.push(format!("{}/{}: {e}", self.name, view.name));
             }
         }
@@ -279,33 +209,39 @@ impl Entry {
         Ok(problems)
     }
     // ANCHOR_END: purity
+}
 
-    /// A mode never moves the camera; a preset puts it in the same place
-    /// wherever it was.
-    fn camera_rules(&self, live: &mut dyn Live, view: usize) -> Option<String> {
-        let start = live.camera()?;
-        let (name, kind) = (self.views[view].name, self.views[view].kind);
-        let moved = elsewhere(&start);
-        live.set_camera(moved);
-        live.show(view);
-        let after = live.camera()?;
-        match kind {
-            ViewKind::Mode if after != moved => {
-                Some(format!("{}/{name} is a mode but moved the camera from {moved:?} to {after:?}", self.name))
-            }
-            ViewKind::Preset => {
-                live.set_camera(elsewhere(&moved));
-                live.show(view);
-                let again = live.camera()?;
-                (again != after).then(|| {
-                    format!(
-                        "{}/{name} is a preset but left part of the camera as it was: {after:?} vs {again:?}",
-                        self.name
-                    )
-                })
-            }
-            ViewKind::Mode => None,
+/// Compares a view's picture with its reference.
+fn compare(record: &Record, view: usize, image: &image::RgbaImage) -> Result<Comparison, String> {
+    let reference = reference_path(record.name, record.views[view].name);
+    snapshot::check(image, &reference, Tolerance::DEFAULT).map_err(|e| e.to_string())
+}
+
+/// A mode never moves the camera; a preset puts it in the same place
+/// wherever it was.
+fn camera_rules(record: &Record, live: &mut dyn AnyChapter, view: usize) -> Option<String> {
+    let start = live.camera()?;
+    let (name, kind) = (record.views[view].name, record.views[view].kind);
+    let moved = elsewhere(&start);
+    live.set_camera(moved);
+    live.show(view);
+    let after = live.camera()?;
+    match kind {
+        ViewKind::Mode if after != moved => {
+            Some(format!("{}/{name} is a mode but moved the camera from {moved:?} to {after:?}", record.name))
         }
+        ViewKind::Preset => {
+            live.set_camera(elsewhere(&moved));
+            live.show(view);
+            let again = live.camera()?;
+            (again != after).then(|| {
+                format!(
+                    "{}/{name} is a preset but left part of the camera as it was: {after:?} vs {again:?}",
+                    record.name
+                )
+            })
+        }
+        ViewKind::Mode => None,
     }
 }
 

@@ -10,7 +10,7 @@ use std::sync::Mutex;
 use std::sync::atomic::{AtomicUsize, Ordering};
 use std::time::Instant;
 
-use snapshots::Entry;
+use snapshots::{Record as Entry, Snapshots as _};
 
 fn main() -> ExitCode {
     common::gpu::quiet_driver_warnings();

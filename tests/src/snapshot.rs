@@ -6,23 +6,7 @@ use std::path::{Path, PathBuf};
 
 use common::image;
 
-/// How different a picture may be from its reference and still pass.
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub struct Tolerance {
-    /// Largest allowed mean FLIP error over the image (0 = identical, 1 = opposite).
-    pub mean: f32,
-    /// Largest allowed fraction of pixels whose FLIP error exceeds
-    /// [`Tolerance::OUTLIER_ERROR`]: catches a small object gone missing,
-    /// which barely moves the mean.
-    pub outliers: f32,
-}
-
-impl Tolerance {
-    /// FLIP error above which a pixel counts as visibly wrong.
-    pub const OUTLIER_ERROR: f32 = 0.3;
-    /// Allows rasteriser and driver differences, not missing geometry.
-    pub const DEFAULT: Self = Self { mean: 0.01, outliers: 0.001 };
-}
+pub use common::chapter::Tolerance;
 
 /// The FLIP figures of one comparison.
 #[derive(Clone, Copy, Debug, PartialEq)]

@@ -9,6 +9,7 @@ use std::collections::BTreeSet;
 use std::path::Path;
 
 use libtest_mimic::{Arguments, Failed, Trial};
+use snapshots::Snapshots as _;
 
 fn main() {
     common::gpu::quiet_driver_warnings();

@@ -20,7 +20,7 @@ pub fn build(check_snapshots: bool) -> anyhow::Result<()> {
     copy_figures(&root().join("tests/snapshots"), &book.join("src/figures"))?;
     // Diagrams are drawn by code from the chapters' own functions, fresh each build.
     let diagrams = book.join("src/diagrams");
-    cargo(&["run", "--quiet", "-p", "snapshots", "--bin", "diagrams", "--", &diagrams.display().to_string()])?;
+    cargo(&["run", "--quiet", "-p", "diagrams", "--", &diagrams.display().to_string()])?;
     let problems = check_includes(&book.join("src"))?;
     if !problems.is_empty() {
         bail!("broken listings in the book:\n  {}", problems.join("\n  "));

@@ -1,6 +1,7 @@
-//! The browser build: every chapter compiled to WebAssembly, bound to
-//! JavaScript by `wasm-bindgen` (as a library, the same version the
-//! chapters link), each with a page of its own under the book's `live/`;
+//! The browser build: one WebAssembly program with every chapter in it
+//! (`course`'s `live`), bound to JavaScript by `wasm-bindgen` (as a
+//! library, the same version the chapters link), and a page per chapter
+//! under the book's `live/`;
 //! a static server on 127.0.0.1 for reading it (WebGPU needs a secure
 //! context, and localhost is one); and headless Chromium to test it.
 
@@ -35,40 +36,58 @@ fn ensure_wasm_target() -> anyhow::Result<()> {
     Ok(())
 }
 
-/// Compiles every chapter for the browser and writes `live/<chapter>/`
-/// under `out`: the page, its script and its wasm.
+/// Compiles the book's one browser program (`course`'s `live`: every
+/// chapter) and writes `live/` under `out`: the program and its script
+/// once, and a page per chapter, `live/<chapter>/index.html`, that loads
+/// them and names its chapter.
 pub fn build(out: &Path) -> anyhow::Result<()> {
     ensure_wasm_target()?;
     let chapters = chapter_names()?;
-    let mut args = vec!["build", "--quiet", "--target", WASM_TARGET, "--profile", PROFILE];
-    for chapter in &chapters {
-        args.extend(["-p", chapter.as_str()]);
-    }
-    cargo(&args)?;
+    cargo(&[
+        "build",
+        "--quiet",
+        "--target",
+        WASM_TARGET,
+        "--profile",
+        PROFILE,
+        "-p",
+        "course",
+        "--bin",
+        PROGRAM,
+        "--features",
+        "live",
+    ])?;
     let live = out.join("live");
+    if live.exists() {
+        std::fs::remove_dir_all(&live)?;
+    }
+    std::fs::create_dir_all(&live)?;
+    let wasm = target_dir().join(WASM_TARGET).join(PROFILE).join(format!("{PROGRAM}.wasm"));
+    wasm_bindgen_cli_support::Bindgen::new()
+        .input_path(&wasm)
+        .out_name(PROGRAM)
+        .web(true)
+        .map_err(|e| anyhow::anyhow!("{e:#}"))?
+        .typescript(false)
+        .remove_name_section(true)
+        .remove_producers_section(true)
+        .generate(&live)
+        .map_err(|e| anyhow::anyhow!("wasm-bindgen on {}: {e:#}", wasm.display()))?;
     for chapter in &chapters {
         let dir = live.join(chapter);
         std::fs::create_dir_all(&dir)?;
-        let wasm = wasm_path(chapter);
-        wasm_bindgen_cli_support::Bindgen::new()
-            .input_path(&wasm)
-            .out_name(chapter)
-            .web(true)
-            .map_err(|e| anyhow::anyhow!("{e:#}"))?
-            .typescript(false)
-            .remove_name_section(true)
-            .remove_producers_section(true)
-            .generate(&dir)
-            .map_err(|e| anyhow::anyhow!("wasm-bindgen on {}: {e:#}", wasm.display()))?;
         std::fs::write(dir.join("index.html"), page(chapter))?;
     }
-    println!("browser build: {} chapters in {}", chapters.len(), live.display());
+    println!("browser build: {} chapters' pages and one program in {}", chapters.len(), live.display());
     Ok(())
 }
 
-/// Where cargo leaves a chapter's WebAssembly.
-fn wasm_path(chapter: &str) -> PathBuf {
-    target_dir().join(WASM_TARGET).join(PROFILE).join(format!("{chapter}.wasm"))
+/// The browser program's name: `live/live.js` and `live/live_bg.wasm`.
+const PROGRAM: &str = "live";
+
+/// The program every page loads, as served.
+pub fn program_wasm(html: &Path) -> PathBuf {
+    html.join("live").join(format!("{PROGRAM}_bg.wasm"))
 }
 
 /// A chapter's page. Opened on its own it starts at once; inside the book's
@@ -97,11 +116,11 @@ const PAGE: &str = r#"<!doctype html>
            background: #262a33; color: inherit; cursor: pointer; }
 </style>
 </head>
-<body>
+<body data-chapter="{chapter}">
 <canvas id="chapter" tabindex="0"></canvas>
 <div id="message">loading {chapter}…</div>
 <script type="module">
-  import init from "./{chapter}.js";
+  import init from "../live.js";
   const message = document.getElementById("message");
   // The chapter reports through data-status: starting, running, picture or error.
   new MutationObserver(() => {
@@ -112,7 +131,7 @@ const PAGE: &str = r#"<!doctype html>
     message.className = "";
     message.textContent = "starting {chapter}…";
     try {
-      await init({ module_or_path: "./{chapter}_bg.wasm" });
+      await init({ module_or_path: "../live_bg.wasm" });
       document.getElementById("chapter").focus();
     } catch (error) {
       // A panic has already put its own message in the page.
@@ -184,7 +203,9 @@ fn respond(dir: &Path, request: tiny_http::Request) -> std::io::Result<()> {
         _ => "application/octet-stream",
     };
     let header = tiny_http::Header::from_bytes("Content-Type", content_type).expect("a valid header");
-    request.respond(tiny_http::Response::from_data(bytes).with_header(header))
+    // As GitHub Pages serves: a page opened next finds the program cached.
+    let cache = tiny_http::Header::from_bytes("Cache-Control", "max-age=600").expect("a valid header");
+    request.respond(tiny_http::Response::from_data(bytes).with_header(header).with_header(cache))
 }
 
 /// `cargo xtask serve [PORT]`: the built book on http://127.0.0.1:PORT/.
@@ -224,7 +245,7 @@ pub fn sizes(path: &Path) -> anyhow::Result<(u64, u64)> {
     Ok((bytes.len() as u64, compressed.len() as u64))
 }
 
-/// The browser test (`tests/src/bin/browser.rs`) on the built book, served
+/// The browser test (the `browser` package) on the built book, served
 /// on a free port of 127.0.0.1 for as long as it runs.
 pub fn browser_test(chapters: &[String]) -> anyhow::Result<()> {
     let chromium = ensure_chromium()?;
@@ -232,7 +253,7 @@ pub fn browser_test(chapters: &[String]) -> anyhow::Result<()> {
     ensure!(html.join("live").is_dir(), "{} has no live chapters: run `cargo xtask book` first", html.display());
     let port = serve_in_background(&html, 0)?;
     let url = format!("http://127.0.0.1:{port}");
-    let mut args = vec!["run", "--quiet", "-p", "snapshots", "--bin", "browser", "--", url.as_str()];
+    let mut args = vec!["run", "--quiet", "-p", "browser", "--", url.as_str()];
     args.extend(chapters.iter().map(String::as_str));
     run_browser_bin(&args, &chromium)
 }
@@ -267,10 +288,7 @@ pub fn bench(tabulate_only: bool) -> anyhow::Result<()> {
     let rows_path = rows_file.display().to_string();
     // `--tabulate`: write the page again from the last run's browser figures.
     if !tabulate_only {
-        run_browser_bin(
-            &["run", "--quiet", "-p", "snapshots", "--bin", "browser", "--", &url, "--bench", &rows_path],
-            &chromium,
-        )?;
+        run_browser_bin(&["run", "--quiet", "-p", "browser", "--", &url, "--bench", &rows_path], &chromium)?;
     }
     let rows = std::fs::read_to_string(&rows_file)?;
     let mut build = vec!["build", "--quiet", "--release"];
@@ -280,8 +298,8 @@ pub fn bench(tabulate_only: bool) -> anyhow::Result<()> {
     cargo(&build)?;
 
     let mut table = String::from(
-        "| chapter | wasm | gzip | page to first frame | longest task | frame in Chromium | native frame | WebGL2 |\n\
-         |---|---:|---:|---:|---:|---:|---:|---|\n",
+        "| chapter | page to first frame | longest task | frame in Chromium | native frame | WebGL2 |\n\
+         |---|---:|---:|---:|---:|---|\n",
     );
     let mut adapter = String::new();
     for row in rows.lines() {
@@ -290,14 +308,10 @@ pub fn bench(tabulate_only: bool) -> anyhow::Result<()> {
             bail!("unexpected bench row: {row}");
         };
         adapter = browser_adapter.to_string();
-        let (raw, gzip) = sizes(&html.join("live").join(chapter).join(format!("{chapter}_bg.wasm")))?;
         let native = native_frame_ms(chapter, surface)?;
         let webgl2 = webgl2_cell(webgl2);
-        let mb = |bytes: u64| format!("{:.2} MB", bytes as f64 / 1e6);
         table.push_str(&format!(
-            "| {chapter} | {} | {} | {first_ms} ms | {longest_task_ms} ms | {frame_ms} ms | {native} | {webgl2} |\n",
-            mb(raw),
-            mb(gzip)
+            "| {chapter} | {first_ms} ms | {longest_task_ms} ms | {frame_ms} ms | {native} | {webgl2} |\n"
         ));
     }
     let adapter = adapter.trim();
@@ -308,12 +322,16 @@ pub fn bench(tabulate_only: bool) -> anyhow::Result<()> {
                 .find_map(|l| l.strip_prefix("model name").map(|m| m.trim_start_matches([' ', '\t', ':']).to_string()))
         })
         .unwrap_or_else(|| "unknown CPU".into());
+    let (raw, gzip) = sizes(&program_wasm(&html))?;
+    let (raw, gzip) = (raw as f64 / 1e6, gzip as f64 / 1e6);
     let page = format!(
         "Measured by `cargo xtask bench web` on {cpu} ({} threads), no GPU: the browser is headless Chromium \
-         with WebGPU on SwiftShader (wgpu names it `{adapter}`), the native build runs on lavapipe. Sizes are of the wasm \
-         as served (`opt-level = \"z\"`, fat LTO, one codegen unit, `panic = \"abort\"`, WebAssembly SIMD, no debug \
-         info or symbol names), gzip \
-         at level 9. \"Page to first frame\" is `performance.now()` at the live runner's first frame; \"longest \
+         with WebGPU on SwiftShader (wgpu names it `{adapter}`), the native build runs on lavapipe. Every page loads the book's one program, \
+         {raw:.2} MB of WebAssembly, {gzip:.2} MB gzipped (as served: `opt-level = \"z\"`, fat LTO, one codegen unit, `panic = \"abort\"`, WebAssembly SIMD, no debug \
+         info or symbol names; gzip at level 9). The chapters were opened in book order in one browser, \
+         as a reader goes through the book: the first page downloads and compiles the program, the later \
+         ones find it in the browser's cache (the test server says it may be kept ten minutes, as GitHub \
+         Pages does). \"Page to first frame\" is `performance.now()` at the live runner's first frame; \"longest \
          task\" the longest the page's thread was busy at a stretch before it (by the browser's Long Tasks API, \
          which reports tasks over 50 ms; 0 when there was none): for that long the page neither painted nor \
          answered input. Frame \

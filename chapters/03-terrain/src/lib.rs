@@ -564,6 +564,7 @@ fn terrain_shader() -> ShaderFile {
 
 impl Chapter for TerrainChapter {
     const NAME: &'static str = env!("CARGO_PKG_NAME");
+    const PREPARES_IN_STEPS: bool = true;
     const TITLE: &'static str = "03 · Terrain from noise";
     const VIEWS: &'static [View] = VIEWS;
     const KEYS: &'static [(&'static str, &'static str)] = FlyController::KEYS;

@@ -131,6 +131,7 @@ pub struct FogChapter {
 
 impl Chapter for FogChapter {
     const NAME: &'static str = env!("CARGO_PKG_NAME");
+    const PREPARES_IN_STEPS: bool = true;
     const TITLE: &'static str = "04 · Fog";
     const VIEWS: &'static [View] = VIEWS;
     const KEYS: &'static [(&'static str, &'static str)] = FlyController::KEYS;

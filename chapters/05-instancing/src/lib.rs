@@ -519,6 +519,7 @@ pub struct InstancingChapter {
 
 impl Chapter for InstancingChapter {
     const NAME: &'static str = env!("CARGO_PKG_NAME");
+    const PREPARES_IN_STEPS: bool = true;
     const TITLE: &'static str = "05 · Instancing";
     const VIEWS: &'static [View] = VIEWS;
     const KEYS: &'static [(&'static str, &'static str)] = FlyController::KEYS;

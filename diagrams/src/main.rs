@@ -13,7 +13,7 @@ fn main() -> ExitCode {
         eprintln!("error: cannot create {}: {error}", dir.display());
         return ExitCode::FAILURE;
     }
-    for (name, svg) in snapshots::diagrams::all() {
+    for (name, svg) in diagrams::all() {
         let path = dir.join(name);
         if let Err(error) = std::fs::write(&path, svg) {
             eprintln!("error: cannot write {}: {error}", path.display());

@@ -25,11 +25,12 @@ use std::sync::{Arc, Mutex};
 use std::time::{Duration, Instant};
 
 use anyhow::{Context as _, bail, ensure};
+use common::Tolerance;
 use common::{anyhow, image};
 use headless_chrome::protocol::cdp::Target::CreateTarget;
 use headless_chrome::protocol::cdp::{Input, Page, Runtime};
 use headless_chrome::{Browser, LaunchOptions, Tab};
-use snapshots::snapshot::{self, Comparison, Tolerance};
+use snapshots::snapshot::{self, Comparison};
 
 const WIDTH: u32 = snapshots::WIDTH;
 const HEIGHT: u32 = snapshots::HEIGHT;
@@ -51,27 +52,6 @@ const WEBGPU_FLAGS: &[&str] = &[
 ];
 const QUIET_FLAGS: &[&str] =
     &["--disable-background-networking", "--disable-component-update", "--disable-sync", "--no-first-run"];
-
-// ANCHOR: tolerance
-/// How far each chapter's still picture in Chromium (SwiftShader's WebGPU)
-/// may be from its native snapshot (lavapipe), by FLIP. Same shaders, two
-/// rasterisers: edges, mipmap and anisotropic filtering differ by a level
-/// here and there. Each is set about 1.5 times above the mean measured
-/// here (in the comment), so a missing object still fails.
-fn browser_tolerance(chapter: &str) -> Tolerance {
-    let mean = match chapter {
-        "skybox" => 0.016,              // measured 0.0107
-        "water" => 0.018,               // 0.0123
-        "lighting" => 0.013,            // 0.0086
-        "textures" => 0.04,             // 0.0258: the textures' mip levels differ most
-        "shadows" => 0.028,             // 0.0187
-        "voronoi-water" => 0.042,       // 0.0282: foam lines are one pixel wide
-        _ => return Tolerance::DEFAULT, // 01-05: at most 0.0062
-    };
-    // Outliers measured at most 0.1% (textures); 0.2% allowed.
-    Tolerance { mean, outliers: 0.002 }
-}
-// ANCHOR_END: tolerance
 
 fn main() -> ExitCode {
     let mut args = std::env::args().skip(1);
@@ -98,8 +78,8 @@ fn main() -> ExitCode {
             name => names.push(name.to_string()),
         }
     }
-    let chosen: Vec<snapshots::Entry> =
-        snapshots::chapters().into_iter().filter(|e| names.is_empty() || names.iter().any(|n| n == e.name)).collect();
+    let chosen: Vec<course::Record> =
+        course::chapters().into_iter().filter(|e| names.is_empty() || names.iter().any(|n| n == e.name)).collect();
     let result = match bench {
         Some(out) => bench_all(&url, &chosen, &out),
         None => test_all(&url, &chosen),
@@ -137,10 +117,6 @@ fn launch(flags: &[&str]) -> anyhow::Result<Browser> {
     browser.set_default_timeout(STEP);
     Ok(browser)
 }
-
-/// The chapters that build chapter 03's terrain before their first frame,
-/// in steps (`Chapter::prepare`).
-const PREPARING: &[&str] = &["terrain", "fog", "instancing", "skybox", "water"];
 
 /// What must render on WebGL2, as (chapter, view): the book says these
 /// chapters run there.
@@ -394,13 +370,13 @@ fn page_url(base: &str, chapter: &str, query: &str) -> String {
     format!("{}/live/{chapter}/index.html{query}", base.trim_end_matches('/'))
 }
 
-fn test_all(base: &str, chapters: &[snapshots::Entry]) -> anyhow::Result<()> {
+fn test_all(base: &str, chapters: &[course::Record]) -> anyhow::Result<()> {
     let started = Instant::now();
     let browser = launch(WEBGPU_FLAGS)?;
     let failures = Mutex::new(Vec::new());
     // Two pages at once: each builds its scene on its own page's thread
     // while SwiftShader draws the other's. The heaviest chapters first.
-    let order: Vec<&snapshots::Entry> = chapters.iter().rev().collect();
+    let order: Vec<&course::Record> = chapters.iter().rev().collect();
     let next = std::sync::atomic::AtomicUsize::new(0);
     std::thread::scope(|scope| {
         for _ in 0..2 {
@@ -433,10 +409,10 @@ fn test_all(base: &str, chapters: &[snapshots::Entry]) -> anyhow::Result<()> {
 }
 
 // ANCHOR: chapter
-fn test_chapter(browser: &Browser, base: &str, entry: &snapshots::Entry) -> anyhow::Result<Comparison> {
+fn test_chapter(browser: &Browser, base: &str, entry: &course::Record) -> anyhow::Result<Comparison> {
     // The still picture, through the --screenshot path, against the snapshot.
     let view = entry.views.iter().find(|v| v.snapshot).context("no snapshot view")?.name;
-    let query = format!("?view={view}&time={}&size={WIDTH}x{HEIGHT}", entry.time);
+    let query = format!("?view={view}&time={}&size={WIDTH}x{HEIGHT}", entry.snapshot_time);
     let page = ChapterPage::open(browser, &page_url(base, entry.name, &query))?;
     let progress = page.wait_status("picture")?;
     // Chapters that build the terrain do it in steps, between which the
@@ -445,7 +421,7 @@ fn test_chapter(browser: &Browser, base: &str, entry: &snapshots::Entry) -> anyh
     // by `bench web`, not here: with two pages at once, a full run saw
     // single tasks of seconds, most likely waits on Chromium's one GPU
     // process while it drew the other page.)
-    if PREPARING.contains(&entry.name) {
+    if entry.prepares_in_steps {
         ensure!(
             progress.iter().any(|&p| p > 0.0 && p < 1.0),
             "no progress was seen while the terrain was prepared (seen: {progress:?}): the page froze"
@@ -456,7 +432,7 @@ fn test_chapter(browser: &Browser, base: &str, entry: &snapshots::Entry) -> anyh
     let reference = snapshots::reference_path(entry.name, view);
     let expected = image::open(&reference).with_context(|| format!("no reference {}", reference.display()))?;
     let (comparison, diff) = snapshot::compare(&expected.to_rgba8(), &picture);
-    let tolerance = browser_tolerance(entry.name);
+    let tolerance = entry.browser_tolerance;
     if !comparison.passes(tolerance) {
         let out = std::env::temp_dir().join("browser-test");
         std::fs::create_dir_all(&out)?;
@@ -558,7 +534,7 @@ fn test_pages(browser: &Browser, base: &str) -> anyhow::Result<()> {
     // the same, the depth buffer read back by chapter 02 included.
     let mut on_webgl2 = Vec::new();
     for (chapter, view) in WEBGL2_VIEWS {
-        let entry = snapshots::chapters().into_iter().find(|e| e.name == chapter).context("no such chapter")?;
+        let entry = course::chapters().into_iter().find(|e| e.name == chapter).context("no such chapter")?;
         let comparison = webgl2_picture(browser, base, &entry, view).with_context(|| format!("{chapter} on WebGL2"))?;
         ensure!(comparison.passes(Tolerance::DEFAULT), "{chapter}/{view} on WebGL2 against its snapshot: {comparison}");
         on_webgl2.push(format!("{chapter}/{view} FLIP mean {:.4}", comparison.mean));
@@ -644,7 +620,7 @@ fn look(base: &str, target: &str) -> anyhow::Result<()> {
 /// the live frame time (with its canvas size, for the native comparison),
 /// and whether the default view renders on WebGL2 (with its FLIP mean
 /// against the snapshot, or the error). Tab-separated, one line each.
-fn bench_all(base: &str, chapters: &[snapshots::Entry], out: &Path) -> anyhow::Result<()> {
+fn bench_all(base: &str, chapters: &[course::Record], out: &Path) -> anyhow::Result<()> {
     let browser = launch(WEBGPU_FLAGS)?;
     let mut rows = Vec::new();
     for entry in chapters {
@@ -700,7 +676,7 @@ fn longest_task_ms(page: &ChapterPage) -> anyhow::Result<f64> {
 
 /// Whether the chapter's first view renders on WebGL2: "FLIP 0.0123"
 /// against the native snapshot, or "fails: <the page's error>".
-fn webgl2(browser: &Browser, base: &str, entry: &snapshots::Entry) -> String {
+fn webgl2(browser: &Browser, base: &str, entry: &course::Record) -> String {
     let view = entry.views.iter().find(|v| v.snapshot).map_or("default", |v| v.name);
     match webgl2_picture(browser, base, entry, view) {
         Ok(comparison) => format!("FLIP {:.4}", comparison.mean),
@@ -713,8 +689,8 @@ fn webgl2(browser: &Browser, base: &str, entry: &snapshots::Entry) -> String {
 
 /// A view of the chapter drawn on WebGL2 (`backend=webgl2`), compared with
 /// its native snapshot.
-fn webgl2_picture(browser: &Browser, base: &str, entry: &snapshots::Entry, view: &str) -> anyhow::Result<Comparison> {
-    let query = format!("?view={view}&time={}&size={WIDTH}x{HEIGHT}&backend=webgl2", entry.time);
+fn webgl2_picture(browser: &Browser, base: &str, entry: &course::Record, view: &str) -> anyhow::Result<Comparison> {
+    let query = format!("?view={view}&time={}&size={WIDTH}x{HEIGHT}&backend=webgl2", entry.snapshot_time);
     let page = ChapterPage::open(browser, &page_url(base, entry.name, &query))?;
     page.wait_status("picture")?;
     let picture = page.canvas()?;
