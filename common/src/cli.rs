@@ -20,7 +20,7 @@ use crate::{Gpu, NoAdapter, Stats};
 pub fn run<C: Chapter>() -> ExitCode {
     // In a browser the page's URL is the command line.
     #[cfg(target_arch = "wasm32")]
-    return crate::web::run::<C>();
+    return crate::browser::run::<C>();
     #[cfg(not(target_arch = "wasm32"))]
     run_native::<C>()
 }

@@ -68,15 +68,15 @@ pub fn quiet_driver_warnings() {
     }
 }
 
-/// The instance a window asks for its device. In a browser WebGPU comes
-/// first, and WebGL2 where the browser has no working WebGPU adapter (or
-/// the page asked for `?backend=webgl2`); `Instance::new` alone would pick
-/// WebGPU whenever `navigator.gpu` exists, even with no adapter behind it.
+/// The instance a window asks for its device, with the backends `desc`
+/// allows (in a browser the caller puts the page's choice there: both,
+/// or only one with `?backend=`). In a browser WebGPU comes first, and
+/// WebGL2 where the browser has no working WebGPU adapter; `Instance::new`
+/// alone would pick WebGPU whenever `navigator.gpu` exists, even with no
+/// adapter behind it.
 pub async fn window_instance(desc: wgpu::InstanceDescriptor) -> wgpu::Instance {
     #[cfg(target_arch = "wasm32")]
     {
-        let mut desc = desc;
-        desc.backends = crate::web::backends();
         wgpu::util::new_instance_with_webgpu_detection(desc).await
     }
     #[cfg(not(target_arch = "wasm32"))]

@@ -53,6 +53,10 @@ pub fn read_bytes(gpu: &Gpu, texture: &wgpu::Texture, bytes_per_texel: u32) -> a
 }
 
 /// [`read_bytes`] for one mip level (`level` 0 is the full-size picture).
+///
+/// GPUs copy textures to buffers in rows padded to 256 bytes
+/// (`COPY_BYTES_PER_ROW_ALIGNMENT`), so a 37-pixel-wide RGBA8 image arrives
+/// as rows of 256 bytes, of which 148 are pixels. The padding is cut here.
 pub fn read_level_bytes(
     gpu: &Gpu,
     texture: &wgpu::Texture,
@@ -141,53 +145,18 @@ fn small_float(bits: u32, mantissa: u32) -> f32 {
 }
 
 /// Copies an RGBA8 or BGRA8 texture to the CPU as an RGBA image.
-///
-/// GPUs copy textures to buffers in rows padded to 256 bytes
-/// (`COPY_BYTES_PER_ROW_ALIGNMENT`), so a 37-pixel-wide image arrives as
-/// rows of 256 bytes, of which 148 are pixels. The padding is cut here.
 pub fn read_texture(gpu: &Gpu, texture: &wgpu::Texture) -> anyhow::Result<image::RgbaImage> {
     use wgpu::TextureFormat as F;
-    let (width, height) = (texture.width(), texture.height());
     let bgra = match texture.format() {
         F::Rgba8Unorm | F::Rgba8UnormSrgb => false,
         F::Bgra8Unorm | F::Bgra8UnormSrgb => true,
         other => bail!("cannot read back {other:?} textures"),
     };
-    let row_bytes = 4 * width;
-    let padded_row_bytes = row_bytes.next_multiple_of(wgpu::COPY_BYTES_PER_ROW_ALIGNMENT);
-    let buffer = gpu.device.create_buffer(&wgpu::BufferDescriptor {
-        label: Some("readback"),
-        size: u64::from(padded_row_bytes) * u64::from(height),
-        usage: wgpu::BufferUsages::COPY_DST | wgpu::BufferUsages::MAP_READ,
-        mapped_at_creation: false,
-    });
-    let mut encoder = gpu.device.create_command_encoder(&Default::default());
-    encoder.copy_texture_to_buffer(
-        texture.as_image_copy(),
-        wgpu::TexelCopyBufferInfo {
-            buffer: &buffer,
-            layout: wgpu::TexelCopyBufferLayout {
-                offset: 0,
-                bytes_per_row: Some(padded_row_bytes),
-                rows_per_image: Some(height),
-            },
-        },
-        texture.size(),
-    );
-    gpu.queue.submit([encoder.finish()]);
-
-    let slice = buffer.slice(..);
-    slice.map_async(wgpu::MapMode::Read, |_| {});
-    gpu.device.poll(wgpu::PollType::wait_indefinitely()).context("waiting for the readback")?;
-    let padded = slice.get_mapped_range().context("mapping the readback buffer")?;
-    let mut pixels = Vec::with_capacity((row_bytes * height) as usize);
-    for row in padded.chunks_exact(padded_row_bytes as usize) {
-        pixels.extend_from_slice(&row[..row_bytes as usize]);
-    }
+    let mut pixels = read_bytes(gpu, texture, 4)?;
     if bgra {
         pixels.chunks_exact_mut(4).for_each(|p| p.swap(0, 2));
     }
-    image::RgbaImage::from_raw(width, height, pixels).context("readback size mismatch")
+    image::RgbaImage::from_raw(texture.width(), texture.height(), pixels).context("readback size mismatch")
 }
 // ANCHOR_END: readback
 

@@ -1,10 +1,16 @@
-//! The plumbing every chapter shares, and nothing any chapter teaches.
+//! The plumbing every chapter shares, and two lessons of chapter 02 that
+//! every later chapter builds on: the camera (`camera.rs`, which the
+//! [`Chapter`] trait itself names) and the unit primitives
+//! (`primitives.rs`). Page 02 teaches those two from here; nothing else in
+//! this crate is a technique the book teaches.
 //!
 //! A chapter implements [`Chapter`]; its `main` calls [`run`]. From there
 //! this crate opens a window with an egui overlay and hot-reloaded shaders,
 //! or renders headless for `--screenshot`, `--bench` and the snapshot tests.
 
 pub mod args;
+#[cfg(target_arch = "wasm32")]
+mod browser;
 pub mod camera;
 pub mod chapter;
 mod cli;
@@ -17,9 +23,12 @@ pub mod memory;
 pub mod mesh;
 mod overlay;
 pub mod parallel;
+pub mod pipeline;
 pub mod preparation;
 pub mod primitives;
+mod probe;
 pub mod shader;
+mod surface;
 pub mod texture;
 pub mod timing;
 #[cfg(target_arch = "wasm32")]

@@ -1,11 +1,24 @@
-//! The egui overlay drawn over every chapter in a window: frame times, the
-//! view selector, the chapter's own controls, shader errors and key help.
+//! The egui overlay drawn over every chapter in a window: egui's renderer
+//! and input, and the panel it shows (frame times, the view selector, the
+//! chapter's own controls, shader errors and key help).
 
 use std::collections::VecDeque;
 
 use winit::window::Window;
 
-use crate::Gpu;
+use crate::chapter::show_view;
+use crate::memory::MemoryUse;
+use crate::{Chapter, Gpu};
+
+/// Keys the window runner handles for every chapter (its `window_event`),
+/// as the key help lists them after the chapter's own.
+const RUNNER_KEYS: &[(&str, &str)] = &[
+    ("F1", "show or hide this help"),
+    ("F12", "save a screenshot (PNG) of the scene"),
+    ("P", "pause or resume scene time"),
+    ("Tab", "lock the pointer for mouse look (Esc unlocks)"),
+    ("Esc", "unlock the pointer, or quit"),
+];
 
 /// egui's input state, context and wgpu renderer for one window.
 pub struct Overlay {
@@ -131,5 +144,86 @@ impl FrameHistory {
             egui::FontId::monospace(10.0),
             egui::Color32::GRAY,
         );
+    }
+}
+
+/// The overlay's panel: what it shows and edits, borrowed for one frame.
+pub struct Panel<'a, C: Chapter> {
+    pub chapter: &'a mut C,
+    pub view: &'a mut usize,
+    pub time: &'a mut f32,
+    pub paused: &'a mut bool,
+    pub history: &'a FrameHistory,
+    pub shader_error: Option<&'a str>,
+    pub show_help: &'a mut bool,
+    pub status: &'a str,
+    pub adapter: String,
+    pub memory: MemoryUse,
+}
+
+impl<C: Chapter> Panel<'_, C> {
+    /// Draws the chapter's window (time, frame times, memory, view, camera,
+    /// the chapter's own controls, a shader error, the status line) and,
+    /// when asked for, the key help.
+    pub fn show(&mut self, ctx: &egui::Context) {
+        egui::Window::new(C::TITLE).default_pos([12.0, 12.0]).default_width(260.0).show(ctx, |ui| {
+            // Scene time is an input like any other: type or drag it.
+            ui.horizontal(|ui| {
+                ui.label("time");
+                ui.add(egui::DragValue::new(self.time).speed(0.05).suffix(" s").max_decimals(2));
+                ui.checkbox(self.paused, "paused (P)");
+            });
+            let ms = self.history.mean_ms();
+            ui.label(format!("{:.0} FPS  ·  {ms:.2} ms  ·  {}", 1000.0 / ms.max(1e-3), self.adapter));
+            self.history.graph(ui);
+            ui.small(format!("memory: {}", self.memory.describe()))
+                .on_hover_text("read twice a second; it should not grow while nothing changes");
+            let before = *self.view;
+            egui::ComboBox::from_label("view").selected_text(C::VIEWS[*self.view].name).show_ui(ui, |ui| {
+                for (i, view) in C::VIEWS.iter().enumerate() {
+                    ui.selectable_value(self.view, i, view.name).on_hover_text(view.about);
+                }
+            });
+            if *self.view != before {
+                show_view(self.chapter, *self.view);
+            }
+            ui.small(C::VIEWS[*self.view].about);
+            if let Some(c) = self.chapter.camera_mut() {
+                ui.horizontal(|ui| {
+                    ui.monospace(format!(
+                        "eye {:.1} {:.1} {:.1}  yaw {:.0}° pitch {:.0}°",
+                        c.position.x,
+                        c.position.y,
+                        c.position.z,
+                        c.yaw.to_degrees(),
+                        c.pitch.to_degrees()
+                    ));
+                });
+                if ui.button("reset camera").on_hover_text("back to where this view starts").clicked() {
+                    self.chapter.reset_camera(*self.view);
+                }
+            }
+            ui.separator();
+            self.chapter.ui(ui);
+            if let Some(error) = self.shader_error {
+                ui.separator();
+                ui.colored_label(
+                    egui::Color32::from_rgb(255, 110, 90),
+                    "Shader error — still drawing the last good version:",
+                );
+                ui.label(egui::RichText::new(error).monospace().size(11.0));
+            }
+            ui.separator();
+            ui.small(format!("F1 help · F12 screenshot · Esc quit\n{}", self.status));
+        });
+        egui::Window::new("Keys").open(self.show_help).default_pos([300.0, 12.0]).show(ctx, |ui| {
+            egui::Grid::new("keys").striped(true).show(ui, |ui| {
+                for (key, what) in C::KEYS.iter().chain(RUNNER_KEYS) {
+                    ui.monospace(*key);
+                    ui.label(*what);
+                    ui.end_row();
+                }
+            });
+        });
     }
 }

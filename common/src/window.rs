@@ -3,6 +3,10 @@
 //! same runner drives a chapter in a browser tab, where the window is a
 //! canvas, the device arrives asynchronously and there is no source tree to
 //! watch; the few differences are marked `target_arch = "wasm32"`.
+//!
+//! What the overlay's panel shows is `overlay.rs`'s, how the surface is set
+//! up `surface.rs`'s, and the line for tests `probe.rs`'s: this module is
+//! the event loop and the frame.
 
 use std::path::PathBuf;
 use std::sync::Arc;
@@ -20,18 +24,11 @@ use winit::window::{CursorGrabMode, Window, WindowId};
 use crate::args::{Args, check_size};
 use crate::chapter::show_view;
 use crate::memory::MemoryUse;
-use crate::overlay::{FrameHistory, Overlay};
+use crate::overlay::{FrameHistory, Overlay, Panel};
+use crate::probe::{self, Probe};
 use crate::shader;
+use crate::surface::surface_config;
 use crate::{Chapter, Frame, Gpu, Input, PassTimer, Target};
-
-/// Keys the runner handles for every chapter.
-const RUNNER_KEYS: &[(&str, &str)] = &[
-    ("F1", "show or hide this help"),
-    ("F12", "save a screenshot (PNG) of the scene"),
-    ("P", "pause or resume scene time"),
-    ("Tab", "lock the pointer for mouse look (Esc unlocks)"),
-    ("Esc", "unlock the pointer, or quit"),
-];
 
 /// Opens a window and runs chapter `C` until it is closed.
 #[cfg(not(target_arch = "wasm32"))]
@@ -117,11 +114,7 @@ struct Running<C: Chapter> {
     /// Frames drawn, and frames skipped because the window had no area.
     drawn: u64,
     skipped: u64,
-    /// For the probe: the most keys the chapter saw held at once, and how
-    /// far (in pixels) the mouse has turned the view in all.
-    held_seen: usize,
-    looked: f32,
-    probe: Option<PathBuf>,
+    probe: Probe,
     /// Whether the GPU has finished the last frame submitted (browser only).
     last_frame_done: Arc<AtomicBool>,
     /// What the overlay shows of memory, and when it was last read.
@@ -253,51 +246,6 @@ impl<C: Chapter> ApplicationHandler<Opened<C>> for App<C> {
     }
 }
 
-// ANCHOR: surface
-/// How a window's (or canvas's) surface is set up, as (configuration, the
-/// format chapters draw in, the overlay's format).
-pub(crate) fn surface_config(
-    gpu: &Gpu,
-    surface: &wgpu::Surface,
-    width: u32,
-    height: u32,
-) -> anyhow::Result<(wgpu::SurfaceConfiguration, wgpu::TextureFormat, wgpu::TextureFormat)> {
-    let caps = surface.get_capabilities(&gpu.adapter);
-    let first = caps
-        .formats
-        .first()
-        .copied()
-        .ok_or_else(|| anyhow!("{} cannot draw into this window (it offers no surface formats)", gpu.describe()))?;
-    // Chapters output linear colour and let an sRGB view encode it;
-    // WebGPU canvases are never sRGB, but can be viewed as sRGB.
-    let srgb = caps.formats.iter().copied().find(|f| f.is_srgb());
-    let views = gpu.adapter.get_downlevel_capabilities().flags.contains(wgpu::DownlevelFlags::SURFACE_VIEW_FORMATS);
-    let (format, scene_format, overlay_format) = match srgb {
-        // WebGL2 cannot view a surface in another format: the overlay
-        // draws into the sRGB surface as it is (egui handles both).
-        Some(srgb) if !views => (srgb, srgb, srgb),
-        Some(srgb) => (srgb, srgb, srgb.remove_srgb_suffix()),
-        None if views => (first, first.add_srgb_suffix(), first),
-        // Nothing encodes sRGB here: pictures come out too dark, but come out.
-        None => (first, first, first),
-    };
-    let config = wgpu::SurfaceConfiguration {
-        usage: wgpu::TextureUsages::RENDER_ATTACHMENT,
-        format,
-        width: width.max(1),
-        height: height.max(1),
-        // Fifo is always there and waits for vsync; lavapipe lists
-        // Immediate first, which would spin the CPU for nothing.
-        present_mode: wgpu::PresentMode::Fifo,
-        desired_maximum_frame_latency: 2,
-        alpha_mode: wgpu::CompositeAlphaMode::Auto,
-        color_space: Default::default(),
-        view_formats: [scene_format, overlay_format].into_iter().filter(|f| *f != format).collect(),
-    };
-    Ok((config, scene_format, overlay_format))
-}
-// ANCHOR_END: surface
-
 /// A window whose device is still being asked for.
 struct Opening {
     window: Arc<Window>,
@@ -320,6 +268,9 @@ impl Opening {
         let window = Arc::new(event_loop.create_window(attributes).context("cannot create a window")?);
         let instance =
             wgpu::InstanceDescriptor::new_with_display_handle_from_env(Box::new(event_loop.owned_display_handle()));
+        // In a browser the page's URL may narrow the backends (`?backend=`).
+        #[cfg(target_arch = "wasm32")]
+        let instance = wgpu::InstanceDescriptor { backends: crate::web::backends(), ..instance };
         Ok(Self { window, instance, args: args.clone() })
     }
 
@@ -389,9 +340,7 @@ impl Opening {
             status,
             drawn: 0,
             skipped: 0,
-            held_seen: 0,
-            looked: 0.0,
-            probe: args.probe.clone(),
+            probe: Probe::new(args.probe.clone()),
             last_frame_done: Arc::new(AtomicBool::new(true)),
             memory: MemoryUse::default(),
             memory_read: None,
@@ -550,8 +499,7 @@ impl<C: Chapter> Running<C> {
         }
         self.reload_shaders();
         self.chapter.update(&self.input, dt);
-        self.held_seen = self.held_seen.max(self.input.held_count());
-        self.looked += self.input.look.length();
+        self.probe.saw(&self.input);
         self.input.end_frame();
 
         let scene_view = frame
@@ -569,7 +517,7 @@ impl<C: Chapter> Running<C> {
         let size = [self.config.width, self.config.height];
         let extra = {
             let Self { overlay, window, gpu, .. } = self;
-            let mut ui_state = UiState {
+            let mut panel = Panel {
                 chapter: &mut self.chapter,
                 view: &mut self.view,
                 time: &mut self.time,
@@ -581,7 +529,7 @@ impl<C: Chapter> Running<C> {
                 adapter: gpu.adapter.get_info().name,
                 memory: self.memory,
             };
-            overlay.draw(gpu, &mut encoder, &overlay_view, size, window, |ctx| ui_state.show(ctx))
+            overlay.draw(gpu, &mut encoder, &overlay_view, size, window, |ctx| panel.show(ctx))
         };
         self.gpu.queue.submit(extra.into_iter().chain([encoder.finish()]));
         if cfg!(target_arch = "wasm32") {
@@ -595,116 +543,20 @@ impl<C: Chapter> Running<C> {
     }
     // ANCHOR_END: frame
 
-    /// For tests that drive the window from outside (`--probe PATH`): one
-    /// line with what they cannot see in pixels, written whole each frame.
+    /// Tells the probe how the frame went, when anyone reads it.
     fn write_probe(&mut self) {
-        if cfg!(not(target_arch = "wasm32")) && self.probe.is_none() {
+        if !self.probe.is_read() {
             return;
         }
-        let camera = match self.chapter.camera_mut() {
-            Some(c) => {
-                format!("{:.4} {:.4} {:.4} {:.5} {:.5}", c.position.x, c.position.y, c.position.z, c.yaw, c.pitch)
-            }
-            None => "none".into(),
+        let report = probe::Report {
+            drawn: self.drawn,
+            skipped: self.skipped,
+            surface: (self.config.width, self.config.height),
+            view: C::VIEWS[self.view].name,
+            typing: self.overlay.ctx.egui_wants_keyboard_input(),
+            memory: MemoryUse::now(&self.gpu.device),
+            camera: self.chapter.camera_mut().map(|camera| &*camera),
         };
-        let line = format!(
-            "drawn={} skipped={} surface={}x{} view={} typing={} held={} looked={:.0} {} camera={camera}\n",
-            self.drawn,
-            self.skipped,
-            self.config.width,
-            self.config.height,
-            C::VIEWS[self.view].name,
-            u8::from(self.overlay.ctx.egui_wants_keyboard_input()),
-            self.held_seen,
-            self.looked,
-            MemoryUse::now(&self.gpu.device).probe_fields(),
-        );
-        // In a browser the test reads the line from the page instead.
-        #[cfg(target_arch = "wasm32")]
-        crate::web::set_state("probe", line.trim_end());
-        let Some(path) = &self.probe else { return };
-        let partial = path.with_extension("partial");
-        if std::fs::write(&partial, line).and_then(|()| std::fs::rename(&partial, path)).is_err() {
-            eprintln!("cannot write the probe file {}", path.display());
-            self.probe = None;
-        }
-    }
-}
-
-/// What the overlay shows and edits, borrowed for one frame.
-struct UiState<'a, C: Chapter> {
-    chapter: &'a mut C,
-    view: &'a mut usize,
-    time: &'a mut f32,
-    paused: &'a mut bool,
-    history: &'a FrameHistory,
-    shader_error: Option<&'a str>,
-    show_help: &'a mut bool,
-    status: &'a str,
-    adapter: String,
-    memory: MemoryUse,
-}
-
-impl<C: Chapter> UiState<'_, C> {
-    fn show(&mut self, ctx: &egui::Context) {
-        egui::Window::new(C::TITLE).default_pos([12.0, 12.0]).default_width(260.0).show(ctx, |ui| {
-            // Scene time is an input like any other: type or drag it.
-            ui.horizontal(|ui| {
-                ui.label("time");
-                ui.add(egui::DragValue::new(self.time).speed(0.05).suffix(" s").max_decimals(2));
-                ui.checkbox(self.paused, "paused (P)");
-            });
-            let ms = self.history.mean_ms();
-            ui.label(format!("{:.0} FPS  ·  {ms:.2} ms  ·  {}", 1000.0 / ms.max(1e-3), self.adapter));
-            self.history.graph(ui);
-            ui.small(format!("memory: {}", self.memory.describe()))
-                .on_hover_text("read twice a second; it should not grow while nothing changes");
-            let before = *self.view;
-            egui::ComboBox::from_label("view").selected_text(C::VIEWS[*self.view].name).show_ui(ui, |ui| {
-                for (i, view) in C::VIEWS.iter().enumerate() {
-                    ui.selectable_value(self.view, i, view.name).on_hover_text(view.about);
-                }
-            });
-            if *self.view != before {
-                show_view(self.chapter, *self.view);
-            }
-            ui.small(C::VIEWS[*self.view].about);
-            if let Some(c) = self.chapter.camera_mut() {
-                ui.horizontal(|ui| {
-                    ui.monospace(format!(
-                        "eye {:.1} {:.1} {:.1}  yaw {:.0}° pitch {:.0}°",
-                        c.position.x,
-                        c.position.y,
-                        c.position.z,
-                        c.yaw.to_degrees(),
-                        c.pitch.to_degrees()
-                    ));
-                });
-                if ui.button("reset camera").on_hover_text("back to where this view starts").clicked() {
-                    self.chapter.reset_camera(*self.view);
-                }
-            }
-            ui.separator();
-            self.chapter.ui(ui);
-            if let Some(error) = self.shader_error {
-                ui.separator();
-                ui.colored_label(
-                    egui::Color32::from_rgb(255, 110, 90),
-                    "Shader error — still drawing the last good version:",
-                );
-                ui.label(egui::RichText::new(error).monospace().size(11.0));
-            }
-            ui.separator();
-            ui.small(format!("F1 help · F12 screenshot · Esc quit\n{}", self.status));
-        });
-        egui::Window::new("Keys").open(self.show_help).default_pos([300.0, 12.0]).show(ctx, |ui| {
-            egui::Grid::new("keys").striped(true).show(ui, |ui| {
-                for (key, what) in C::KEYS.iter().chain(RUNNER_KEYS) {
-                    ui.monospace(*key);
-                    ui.label(*what);
-                    ui.end_row();
-                }
-            });
-        });
+        self.probe.write(&report);
     }
 }

@@ -3,30 +3,86 @@
 //! time, browser tolerance, whether it prepares in steps). The snapshot
 //! test, the browser build and its test, the diagrams and xtask read
 //! chapters from here, so a fact about a chapter is written once, in the
-//! chapter. Adding a chapter adds one line to [`chapters`] and one
-//! dependency to this crate's `Cargo.toml`.
+//! chapter, or here for what only the course needs (its part of the
+//! book, the README's picture and line). Adding a chapter adds one line
+//! to [`chapters`] and one dependency to this crate's `Cargo.toml`; the
+//! README's chapter table and the book's summary are written from here
+//! (`cargo xtask book`), and a test fails when they are not.
 
 use std::process::ExitCode;
 
 use common::headless::{Offscreen, draw_frame, read_texture};
 use common::{Camera, Chapter, Gpu, GpuNeeds, PassTimer, Target, Tolerance, View, anyhow, image, show_view};
 
-/// Every chapter, in book order.
+/// Every chapter, in book order: its type, the part of the book it is in,
+/// the view the README shows, and what it teaches in a line (the README's
+/// chapter table and the book's summary are made from these).
 pub fn chapters() -> Vec<Record> {
     vec![
-        record::<triangle::Triangle>(),
-        record::<camera::CameraChapter>(),
-        record::<terrain::TerrainChapter>(),
-        record::<fog::FogChapter>(),
-        record::<instancing::InstancingChapter>(),
-        record::<skybox::SkyboxChapter>(),
-        record::<water::WaterChapter>(),
-        record::<lighting::LightingChapter>(),
-        record::<textures::TexturesChapter>(),
-        record::<shadows::ShadowsChapter>(),
-        record::<voronoi_water::VoronoiWaterChapter>(),
+        record::<triangle::Triangle>(
+            BASICS,
+            "default",
+            "buffers, WGSL, a render pipeline, per-vertex colour interpolation",
+        ),
+        record::<camera::CameraChapter>(
+            BASICS,
+            "default",
+            "model/view/projection, fly camera, primitives, depth buffer",
+        ),
+        record::<terrain::TerrainChapter>(
+            MARS,
+            "default",
+            "improved Perlin noise, fBm, chunked height-map mesh, seamless normals, frustum culling",
+        ),
+        record::<fog::FogChapter>(
+            MARS,
+            "default",
+            "exponential distance fog matched to the sky, far plane at the opaque distance, WGSL modules",
+        ),
+        record::<instancing::InstancingChapter>(
+            MARS,
+            "default",
+            "one instanced draw for up to a million rocks, against one draw per rock; the Mars plain so far",
+        ),
+        record::<skybox::SkyboxChapter>(
+            MARS,
+            "dusk",
+            "day and night cube maps, a turning sky whose sun is the light, fog that follows the sky",
+        ),
+        record::<water::WaterChapter>(
+            MARS,
+            "default",
+            "reflection and refraction pictures, clip distances, Fresnel, DuDv ripples, soft shores, sine waves: the Mars scene, complete",
+        ),
+        record::<lighting::LightingChapter>(
+            CITY,
+            "night",
+            "a city by day and night: Lambert, Phong and Blinn-Phong; flat, Gouraud and Phong shading; point and spot lights; 339 lights culled per cluster; HDR, bloom, ACES",
+        ),
+        record::<textures::TexturesChapter>(
+            CITY,
+            "night",
+            "the city textured: UVs and texel density, samplers and GPU mipmaps, sRGB, OBJ + MTL models (`--model PATH.obj` shows yours), tangents and normal maps",
+        ),
+        record::<shadows::ShadowsChapter>(
+            ENGINE,
+            "default",
+            "a side-scroller lit by the sun: a shadow map fitted to the view and snapped to texels, depth comparison, slope-scaled and normal-offset bias, hard, PCF, Poisson and PCSS filtering; swept AABB collision, fixed-step physics, parallax layers",
+        ),
+        record::<voronoi_water::VoronoiWaterChapter>(
+            OCEAN,
+            "default",
+            "a boat on an endless toon sea: Voronoi diagrams by cones with a depth test and by jump flooding, tiling, separable blur, Sobel edges; a grid that follows the boat in whole cells, a sea periodic in space and time, the boat riding the same waves on the CPU; gradient-texture sunsets, bloom and the boat's shadow from chapters 08 and 10",
+        ),
     ]
 }
+
+// The parts of the book, each after the seed project its chapters rebuild.
+const BASICS: &str = "The basics";
+const MARS: &str = "Prehistoric Mars";
+const CITY: &str = "The futuristic city";
+const ENGINE: &str = "The small engine";
+const OCEAN: &str = "The ocean";
 
 /// The chapter called `name` (its package name), if there is one.
 pub fn find(name: &str) -> Option<Record> {
@@ -40,6 +96,12 @@ pub struct Record {
     pub name: &'static str,
     /// The book's title for it.
     pub title: &'static str,
+    /// The part of the book it belongs to.
+    pub part: &'static str,
+    /// The view the README shows as its picture.
+    pub figure: &'static str,
+    /// What it teaches, in one line.
+    pub techniques: &'static str,
     pub views: &'static [View],
     /// The scene time of its snapshots and still pictures.
     pub snapshot_time: f32,
@@ -54,10 +116,13 @@ pub struct Record {
     pub open: fn(&Gpu, Target) -> anyhow::Result<Box<dyn AnyChapter>>,
 }
 
-fn record<C: Chapter>() -> Record {
+fn record<C: Chapter>(part: &'static str, figure: &'static str, techniques: &'static str) -> Record {
     Record {
         name: C::NAME,
         title: C::TITLE,
+        part,
+        figure,
+        techniques,
         views: C::VIEWS,
         snapshot_time: C::SNAPSHOT_TIME,
         browser_tolerance: C::BROWSER_TOLERANCE,
@@ -74,6 +139,39 @@ impl Record {
     pub fn first_snapshot_view(&self) -> usize {
         self.views.iter().position(|v| v.snapshot).unwrap_or(0)
     }
+}
+
+/// The book page of `record`: `NN-name.md`, NN from its title.
+pub fn page(record: &Record) -> String {
+    let number: String = record.title.chars().take_while(char::is_ascii_digit).collect();
+    format!("{number}-{}.md", record.name)
+}
+
+/// The README's chapter table, made from the records.
+pub fn readme_table(chapters: &[Record]) -> String {
+    let mut table = String::from("| | chapter | package | technique |\n|---|---|---|---|\n");
+    for c in chapters {
+        table.push_str(&format!(
+            "| <img src=\"tests/snapshots/{}/{}.png\" width=\"200\"> | {} | `{}` | {} |\n",
+            c.name, c.figure, c.title, c.name, c.techniques
+        ));
+    }
+    table
+}
+
+/// The chapters' part of the book's `SUMMARY.md`, made from the records:
+/// a heading per part, a line per chapter.
+pub fn summary_chapters(chapters: &[Record]) -> String {
+    let mut text = String::new();
+    let mut part = "";
+    for c in chapters {
+        if c.part != part {
+            part = c.part;
+            text.push_str(&format!("\n# {part}\n\n"));
+        }
+        text.push_str(&format!("- [{}]({})\n", c.title, page(c)));
+    }
+    text
 }
 
 /// A chapter instance, whatever its type, as the tests drive it.

@@ -30,6 +30,29 @@ pub fn target() -> Target {
     Target { format: OFFSCREEN_FORMAT, width: WIDTH, height: HEIGHT }
 }
 
+/// The README and the book's `SUMMARY.md` as the chapter records say they
+/// should read, as (path, text): the README's chapter table between its
+/// markers, and the summary's chapter list after its first pages.
+pub fn course_docs() -> anyhow::Result<Vec<(PathBuf, String)>> {
+    let root = Path::new(env!("CARGO_MANIFEST_DIR")).join("..");
+    let chapters = chapters();
+    let readme_path = root.join("README.md");
+    let readme = std::fs::read_to_string(&readme_path)?;
+    let (start, end) =
+        ("<!-- chapters: written from course::chapters() by `cargo xtask book` -->\n", "<!-- end of chapters -->");
+    let (Some(a), Some(b)) = (readme.find(start), readme.find(end)) else {
+        anyhow::bail!("README.md has lost its chapter table's markers: {start:?} and {end:?}");
+    };
+    let readme = format!("{}{start}{}{}", &readme[..a], course::readme_table(&chapters), &readme[b..]);
+    let summary_path = root.join("book/src/SUMMARY.md");
+    let summary = std::fs::read_to_string(&summary_path)?;
+    // The first pages (title, introduction) run up to the first part heading.
+    let head_end = summary.match_indices("\n# ").next().map_or(summary.len(), |(i, _)| i + 1);
+    let head = summary[..head_end].trim_end();
+    let summary = format!("{head}\n{}", course::summary_chapters(&chapters));
+    Ok(vec![(readme_path, readme), (summary_path, summary)])
+}
+
 /// `tests/snapshots`, where the references live.
 pub fn snapshot_dir() -> PathBuf {
     Path::new(env!("CARGO_MANIFEST_DIR")).join("snapshots")

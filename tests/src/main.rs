@@ -19,6 +19,7 @@ fn main() -> ExitCode {
     for arg in std::env::args().skip(1) {
         match arg.as_str() {
             "--bless" => bless = true,
+            "--docs" => return write_docs(),
             name => names.push(name.to_string()),
         }
     }
@@ -94,4 +95,25 @@ fn bless_all(chosen: &[Entry]) -> ExitCode {
         }
     }
     if failed { ExitCode::FAILURE } else { ExitCode::SUCCESS }
+}
+
+/// `--docs`: writes the README's chapter table and the book's summary from
+/// the chapter records (`cargo xtask book` runs it).
+fn write_docs() -> ExitCode {
+    let written = snapshots::course_docs().and_then(|docs| {
+        for (path, text) in docs {
+            if std::fs::read_to_string(&path).ok().as_deref() != Some(text.as_str()) {
+                std::fs::write(&path, text)?;
+                println!("wrote {}", path.display());
+            }
+        }
+        Ok(())
+    });
+    match written {
+        Ok(()) => ExitCode::SUCCESS,
+        Err(error) => {
+            eprintln!("error: {error:#}");
+            ExitCode::FAILURE
+        }
+    }
 }

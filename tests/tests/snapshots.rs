@@ -24,6 +24,7 @@ fn main() {
         .collect();
     trials.push(Trial::test("every_chapter_crate_is_registered", every_chapter_crate_is_registered));
     trials.push(Trial::test("no_stale_references", no_stale_references));
+    trials.push(Trial::test("readme_and_summary_follow_the_records", readme_and_summary_follow_the_records));
     libtest_mimic::run(&Arguments::from_args(), trials).exit();
 }
 
@@ -60,6 +61,24 @@ fn no_stale_references() -> Result<(), Failed> {
             if !entry.views.iter().any(|v| v.name == stem && v.snapshot) {
                 return Err(format!("{} is not a view of {chapter}", path.display()).into());
             }
+        }
+    }
+    Ok(())
+}
+
+/// The README's chapter table and the book's summary are written from the
+/// chapter records; a hand edit or a new chapter without `cargo xtask book`
+/// shows here.
+fn readme_and_summary_follow_the_records() -> Result<(), Failed> {
+    for (path, expected) in snapshots::course_docs().map_err(|e| format!("{e:#}"))? {
+        let actual = std::fs::read_to_string(&path).map_err(|e| e.to_string())?;
+        if actual != expected {
+            return Err(format!(
+                "{} does not list the chapters as course::chapters() does: run `cargo xtask book` (or `cargo run -p \
+                 snapshots -- --docs`) and look at the diff",
+                path.display()
+            )
+            .into());
         }
     }
     Ok(())

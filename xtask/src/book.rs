@@ -21,6 +21,8 @@ pub fn build(check_snapshots: bool) -> anyhow::Result<()> {
     // Diagrams are drawn by code from the chapters' own functions, fresh each build.
     let diagrams = book.join("src/diagrams");
     cargo(&["run", "--quiet", "-p", "diagrams", "--", &diagrams.display().to_string()])?;
+    // The README's chapter table and the summary, from the chapter records.
+    cargo(&["run", "--quiet", "-p", "snapshots", "--", "--docs"])?;
     let problems = check_includes(&book.join("src"))?;
     if !problems.is_empty() {
         bail!("broken listings in the book:\n  {}", problems.join("\n  "));

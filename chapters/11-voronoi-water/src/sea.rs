@@ -76,8 +76,14 @@ pub const TILE_METRES: f32 = 32.0;
 /// and its vertices sample the waves at new places every frame: the waves
 /// swim.
 pub fn grid_origin(boat: Vec2, snap: bool) -> Vec2 {
-    let half = (GRID_VERTICES / 2 - 1) as f32;
-    let cells = boat / CELL;
+    grid_origin_for(boat / CELL, GRID_VERTICES, snap)
+}
+
+/// [`grid_origin`] for a grid of `vertices` vertices a side and a boat
+/// `cells` cells from the world's origin (the book's diagram draws one of
+/// 8 vertices).
+pub fn grid_origin_for(cells: Vec2, vertices: u32, snap: bool) -> Vec2 {
+    let half = (vertices / 2 - 1) as f32;
     if snap { cells.floor() - half } else { cells - half }
 }
 // ANCHOR_END: grid

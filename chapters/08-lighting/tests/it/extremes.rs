@@ -17,7 +17,7 @@ fn draw(gpu: &Gpu, (width, height): (u32, u32), settings: Settings, case: &str) 
     let offscreen = Offscreen::new(&gpu.device, target);
     gpu.catch_validation(|| draw_frame(gpu, &mut chapter, &offscreen.view, 6.0, 1, &PassTimer::off()))
         .unwrap_or_else(|e| panic!("{case}: {e}"));
-    let bloom = read_floats(gpu, chapter.bloom.output().texture()).unwrap();
+    let bloom = read_floats(gpu, chapter.post.bloom().output().texture()).unwrap();
     assert!(bloom.iter().flatten().all(|v| v.is_finite()), "{case}: the bloom holds a NaN or an infinity");
 }
 

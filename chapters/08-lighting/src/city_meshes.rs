@@ -1,0 +1,190 @@
+//! The city's pieces on the GPU: one instanced draw per shape, each piece
+//! an instance with its model matrix, normal matrix and material; meshes
+//! smooth for Gouraud and Phong shading and faceted for flat shading; the
+//! materials as `city.wgsl` reads them, and its three pipelines.
+
+use common::chapter::mesh_pipeline;
+use common::glam::{Mat3, Vec3};
+use common::{Gpu, Mesh, MeshData, ShaderError, ShaderFile, Vertex, shader, wgpu};
+
+use crate::city::{City, Material, Piece, Shape};
+use crate::post::HDR_FORMAT;
+
+// ANCHOR: instance
+/// One piece as the GPU reads it (`Instance` in city.wgsl): its model
+/// matrix, the inverse transpose of its upper 3 × 3 for normals (one
+/// column per 16 bytes), and its material. 128 bytes.
+#[repr(C)]
+#[derive(Clone, Copy, Debug, bytemuck::Pod, bytemuck::Zeroable)]
+pub struct GpuInstance {
+    pub model: [[f32; 4]; 4],
+    pub normal: [[f32; 4]; 3],
+    pub material: u32,
+    pub _padding: [u32; 3],
+}
+
+impl GpuInstance {
+    pub fn of(piece: &Piece) -> Self {
+        let normal = Mat3::from_mat4(piece.model).inverse().transpose();
+        Self {
+            model: piece.model.to_cols_array_2d(),
+            normal: [
+                normal.x_axis.extend(0.0).into(),
+                normal.y_axis.extend(0.0).into(),
+                normal.z_axis.extend(0.0).into(),
+            ],
+            material: piece.material as u32,
+            _padding: [0; 3],
+        }
+    }
+
+    const ATTRIBUTES: [wgpu::VertexAttribute; 8] = [
+        wgpu::VertexAttribute { format: wgpu::VertexFormat::Float32x4, offset: 0, shader_location: 3 },
+        wgpu::VertexAttribute { format: wgpu::VertexFormat::Float32x4, offset: 16, shader_location: 4 },
+        wgpu::VertexAttribute { format: wgpu::VertexFormat::Float32x4, offset: 32, shader_location: 5 },
+        wgpu::VertexAttribute { format: wgpu::VertexFormat::Float32x4, offset: 48, shader_location: 6 },
+        wgpu::VertexAttribute { format: wgpu::VertexFormat::Float32x3, offset: 64, shader_location: 7 },
+        wgpu::VertexAttribute { format: wgpu::VertexFormat::Float32x3, offset: 80, shader_location: 8 },
+        wgpu::VertexAttribute { format: wgpu::VertexFormat::Float32x3, offset: 96, shader_location: 9 },
+        wgpu::VertexAttribute { format: wgpu::VertexFormat::Uint32, offset: 112, shader_location: 10 },
+    ];
+
+    pub const LAYOUT: wgpu::VertexBufferLayout<'static> = wgpu::VertexBufferLayout {
+        array_stride: std::mem::size_of::<GpuInstance>() as wgpu::BufferAddress,
+        step_mode: wgpu::VertexStepMode::Instance,
+        attributes: &Self::ATTRIBUTES,
+    };
+}
+// ANCHOR_END: instance
+
+// ANCHOR: faceted
+/// The same triangles, each with three vertices of its own carrying the
+/// face's normal: what flat shading needs, since a shared vertex can only
+/// have one normal.
+pub fn faceted(mesh: &MeshData) -> MeshData {
+    let mut flat = MeshData::default();
+    for triangle in mesh.indices.chunks_exact(3) {
+        let [a, b, c] = [0, 1, 2].map(|k| mesh.vertices[triangle[k] as usize]);
+        let [pa, pb, pc] = [a, b, c].map(|v| Vec3::from(v.position));
+        let normal = (pb - pa).cross(pc - pa).normalize_or_zero();
+        for v in [a, b, c] {
+            flat.indices.push(flat.vertices.len() as u32);
+            flat.vertices.push(Vertex { normal: normal.into(), ..v });
+        }
+    }
+    flat
+}
+// ANCHOR_END: faceted
+
+/// `Material` in city.wgsl: 32 bytes.
+#[repr(C)]
+#[derive(Clone, Copy, Debug, bytemuck::Pod, bytemuck::Zeroable)]
+pub struct GpuMaterial {
+    pub albedo: [f32; 3],
+    pub specular: f32,
+    pub emissive: [f32; 3],
+    pub shininess: f32,
+}
+
+/// The city's materials as they look at this time of day (lamps and
+/// windows glow only as night falls), with or without highlights.
+pub(crate) fn materials(night: f32, highlights: bool) -> Vec<GpuMaterial> {
+    Material::ALL
+        .iter()
+        .map(|m| {
+            let s = m.surface();
+            let glow = if s.at_night { night } else { 1.0 };
+            GpuMaterial {
+                albedo: s.albedo.into(),
+                specular: if highlights { s.specular } else { 0.0 },
+                emissive: (s.emissive * glow).into(),
+                shininess: s.shininess,
+            }
+        })
+        .collect()
+}
+
+fn city_shader() -> ShaderFile {
+    shader!("lighting/city.wgsl", imports: ["lighting/lights.wgsl"])
+}
+
+pub(crate) struct Pipelines {
+    pub(crate) flat: wgpu::RenderPipeline,
+    pub(crate) gouraud: wgpu::RenderPipeline,
+    pub(crate) phong: wgpu::RenderPipeline,
+}
+
+pub(crate) fn build_pipelines(gpu: &Gpu, layout: &wgpu::PipelineLayout) -> Result<Pipelines, ShaderError> {
+    let module = city_shader().module(gpu)?;
+    let buffers = [Some(Vertex::LAYOUT), Some(GpuInstance::LAYOUT)];
+    let mesh = |entries| mesh_pipeline(&gpu.device, layout, &module, entries, &buffers, HDR_FORMAT.into());
+    gpu.catch_validation(|| Pipelines {
+        flat: mesh(("vs_flat", "fs_flat")),
+        gouraud: mesh(("vs_gouraud", "fs_gouraud")),
+        phong: mesh(("vs_phong", "fs_phong")),
+    })
+    .map_err(ShaderError)
+}
+
+/// The city's meshes, smooth and faceted, and the instance buffer.
+pub(crate) struct CityMeshes {
+    smooth: Vec<Mesh>,
+    faceted: Vec<Mesh>,
+    instances: wgpu::Buffer,
+    /// Per shape, which instances it draws this frame.
+    ranges: Vec<std::ops::Range<u32>>,
+    /// The pieces that never move, grouped by shape, ready to copy.
+    still: Vec<Vec<GpuInstance>>,
+}
+
+impl CityMeshes {
+    pub(crate) fn new(device: &wgpu::Device, city: &City) -> Self {
+        let smooth = Shape::ALL.iter().map(|s| s.mesh().upload(device, &format!("{s:?}"))).collect();
+        let faceted = Shape::ALL.iter().map(|s| faceted(&s.mesh()).upload(device, &format!("{s:?} faceted"))).collect();
+        let still = Shape::ALL
+            .iter()
+            .map(|shape| city.pieces.iter().filter(|p| p.shape == *shape).map(GpuInstance::of).collect())
+            .collect();
+        let instances = device.create_buffer(&wgpu::BufferDescriptor {
+            label: Some("city instances"),
+            size: (city.pieces.len() as u64 + 1024) * std::mem::size_of::<GpuInstance>() as u64,
+            usage: wgpu::BufferUsages::VERTEX | wgpu::BufferUsages::COPY_DST,
+            mapped_at_creation: false,
+        });
+        Self { smooth, faceted, instances, ranges: Vec::new(), still }
+    }
+
+    /// Writes this frame's instances: the still pieces and the moving ones,
+    /// grouped by shape, so that each shape is one instanced draw.
+    pub(crate) fn write(&mut self, gpu: &Gpu, moving: &[Piece]) {
+        let mut all = Vec::new();
+        self.ranges.clear();
+        for (i, shape) in Shape::ALL.iter().enumerate() {
+            let start = all.len() as u32;
+            all.extend_from_slice(&self.still[i]);
+            all.extend(moving.iter().filter(|p| p.shape == *shape).map(GpuInstance::of));
+            self.ranges.push(start..all.len() as u32);
+        }
+        let bytes = (all.len() * std::mem::size_of::<GpuInstance>()) as u64;
+        if bytes > self.instances.size() {
+            self.instances = gpu.device.create_buffer(&wgpu::BufferDescriptor {
+                label: Some("city instances"),
+                size: bytes.next_power_of_two(),
+                usage: wgpu::BufferUsages::VERTEX | wgpu::BufferUsages::COPY_DST,
+                mapped_at_creation: false,
+            });
+        }
+        gpu.queue.write_buffer(&self.instances, 0, bytemuck::cast_slice(&all));
+    }
+
+    /// One instanced draw per shape.
+    pub(crate) fn draw(&self, pass: &mut wgpu::RenderPass<'_>, faceted: bool) {
+        pass.set_vertex_buffer(1, self.instances.slice(..));
+        let meshes = if faceted { &self.faceted } else { &self.smooth };
+        for (mesh, range) in meshes.iter().zip(&self.ranges) {
+            if !range.is_empty() {
+                mesh.draw(pass, range.clone());
+            }
+        }
+    }
+}

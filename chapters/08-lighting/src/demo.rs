@@ -1,0 +1,543 @@
+//! The chapter itself: the settings each view applies, the views, the
+//! cameras, the lights of a frame, and `impl Chapter`, which composes the
+//! city's meshes, the scene's lights, the sky and the post chain into a
+//! frame.
+
+use common::chapter::storage_entry;
+use common::glam::Vec3;
+use common::wgpu::util::DeviceExt as _;
+use common::{
+    Camera, Chapter, FlyController, Frame, Gpu, Input, ShaderError, Target, View, anyhow, egui, wgpu,
+    winit::keyboard::KeyCode,
+};
+
+use crate::bloom::BloomSettings;
+use crate::city::{City, Clocks, Traffic};
+use crate::city_meshes::{CityMeshes, Pipelines, build_pipelines, materials};
+use crate::city_sky::CitySky;
+use crate::clusters::{self, CLUSTERS, ClusterLists};
+use crate::lights::{self, Light, TimeOfDay, daylight};
+use crate::paths;
+use crate::post::{HdrTarget, PostChain, PostOutput, PostSettings};
+use crate::scene_lights::{Highlight, LoopOptions, MAX_LIGHTS, SceneLights};
+
+// ANCHOR: views
+pub const VIEWS: &[View] = &[
+    View::mode("day", "the city at noon, from above"),
+    View::mode("night", "the city at night: street lamps, lit buildings, headlights, bloom"),
+    View::preset("flat", "the glass sphere in the morning sun, flat shaded: one colour per face"),
+    View::preset("gouraud", "the same, lit per vertex and blended: the highlight smears over the facets"),
+    View::preset("phong", "the same, lit per fragment: a round, sharp highlight (Phong's mirror direction)"),
+    View::preset("blinn-phong", "the same with Blinn-Phong's half vector: a wider, softer highlight"),
+    View::mode("no-bloom", "the night city without bloom: lights are bright dots"),
+    View::mode("bloom-only", "the blurred bright light the bloom adds, alone"),
+    View::mode("light-tiles", "lights each fragment visits, as a heat map (black 0, blue few, red 24 or more)"),
+    View::preset("follow", "at night, behind a car, with its headlights on the road"),
+    View::bench("lights-1", "bench: the night city with 1 light, culled"),
+    View::bench("lights-16", "bench: 16 lights, culled per cluster"),
+    View::bench("lights-64", "bench: 64 lights, culled per cluster"),
+    View::bench("lights-256", "bench: 256 lights, culled per cluster"),
+    View::bench("lights-1024", "bench: 1024 lights, culled per cluster"),
+    View::bench("naive-16", "bench: 16 lights, every fragment visits every light"),
+    View::bench("naive-64", "bench: 64 lights, every fragment visits every light"),
+    View::bench("naive-256", "bench: 256 lights, every fragment visits every light"),
+    View::bench("naive-1024", "bench: 1024 lights, every fragment visits every light"),
+];
+// ANCHOR_END: views
+
+/// How surfaces are lit.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Shading {
+    /// Once per face: one normal and one colour per triangle.
+    Flat,
+    /// Once per vertex; colours interpolated.
+    Gouraud,
+    /// Once per fragment; normals interpolated.
+    Phong,
+}
+
+/// What reaches the screen.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Display {
+    Scene,
+    BloomOnly,
+    LightTiles,
+}
+
+/// How many lights shine.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum LightCount {
+    /// The city's own: lamps, buildings, cars and drones.
+    City,
+    /// The first n of the city's lights and then of extra beacons: the bench's counts.
+    First(u32),
+}
+
+/// Everything a view decides.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Settings {
+    pub time_of_day: TimeOfDay,
+    /// Seconds in a day when the time of day is `Auto`.
+    pub day_seconds: f32,
+    pub shading: Shading,
+    pub highlight: Highlight,
+    /// Highlights at all (off: diffuse light only).
+    pub highlights: bool,
+    /// Cluster lists (true) or every light for every fragment (false).
+    pub culling: bool,
+    pub lights: LightCount,
+    pub bloom_on: bool,
+    pub bloom: BloomSettings,
+    pub display: Display,
+    pub exposure: f32,
+}
+
+impl Settings {
+    /// The settings view `name` shows, whatever came before.
+    pub fn for_view(name: &str) -> Self {
+        let mut s = Self {
+            time_of_day: TimeOfDay::Night,
+            day_seconds: 120.0,
+            shading: Shading::Phong,
+            highlight: Highlight::BlinnPhong,
+            highlights: true,
+            culling: true,
+            lights: LightCount::City,
+            bloom_on: true,
+            bloom: BloomSettings::default(),
+            display: Display::Scene,
+            exposure: 1.0,
+        };
+        match name {
+            "day" => s.time_of_day = TimeOfDay::Noon,
+            "flat" | "gouraud" | "phong" | "blinn-phong" => {
+                // One light, the morning sun, so that shading is all there is to see.
+                s.time_of_day = TimeOfDay::Morning;
+                s.lights = LightCount::First(0);
+                s.shading = match name {
+                    "flat" => Shading::Flat,
+                    "gouraud" => Shading::Gouraud,
+                    _ => Shading::Phong,
+                };
+                s.highlight = if name == "blinn-phong" { Highlight::BlinnPhong } else { Highlight::Phong };
+            }
+            "no-bloom" => s.bloom_on = false,
+            "bloom-only" => s.display = Display::BloomOnly,
+            "light-tiles" => s.display = Display::LightTiles,
+            _ => {}
+        }
+        if let Some(count) = name.strip_prefix("lights-").and_then(|n| n.parse().ok()) {
+            s.lights = LightCount::First(count);
+        }
+        if let Some(count) = name.strip_prefix("naive-").and_then(|n| n.parse().ok()) {
+            s.lights = LightCount::First(count);
+            s.culling = false;
+        }
+        s
+    }
+}
+
+// ANCHOR: cameras
+/// High over the south-west corner, looking at the middle of the city.
+pub fn aerial_camera(aspect: f32) -> Camera {
+    Camera {
+        near: 0.5,
+        far: 900.0,
+        ..Camera::looking_at(Vec3::new(-190.0, 120.0, 230.0), Vec3::new(0.0, 10.0, 0.0), aspect)
+    }
+}
+
+/// Standing in the road along x = 0, at the southern edge, looking north.
+pub fn street_camera(aspect: f32) -> Camera {
+    Camera {
+        near: 0.3,
+        far: 900.0,
+        ..Camera::looking_at(Vec3::new(-3.0, 1.8, 185.0), Vec3::new(-3.0, 8.0, 0.0), aspect)
+    }
+}
+
+/// Close to the glass sphere, from the south-west, with the morning sun on it.
+pub fn sphere_camera(city: &City, aspect: f32) -> Camera {
+    let centre = city.sphere_building + Vec3::Y * 24.0;
+    Camera { near: 0.3, far: 900.0, ..Camera::looking_at(centre + Vec3::new(-18.0, 6.0, 34.0), centre, aspect) }
+}
+
+/// Behind and above a car, looking where it goes.
+pub fn follow_camera(car: &paths::Pose, aspect: f32) -> Camera {
+    let ahead = car.forward();
+    let eye = car.position - ahead * 12.0 + Vec3::Y * 4.5;
+    Camera { near: 0.3, far: 900.0, ..Camera::looking_at(eye, car.position + ahead * 12.0, aspect) }
+}
+// ANCHOR_END: cameras
+
+// ANCHOR: frame_lights
+/// The lights of this frame: the moving ones (cars, drones), then the
+/// still ones (street lamps and lit buildings, which come on as night falls,
+/// `night` from 0 by day to 1), then beacons, up to the view's count. A
+/// light that is off is not in the list at all: it would cost the loop
+/// without adding anything.
+pub fn frame_lights(city: &City, traffic: &Traffic, beacons: &[Light], count: LightCount, night: f32) -> Vec<Light> {
+    let dimmed = |light: &Light| Light { colour: light.colour * night, ..*light };
+    let fixed = city.fixed_lights.iter().filter(|_| night > 0.0).map(dimmed);
+    let all = traffic.lights.iter().copied().chain(fixed);
+    match count {
+        LightCount::City => all.collect(),
+        LightCount::First(n) => all.chain(beacons.iter().copied()).take(n.min(MAX_LIGHTS) as usize).collect(),
+    }
+}
+// ANCHOR_END: frame_lights
+
+/// Small coloured lights scattered over the city: not part of its design,
+/// there to fill the bench's larger light counts.
+pub fn beacons(count: usize) -> Vec<Light> {
+    let mut rng = instancing::Rng::new(21);
+    (0..count)
+        .map(|_| {
+            let hue = rng.unit();
+            Light {
+                position: Vec3::new(rng.range(-170.0, 170.0), rng.range(1.0, 50.0), rng.range(-170.0, 170.0)),
+                colour: Vec3::new(0.3 + 0.7 * hue, 0.5, 1.0 - 0.6 * hue) * rng.range(20.0, 60.0),
+                range: rng.range(6.0, 22.0),
+                kind: lights::LightKind::Point,
+            }
+        })
+        .collect()
+}
+
+pub struct LightingChapter {
+    pub city: City,
+    pub settings: Settings,
+    pub clocks: Clocks,
+    pub camera: Camera,
+    pub controller: FlyController,
+    /// The camera rides behind the first car (the `follow` preset).
+    pub follow: bool,
+    /// Scene time of the last frame, for pausing and the follow camera.
+    last_time: f32,
+    beacons: Vec<Light>,
+    meshes: CityMeshes,
+    scene_lights: SceneLights,
+    materials: wgpu::Buffer,
+    sky: CitySky,
+    city_group: wgpu::BindGroup,
+    layout: wgpu::PipelineLayout,
+    pipelines: Pipelines,
+    /// The HDR picture, its bloom and its tone map.
+    pub post: PostChain,
+    target: Target,
+    /// The cluster lists of the last frame, and how many lights it had.
+    last_lists: ClusterLists,
+    last_light_count: usize,
+}
+
+impl Chapter for LightingChapter {
+    const NAME: &'static str = env!("CARGO_PKG_NAME");
+    // Measured mean FLIP 0.0086; outliers at most 0.1%.
+    const BROWSER_TOLERANCE: common::Tolerance = common::Tolerance { mean: 0.013, outliers: 0.002 };
+    const TITLE: &'static str = "08 · Lighting";
+    const VIEWS: &'static [View] = VIEWS;
+    const SNAPSHOT_TIME: f32 = 6.0;
+    const BENCH_FRAMES: u32 = 5;
+    const BENCH_BASELINE: Option<&'static str> = Some("lights-1");
+    const KEYS: &'static [(&'static str, &'static str)] = &[
+        ("W A S D / arrows", "move (leaves the car you follow)"),
+        ("E / Space, Q / Shift+Space", "rise, fall"),
+        ("left drag, or Tab to lock", "look around"),
+        ("[", "pause or resume the drones"),
+        ("]", "pause or resume the cars"),
+    ];
+
+    fn gpu_needs() -> common::GpuNeeds {
+        common::GpuNeeds { required: wgpu::Features::empty(), optional: PostChain::OPTIONAL_FEATURES }
+    }
+
+    fn new(gpu: &Gpu, target: Target) -> anyhow::Result<Self> {
+        let device = &gpu.device;
+        let city = City::new();
+        let scene_lights = SceneLights::new(device);
+        let materials = device.create_buffer_init(&wgpu::util::BufferInitDescriptor {
+            label: Some("materials"),
+            contents: bytemuck::cast_slice(&materials(0.0, true)),
+            usage: wgpu::BufferUsages::STORAGE | wgpu::BufferUsages::COPY_DST,
+        });
+        let city_layout = device.create_bind_group_layout(&wgpu::BindGroupLayoutDescriptor {
+            label: Some("city"),
+            entries: &[storage_entry(0, wgpu::ShaderStages::VERTEX_FRAGMENT)],
+        });
+        let city_group = device.create_bind_group(&wgpu::BindGroupDescriptor {
+            label: Some("city"),
+            layout: &city_layout,
+            entries: &[wgpu::BindGroupEntry { binding: 0, resource: materials.as_entire_binding() }],
+        });
+        let layout = device.create_pipeline_layout(&wgpu::PipelineLayoutDescriptor {
+            label: Some("city"),
+            bind_group_layouts: &[Some(&scene_lights.layout), Some(&city_layout)],
+            immediate_size: 0,
+        });
+        let pipelines = build_pipelines(gpu, &layout)?;
+        let sky = CitySky::new(gpu, &scene_lights)?;
+        let post = PostChain::new(gpu, target)?;
+        Ok(Self {
+            camera: aerial_camera(target.aspect()),
+            controller: FlyController { speed: 20.0, ..Default::default() },
+            settings: Settings::for_view("day"),
+            clocks: Clocks::default(),
+            follow: false,
+            last_time: 0.0,
+            beacons: beacons(MAX_LIGHTS as usize),
+            meshes: CityMeshes::new(device, &city),
+            city,
+            scene_lights,
+            materials,
+            sky,
+            city_group,
+            layout,
+            pipelines,
+            post,
+            target,
+            last_lists: ClusterLists::default(),
+            last_light_count: 0,
+        })
+    }
+
+    fn resize(&mut self, gpu: &Gpu, target: Target) {
+        self.target = target;
+        self.camera.aspect = target.aspect();
+        self.post.resize(gpu, target);
+    }
+
+    fn select_view(&mut self, view: usize) {
+        self.settings = Settings::for_view(VIEWS[view].name);
+    }
+
+    fn reset_camera(&mut self, view: usize) {
+        let aspect = self.target.aspect();
+        self.follow = VIEWS[view].name == "follow";
+        self.camera = match VIEWS[view].name {
+            "flat" | "gouraud" | "phong" | "blinn-phong" => sphere_camera(&self.city, aspect),
+            "follow" => {
+                let traffic = self.city.traffic(self.clocks.cars.time(self.last_time), 0.0);
+                follow_camera(&traffic.cars[0], aspect)
+            }
+            _ => aerial_camera(aspect),
+        };
+    }
+
+    fn camera_mut(&mut self) -> Option<&mut Camera> {
+        Some(&mut self.camera)
+    }
+
+    fn update(&mut self, input: &Input, dt: f32) {
+        let moving = [KeyCode::KeyW, KeyCode::KeyA, KeyCode::KeyS, KeyCode::KeyD, KeyCode::ArrowUp, KeyCode::ArrowDown];
+        if moving.iter().any(|&k| input.held(k)) {
+            self.follow = false;
+        }
+        if input.pressed(KeyCode::BracketLeft) {
+            self.clocks.drones.set_paused(!self.clocks.drones.is_paused(), self.last_time);
+        }
+        if input.pressed(KeyCode::BracketRight) {
+            self.clocks.cars.set_paused(!self.clocks.cars.is_paused(), self.last_time);
+        }
+        self.controller.update(&mut self.camera, input, dt);
+    }
+
+    // ANCHOR: render
+    fn render(&mut self, gpu: &Gpu, frame: &mut Frame) {
+        self.last_time = frame.time;
+        let s = self.settings;
+        let day = daylight(s.time_of_day.phase(frame.time, s.day_seconds));
+        let traffic = self.city.traffic(self.clocks.cars.time(frame.time), self.clocks.drones.time(frame.time));
+        if self.follow {
+            self.camera = follow_camera(&traffic.cars[0], self.target.aspect());
+        }
+        let camera = self.camera;
+
+        // The frame's lights, culled into cluster lists on the CPU.
+        let lights = frame_lights(&self.city, &traffic, &self.beacons, s.lights, day.night);
+        self.last_lists = if s.culling {
+            frame.timer.cpu("light culling", || clusters::cull(&camera, &lights))
+        } else {
+            ClusterLists::default()
+        };
+        self.last_light_count = lights.len();
+        let options =
+            LoopOptions { culling: s.culling, highlight: s.highlight, heat_map: s.display == Display::LightTiles };
+        self.scene_lights.write(gpu, &camera, &day, &lights, &self.last_lists, options);
+        self.meshes.write(gpu, &traffic.pieces());
+        gpu.queue.write_buffer(&self.materials, 0, bytemuck::cast_slice(&materials(day.night, s.highlights)));
+        self.sky.write(gpu, &camera, &day);
+
+        // The scene, in HDR.
+        {
+            let black = wgpu::Color::BLACK;
+            let mut pass = common::chapter::scene_pass(
+                frame.encoder,
+                frame.timer,
+                "scene",
+                &self.post.hdr().colour,
+                black,
+                &self.post.hdr().depth,
+            );
+            pass.set_bind_group(0, &self.scene_lights.group, &[]);
+            pass.set_bind_group(1, &self.city_group, &[]);
+            pass.set_pipeline(match s.shading {
+                Shading::Flat => &self.pipelines.flat,
+                Shading::Gouraud => &self.pipelines.gouraud,
+                Shading::Phong => &self.pipelines.phong,
+            });
+            self.meshes.draw(&mut pass, s.shading == Shading::Flat);
+            self.sky.draw(&mut pass);
+        }
+
+        // Bloom, then tone mapping to the target.
+        let output = match s.display {
+            Display::Scene => PostOutput::Picture,
+            Display::BloomOnly => PostOutput::BloomOnly,
+            Display::LightTiles => PostOutput::RawHdr,
+        };
+        let post = PostSettings { output, exposure: s.exposure, bloom: s.bloom_on.then_some(s.bloom) };
+        self.post.finish(gpu, frame, &post);
+    }
+    // ANCHOR_END: render
+
+    fn ui(&mut self, ui: &mut egui::Ui) {
+        let s = &mut self.settings;
+        ui.horizontal_wrapped(|ui| {
+            ui.label("time of day");
+            for time in TimeOfDay::ALL {
+                ui.radio_value(&mut s.time_of_day, time, format!("{time:?}").to_lowercase());
+            }
+        });
+        ui.horizontal(|ui| {
+            ui.label("shading");
+            ui.radio_value(&mut s.shading, Shading::Flat, "flat");
+            ui.radio_value(&mut s.shading, Shading::Gouraud, "Gouraud");
+            ui.radio_value(&mut s.shading, Shading::Phong, "Phong");
+        });
+        ui.horizontal(|ui| {
+            ui.label("highlight");
+            ui.radio_value(&mut s.highlight, Highlight::Phong, "Phong");
+            ui.radio_value(&mut s.highlight, Highlight::BlinnPhong, "Blinn-Phong");
+            ui.checkbox(&mut s.highlights, "on");
+        });
+        let city_lights =
+            self.city.fixed_lights.len() as u32 + 2 * self.city.cars.len() as u32 + self.city.drones.len() as u32;
+        let mut count = match s.lights {
+            LightCount::City => city_lights,
+            LightCount::First(n) => n,
+        };
+        if ui.add(egui::Slider::new(&mut count, 0..=MAX_LIGHTS).text("lights")).changed() {
+            s.lights = if count == city_lights { LightCount::City } else { LightCount::First(count) };
+        }
+        ui.checkbox(&mut s.culling, "cull lights per cluster (off: every fragment visits every light)");
+        ui.checkbox(&mut s.bloom_on, "bloom");
+        ui.add(egui::Slider::new(&mut s.bloom.threshold, 0.2..=4.0).text("bloom threshold"));
+        ui.add(egui::Slider::new(&mut s.bloom.strength, 0.0..=2.0).text("bloom strength"));
+        ui.add(egui::Slider::new(&mut s.bloom.spread, 0.0..=1.0).text("bloom spread"));
+        ui.add(egui::Slider::new(&mut s.exposure, 0.1..=4.0).logarithmic(true).text("exposure"));
+        ui.horizontal(|ui| {
+            ui.radio_value(&mut s.display, Display::Scene, "picture");
+            ui.radio_value(&mut s.display, Display::BloomOnly, "bloom only");
+            ui.radio_value(&mut s.display, Display::LightTiles, "lights per fragment");
+        });
+        let time = self.last_time;
+        ui.horizontal(|ui| {
+            let mut cars = self.clocks.cars.is_paused();
+            if ui.checkbox(&mut cars, "pause cars (])").changed() {
+                self.clocks.cars.set_paused(cars, time);
+            }
+            let mut drones = self.clocks.drones.is_paused();
+            if ui.checkbox(&mut drones, "pause drones ([)").changed() {
+                self.clocks.drones.set_paused(drones, time);
+            }
+        });
+        let aspect = self.target.aspect();
+        ui.horizontal(|ui| {
+            ui.label("camera");
+            if ui.button("aerial").clicked() {
+                (self.camera, self.follow) = (aerial_camera(aspect), false);
+            }
+            if ui.button("street").clicked() {
+                (self.camera, self.follow) = (street_camera(aspect), false);
+            }
+            if ui.button("follow a car").clicked() {
+                self.follow = true;
+            }
+        });
+        let listed = self.last_lists.indices.len();
+        ui.label(format!(
+            "{} lights; {} cluster entries ({:.1} per cluster); bloom {:?}, {} levels",
+            self.last_light_count,
+            listed,
+            listed as f32 / CLUSTERS as f32,
+            self.post.bloom().format,
+            self.post.bloom().sizes().len()
+        ));
+    }
+
+    fn stats(&mut self, gpu: &Gpu) -> String {
+        let per_pixel = lights_per_pixel(
+            gpu,
+            self.post.hdr(),
+            &self.camera,
+            &self.last_lists,
+            self.last_light_count,
+            self.settings.culling,
+        );
+        let count = self.last_light_count;
+        format!(
+            "{count} light{}; lights visited per covered pixel: {}; bloom in {:?}",
+            if count == 1 { "" } else { "s" },
+            per_pixel.map_or("n/a".into(), |v| format!("{v:.2}")),
+            self.post.bloom().format
+        )
+    }
+
+    fn reload_shaders(&mut self, gpu: &Gpu) -> Result<(), ShaderError> {
+        let pipelines = build_pipelines(gpu, &self.layout)?;
+        self.sky.reload_shaders(gpu)?;
+        self.post.reload_shaders(gpu)?;
+        self.pipelines = pipelines;
+        Ok(())
+    }
+}
+
+/// The average number of lights the loop visits per pixel that shows the
+/// city (not the sky) in the last frame: from its depth buffer, each
+/// pixel's cluster, and that cluster's list.
+fn lights_per_pixel(
+    gpu: &Gpu,
+    hdr: &HdrTarget,
+    camera: &Camera,
+    lists: &ClusterLists,
+    light_count: usize,
+    culling: bool,
+) -> Option<f64> {
+    // Copying a depth texture out is optional on downlevel backends (GL):
+    // without it the figure is "n/a" rather than a wgpu validation panic.
+    let copies = wgpu::DownlevelFlags::DEPTH_TEXTURE_AND_BUFFER_COPIES;
+    if !gpu.adapter.get_downlevel_capabilities().flags.contains(copies) {
+        return None;
+    }
+    let depths = common::headless::read_floats(gpu, &hdr.depth_texture).ok()?;
+    let (width, height) = (hdr.depth_texture.width(), hdr.depth_texture.height());
+    let (near, far) = (camera.near, camera.far);
+    let (mut visited, mut pixels) = (0u64, 0u64);
+    for (i, depth) in depths.iter().map(|d| d[0]).enumerate() {
+        if depth >= 1.0 {
+            continue;
+        }
+        pixels += 1;
+        if !culling {
+            visited += light_count as u64;
+            continue;
+        }
+        // Back from stored depth to distance (chapter 02), and to the pixel's cluster.
+        let distance = near * far / (far - depth * (far - near));
+        let (x, y) = ((i as u32 % width) * clusters::GRID[0] / width, (i as u32 / width) * clusters::GRID[1] / height);
+        let z = clusters::slice(distance, near, far).clamp(0, clusters::GRID[2] as i32 - 1) as u32;
+        let cluster = ((z * clusters::GRID[1] + y) * clusters::GRID[0] + x) as usize;
+        visited += u64::from(lists.ranges.get(cluster).map_or(0, |r| r[1]));
+    }
+    (pixels > 0).then(|| visited as f64 / pixels as f64)
+}

@@ -1,0 +1,264 @@
+//! Post-processing: from the HDR picture a scene is drawn into to the frame
+//! on the screen. One piece, [`PostChain`], owns the three steps: the
+//! [`HdrTarget`] (colour in 16-bit floats, and depth), the [`Bloom`] chain
+//! over its bright parts, and the [`ToneMap`] that adds the bloom, exposes
+//! and tone-maps into the target. Made with the target, resized with it;
+//! each frame the scene is drawn into [`PostChain::hdr`] and
+//! [`PostChain::finish`] turns it into what [`PostSettings`] names.
+//! Chapters 08 to 11 finish their frames with it.
+
+use common::chapter::{FILTERABLE, sampler_entry, texture_entry, uniform_entry};
+use common::{Frame, Gpu, ShaderError, Target, fullscreen, shader, wgpu};
+
+use crate::bloom::{Bloom, BloomSettings};
+
+/// The HDR picture the scene is drawn into, and its depth buffer (which
+/// chapter 08's `stats` reads back).
+pub struct HdrTarget {
+    pub colour: wgpu::TextureView,
+    pub depth_texture: wgpu::Texture,
+    pub depth: wgpu::TextureView,
+}
+
+/// 16-bit floats per channel: room for light far brighter than white.
+pub const HDR_FORMAT: wgpu::TextureFormat = wgpu::TextureFormat::Rgba16Float;
+
+impl HdrTarget {
+    pub fn new(device: &wgpu::Device, width: u32, height: u32) -> Self {
+        let texture = |label, format, usage| {
+            device.create_texture(&wgpu::TextureDescriptor {
+                label: Some(label),
+                size: wgpu::Extent3d { width, height, depth_or_array_layers: 1 },
+                mip_level_count: 1,
+                sample_count: 1,
+                dimension: wgpu::TextureDimension::D2,
+                format,
+                usage,
+                view_formats: &[],
+            })
+        };
+        let attach = wgpu::TextureUsages::RENDER_ATTACHMENT;
+        let colour = texture("hdr", HDR_FORMAT, attach | wgpu::TextureUsages::TEXTURE_BINDING);
+        let depth_texture = texture("depth", common::texture::DEPTH_FORMAT, attach | wgpu::TextureUsages::COPY_SRC);
+        Self {
+            colour: colour.create_view(&Default::default()),
+            depth: depth_texture.create_view(&Default::default()),
+            depth_texture,
+        }
+    }
+}
+
+// ANCHOR: output
+/// What [`PostChain::finish`] puts in the target.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum PostOutput {
+    /// The picture and its bloom, exposed and tone-mapped.
+    Picture,
+    /// The bloom alone, exposed and tone-mapped (black without bloom).
+    BloomOnly,
+    /// The HDR picture as it is, neither exposed nor tone-mapped: for
+    /// pictures whose colours are data (a heat map, a tangent frame).
+    RawHdr,
+}
+
+impl PostOutput {
+    /// `Composite::mode` in tonemap.wgsl.
+    fn shader_mode(self) -> u32 {
+        match self {
+            Self::Picture => 0,
+            Self::BloomOnly => 1,
+            Self::RawHdr => 2,
+        }
+    }
+}
+
+/// How a frame is finished.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct PostSettings {
+    pub output: PostOutput,
+    /// The light is scaled by this before the tone curve.
+    pub exposure: f32,
+    /// The bloom, or `None` for none. [`PostOutput::RawHdr`] shows no
+    /// bloom, and the chain is not run for it.
+    pub bloom: Option<BloomSettings>,
+}
+// ANCHOR_END: output
+
+// ANCHOR: post
+/// The HDR target, the bloom over it and the tone map into the frame's
+/// target, for pictures of one size. In: the scene, drawn into
+/// [`PostChain::hdr`]; [`PostSettings`]. Out: the frame in `frame.target`.
+pub struct PostChain {
+    hdr: HdrTarget,
+    bloom: Bloom,
+    tone_map: ToneMap,
+}
+
+impl PostChain {
+    /// The device features the chain can use if the adapter has them.
+    pub const OPTIONAL_FEATURES: wgpu::Features = Bloom::OPTIONAL_FEATURES;
+
+    /// The chain for `target`: its size, and the format the frame ends in.
+    pub fn new(gpu: &Gpu, target: Target) -> Result<Self, ShaderError> {
+        let hdr = HdrTarget::new(&gpu.device, target.width, target.height);
+        let bloom = Bloom::new(gpu, target.width, target.height)?;
+        let tone_map = ToneMap::new(gpu, target.format, &hdr.colour, bloom.output())?;
+        Ok(Self { hdr, bloom, tone_map })
+    }
+
+    /// Makes the pictures again for `target`'s size (its format stays the
+    /// one given to `new`).
+    pub fn resize(&mut self, gpu: &Gpu, target: Target) {
+        self.hdr = HdrTarget::new(&gpu.device, target.width, target.height);
+        self.bloom.resize(&gpu.device, target.width, target.height);
+        self.tone_map.set_inputs(&gpu.device, &self.hdr.colour, self.bloom.output());
+    }
+
+    /// Where the scene is drawn: the HDR colour and its depth buffer.
+    pub fn hdr(&self) -> &HdrTarget {
+        &self.hdr
+    }
+
+    /// The bloom chain: its format and level sizes, and its last output.
+    pub fn bloom(&self) -> &Bloom {
+        &self.bloom
+    }
+
+    /// Records the end of the frame: the bloom over the HDR picture (if
+    /// `settings` asks for it and the output shows it), then the tone map
+    /// into `frame.target`.
+    pub fn finish(&self, gpu: &Gpu, frame: &mut Frame, settings: &PostSettings) {
+        let bloom = settings.bloom.filter(|_| settings.output != PostOutput::RawHdr);
+        if let Some(bloom) = &bloom {
+            self.bloom.render(gpu, frame.encoder, frame.timer, &self.hdr.colour, bloom);
+        }
+        let strength = bloom.map_or(0.0, |b| b.strength);
+        self.tone_map.draw(gpu, frame, settings.exposure, strength, settings.output);
+    }
+
+    pub fn reload_shaders(&mut self, gpu: &Gpu) -> Result<(), ShaderError> {
+        self.bloom.reload_shaders(gpu)?;
+        self.tone_map.reload_shaders(gpu)
+    }
+}
+// ANCHOR_END: post
+
+/// `Composite` in tonemap.wgsl.
+#[repr(C)]
+#[derive(Clone, Copy, bytemuck::Pod, bytemuck::Zeroable)]
+struct CompositeUniform {
+    exposure: f32,
+    bloom_strength: f32,
+    mode: u32,
+    _padding: u32,
+}
+
+// ANCHOR: tonemap
+/// From an HDR picture and its bloom to the screen: add the bloom, expose,
+/// tone-map (ACES, Narkowicz's fit). Inputs: the two textures (given when
+/// it is made, and again after a resize), exposure, bloom strength, what to
+/// show; output: the target it draws into. The last step of [`PostChain`].
+pub struct ToneMap {
+    layout: wgpu::BindGroupLayout,
+    pipeline_layout: wgpu::PipelineLayout,
+    pipeline: wgpu::RenderPipeline,
+    uniform: wgpu::Buffer,
+    sampler: wgpu::Sampler,
+    group: wgpu::BindGroup,
+    format: wgpu::TextureFormat,
+}
+
+impl ToneMap {
+    /// The tone map from `hdr` and `bloom` into targets of `format`.
+    pub fn new(
+        gpu: &Gpu,
+        format: wgpu::TextureFormat,
+        hdr: &wgpu::TextureView,
+        bloom: &wgpu::TextureView,
+    ) -> Result<Self, ShaderError> {
+        let device = &gpu.device;
+        let layout = device.create_bind_group_layout(&wgpu::BindGroupLayoutDescriptor {
+            label: Some("tone map"),
+            entries: &[
+                texture_entry(0, FILTERABLE),
+                texture_entry(1, FILTERABLE),
+                sampler_entry(2),
+                uniform_entry(3, wgpu::ShaderStages::FRAGMENT, std::mem::size_of::<CompositeUniform>()),
+            ],
+        });
+        let pipeline_layout = device.create_pipeline_layout(&wgpu::PipelineLayoutDescriptor {
+            label: Some("tone map"),
+            bind_group_layouts: &[Some(&layout)],
+            immediate_size: 0,
+        });
+        let pipeline = Self::pipeline(gpu, &pipeline_layout, format)?;
+        let uniform = device.create_buffer(&wgpu::BufferDescriptor {
+            label: Some("composite"),
+            size: std::mem::size_of::<CompositeUniform>() as u64,
+            usage: wgpu::BufferUsages::UNIFORM | wgpu::BufferUsages::COPY_DST,
+            mapped_at_creation: false,
+        });
+        let sampler = device.create_sampler(&wgpu::SamplerDescriptor {
+            label: Some("tone map"),
+            mag_filter: wgpu::FilterMode::Linear,
+            min_filter: wgpu::FilterMode::Linear,
+            ..Default::default()
+        });
+        let group = Self::group(device, &layout, &sampler, &uniform, hdr, bloom);
+        Ok(Self { layout, pipeline_layout, pipeline, uniform, sampler, group, format })
+    }
+
+    fn pipeline(
+        gpu: &Gpu,
+        layout: &wgpu::PipelineLayout,
+        format: wgpu::TextureFormat,
+    ) -> Result<wgpu::RenderPipeline, ShaderError> {
+        let module = shader!("lighting/tonemap.wgsl", imports: ["common/fullscreen.wgsl"]).module(gpu)?;
+        gpu.catch_validation(|| {
+            fullscreen::pipeline(&gpu.device, "tone map", layout, &module, "fs_composite", format.into(), None)
+        })
+        .map_err(ShaderError)
+    }
+
+    fn group(
+        device: &wgpu::Device,
+        layout: &wgpu::BindGroupLayout,
+        sampler: &wgpu::Sampler,
+        uniform: &wgpu::Buffer,
+        hdr: &wgpu::TextureView,
+        bloom: &wgpu::TextureView,
+    ) -> wgpu::BindGroup {
+        device.create_bind_group(&wgpu::BindGroupDescriptor {
+            label: Some("tone map"),
+            layout,
+            entries: &[
+                wgpu::BindGroupEntry { binding: 0, resource: wgpu::BindingResource::TextureView(hdr) },
+                wgpu::BindGroupEntry { binding: 1, resource: wgpu::BindingResource::TextureView(bloom) },
+                wgpu::BindGroupEntry { binding: 2, resource: wgpu::BindingResource::Sampler(sampler) },
+                wgpu::BindGroupEntry { binding: 3, resource: uniform.as_entire_binding() },
+            ],
+        })
+    }
+
+    pub fn reload_shaders(&mut self, gpu: &Gpu) -> Result<(), ShaderError> {
+        self.pipeline = Self::pipeline(gpu, &self.pipeline_layout, self.format)?;
+        Ok(())
+    }
+
+    /// Points the tone map at new inputs (the pictures made again after a resize).
+    pub fn set_inputs(&mut self, device: &wgpu::Device, hdr: &wgpu::TextureView, bloom: &wgpu::TextureView) {
+        self.group = Self::group(device, &self.layout, &self.sampler, &self.uniform, hdr, bloom);
+    }
+
+    /// Draws `output` into `frame.target`, the bloom weighted by
+    /// `bloom_strength` and the light scaled by `exposure`.
+    pub fn draw(&self, gpu: &Gpu, frame: &mut Frame, exposure: f32, bloom_strength: f32, output: PostOutput) {
+        let uniform = CompositeUniform { exposure, bloom_strength, mode: output.shader_mode(), _padding: 0 };
+        gpu.queue.write_buffer(&self.uniform, 0, bytemuck::bytes_of(&uniform));
+        let mut pass = fullscreen::pass(frame.encoder, frame.timer, "tone map", frame.target, None);
+        pass.set_pipeline(&self.pipeline);
+        pass.set_bind_group(0, &self.group, &[]);
+        pass.draw(0..3, 0..1);
+    }
+}
+// ANCHOR_END: tonemap

@@ -1,0 +1,149 @@
+//! The lights of a frame on the GPU: group 0 of `lights.wgsl`, which every
+//! lit shader of chapters 08 to 11 imports. In: a camera, the daylight,
+//! the lights and their cluster lists, and how the light loop runs
+//! (`LoopOptions`); out: one bind group and its layout.
+
+use common::chapter::storage_entry;
+use common::{Camera, Gpu, wgpu};
+
+use crate::clusters::{self, CLUSTERS, ClusterLists};
+use crate::lights::{Daylight, GpuLight, Light};
+
+/// Which highlight.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Highlight {
+    /// The mirror direction against the view: (r · v)^s.
+    Phong,
+    /// The half vector against the normal: (n · h)^s.
+    BlinnPhong,
+}
+
+/// The most lights the buffer holds: the city's own, then beacons.
+pub const MAX_LIGHTS: u32 = 1024;
+
+// ANCHOR: frame_uniform
+/// `Frame` in lights.wgsl.
+#[repr(C)]
+#[derive(Clone, Copy, bytemuck::Pod, bytemuck::Zeroable)]
+struct FrameUniform {
+    view_proj: [[f32; 4]; 4],
+    view: [[f32; 4]; 4],
+    eye: [f32; 4],
+    sun_direction: [f32; 4],
+    sun_colour: [f32; 4],
+    ambient: [f32; 4],
+    options: [u32; 4],
+    depth: [f32; 4],
+    grid: [u32; 4],
+}
+// ANCHOR_END: frame_uniform
+
+/// How the light loop runs this frame.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct LoopOptions {
+    pub culling: bool,
+    pub highlight: Highlight,
+    pub heat_map: bool,
+}
+
+// ANCHOR: scene_lights
+/// The lights of a frame on the GPU: group 0 of `lights.wgsl`, with the
+/// frame's camera and sun, every light, and the cluster lists. A piece with
+/// explicit inputs, which chapter 09's textured city uses as it is.
+pub struct SceneLights {
+    frame: wgpu::Buffer,
+    lights: wgpu::Buffer,
+    ranges: wgpu::Buffer,
+    indices: wgpu::Buffer,
+    pub layout: wgpu::BindGroupLayout,
+    pub group: wgpu::BindGroup,
+}
+
+impl SceneLights {
+    pub fn new(device: &wgpu::Device) -> Self {
+        let stages = wgpu::ShaderStages::VERTEX_FRAGMENT;
+        let layout = device.create_bind_group_layout(&wgpu::BindGroupLayoutDescriptor {
+            label: Some("lights"),
+            entries: &[
+                storage_entry(0, stages),
+                storage_entry(1, stages),
+                storage_entry(2, stages),
+                storage_entry(3, stages),
+            ],
+        });
+        let buffer = |label, size: u64, usage| {
+            device.create_buffer(&wgpu::BufferDescriptor { label: Some(label), size, usage, mapped_at_creation: false })
+        };
+        let storage = wgpu::BufferUsages::STORAGE | wgpu::BufferUsages::COPY_DST;
+        // Storage, not uniform: see `frame` in lights.wgsl.
+        let frame = buffer("frame", std::mem::size_of::<FrameUniform>() as u64, storage);
+        let lights = buffer("lights", u64::from(MAX_LIGHTS) * 64, storage);
+        let ranges = buffer("cluster ranges", CLUSTERS as u64 * 8, storage);
+        let indices = buffer("cluster lights", 4 * 4096, storage);
+        let group = Self::group(device, &layout, [&frame, &lights, &ranges, &indices]);
+        Self { frame, lights, ranges, indices, layout, group }
+    }
+
+    fn group(device: &wgpu::Device, layout: &wgpu::BindGroupLayout, buffers: [&wgpu::Buffer; 4]) -> wgpu::BindGroup {
+        let entries: Vec<wgpu::BindGroupEntry> = buffers
+            .iter()
+            .enumerate()
+            .map(|(i, b)| wgpu::BindGroupEntry { binding: i as u32, resource: b.as_entire_binding() })
+            .collect();
+        device.create_bind_group(&wgpu::BindGroupDescriptor { label: Some("lights"), layout, entries: &entries })
+    }
+
+    /// Writes the frame: the camera, the daylight, `lights` (at most
+    /// `MAX_LIGHTS`), their cluster lists, and how the loop runs.
+    pub fn write(
+        &mut self,
+        gpu: &Gpu,
+        camera: &Camera,
+        day: &Daylight,
+        lights: &[Light],
+        lists: &ClusterLists,
+        options: LoopOptions,
+    ) {
+        let count = lights.len().min(MAX_LIGHTS as usize);
+        let frame = FrameUniform {
+            view_proj: camera.view_projection().to_cols_array_2d(),
+            view: camera.view().to_cols_array_2d(),
+            eye: camera.position.extend(1.0).into(),
+            sun_direction: day.direction.extend(0.0).into(),
+            sun_colour: day.sun.extend(1.0).into(),
+            ambient: day.ambient.extend(1.0).into(),
+            options: [
+                count as u32,
+                u32::from(options.culling),
+                u32::from(options.highlight == Highlight::BlinnPhong),
+                u32::from(options.heat_map),
+            ],
+            depth: [camera.near, camera.far, (camera.far / camera.near).ln(), day.night],
+            grid: [clusters::GRID[0], clusters::GRID[1], clusters::GRID[2], 0],
+        };
+        gpu.queue.write_buffer(&self.frame, 0, bytemuck::bytes_of(&frame));
+        let gpu_lights: Vec<GpuLight> = lights[..count].iter().map(Light::to_gpu).collect();
+        if !gpu_lights.is_empty() {
+            gpu.queue.write_buffer(&self.lights, 0, bytemuck::cast_slice(&gpu_lights));
+        }
+        if options.culling {
+            let needed = (lists.indices.len().max(1) * 4) as u64;
+            if needed > self.indices.size() {
+                // Grow to the next power of two, and point the bind group at the new buffer.
+                self.indices = gpu.device.create_buffer(&wgpu::BufferDescriptor {
+                    label: Some("cluster lights"),
+                    size: needed.next_power_of_two(),
+                    usage: wgpu::BufferUsages::STORAGE | wgpu::BufferUsages::COPY_DST,
+                    mapped_at_creation: false,
+                });
+                self.group =
+                    Self::group(&gpu.device, &self.layout, [&self.frame, &self.lights, &self.ranges, &self.indices]);
+            }
+            gpu.queue.write_buffer(&self.ranges, 0, bytemuck::cast_slice(&lists.ranges));
+            if !lists.indices.is_empty() {
+                gpu.queue.write_buffer(&self.indices, 0, bytemuck::cast_slice(&lists.indices));
+            }
+        }
+    }
+}
+// ANCHOR_END: scene_lights

@@ -1,0 +1,615 @@
+//! The chapter itself: the settings each view applies, the views and
+//! where they put the camera, the built-in and featured models, and `impl
+//! Chapter`, which composes chapter 08's lights, sky and post chain with
+//! the textured renderer into a frame.
+
+use std::path::{Path, PathBuf};
+use std::sync::Arc;
+
+use common::args::UsageError;
+use common::glam::{Mat4, Quat, Vec3};
+use common::{
+    Camera, Chapter, ChapterFlag, FlagValues, FlyController, Frame, Gpu, Input, ShaderError, Target, View, anyhow,
+    egui, wgpu, winit::keyboard::KeyCode,
+};
+use lighting::bloom::BloomSettings;
+use lighting::city::{City, Clocks};
+use lighting::clusters;
+use lighting::lights::{Daylight, Light, TimeOfDay, daylight};
+use lighting::{CitySky, Highlight, LightCount, LoopOptions, PostChain, PostOutput, PostSettings, SceneLights};
+
+use crate::builtin;
+use crate::materials::{self, Materials, SamplerMode, Uploader};
+use crate::mesh::{GpuModel, ModelData, ModelInstance};
+use crate::mipmaps::MipMaker;
+use crate::obj::{self, LoadedModel, ReadFile};
+use crate::scenes;
+use crate::textured_renderer::{Draw, DrawList, TexturedRenderer, upload_model};
+
+// ANCHOR: views
+pub const VIEWS: &[View] = &[
+    View::mode("day", "the textured city at noon, from above"),
+    View::mode("night", "the textured city at night: lit windows, lamps, headlights"),
+    View::preset("car", "the car model and its five materials on the stage (or the model given with --model)"),
+    View::preset("normal-maps", "the stage in a low sun: normal maps give brick, panels and concrete their relief"),
+    View::preset("no-normal-maps", "the same without normal maps: flat, as if painted"),
+    View::preset(
+        "face-tangents",
+        "normal maps with one tangent per triangle, as the seed did: the frame jumps at edges",
+    ),
+    View::preset("tbn", "the tangent frame as colours: tangent (left third), bitangent (middle), normal (right)"),
+    View::preset("wrong-colour-space", "albedo read as data and normal maps as sRGB: washed-out colour, bent light"),
+    View::preset("nearest", "a checkerboard to the horizon, nearest texel: blocky near, moiré far"),
+    View::preset("linear", "the same, bilinear: smooth near, still moiré far"),
+    View::preset("mipmaps", "trilinear filtering with mipmaps: no moiré, but the distance turns grey"),
+    View::preset("anisotropic", "anisotropic filtering (16x): the squares stay sharp much further"),
+];
+// ANCHOR_END: views
+
+/// Which set the camera is in.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Scene {
+    /// Chapter 08's city, textured, with car models and the tower.
+    City,
+    /// A model on a stage, with a brick wall and a row of primitives.
+    Stage,
+    /// A checkerboard floor to the horizon, for comparing samplers.
+    Lab,
+}
+
+/// Where tangents come from.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Tangents {
+    /// Averaged per vertex and made orthogonal to its normal.
+    PerVertex,
+    /// One per triangle (the seed's way), on the stage's primitives.
+    PerFace,
+}
+
+/// What a view decides.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Settings {
+    pub time_of_day: TimeOfDay,
+    pub sampler: SamplerMode,
+    pub normal_maps: bool,
+    /// Read normal maps' green as pointing down the image (DirectX's way).
+    pub flip_green: bool,
+    pub tangents: Tangents,
+    /// Albedo read as linear data and normal maps as sRGB: the mistake.
+    pub swapped_colour_spaces: bool,
+    /// Show the tangent frame as colours instead of the picture.
+    pub show_frame: bool,
+    pub bloom: bool,
+    pub exposure: f32,
+}
+
+impl Settings {
+    pub fn for_view(name: &str) -> Self {
+        let mut s = Self {
+            time_of_day: TimeOfDay::Noon,
+            // Trilinear: anisotropic filtering is sharper, and about twenty
+            // times dearer on a software rasteriser (see the bench).
+            sampler: SamplerMode::Mipmaps,
+            normal_maps: true,
+            flip_green: false,
+            tangents: Tangents::PerVertex,
+            swapped_colour_spaces: false,
+            show_frame: false,
+            bloom: true,
+            exposure: 1.0,
+        };
+        match name {
+            "night" => s.time_of_day = TimeOfDay::Night,
+            "car" | "normal-maps" | "no-normal-maps" | "face-tangents" | "tbn" | "wrong-colour-space" => {
+                s.time_of_day = TimeOfDay::Morning;
+                s.normal_maps = name != "no-normal-maps";
+                s.tangents = if name == "face-tangents" { Tangents::PerFace } else { Tangents::PerVertex };
+                s.show_frame = name == "tbn";
+                s.swapped_colour_spaces = name == "wrong-colour-space";
+            }
+            "nearest" | "linear" | "mipmaps" | "anisotropic" => {
+                s.sampler = match name {
+                    "nearest" => SamplerMode::Nearest,
+                    "linear" => SamplerMode::Linear,
+                    "mipmaps" => SamplerMode::Mipmaps,
+                    _ => SamplerMode::Anisotropic,
+                };
+                // Black and white squares: no bloom, and an exposure that
+                // keeps white below the shoulder of the tone curve.
+                s.bloom = false;
+                s.exposure = 0.5;
+            }
+            _ => {}
+        }
+        s
+    }
+}
+
+/// Where each view puts the camera, and in which scene.
+pub fn view_camera(view: &str, aspect: f32) -> (Scene, Camera) {
+    let at = |eye: Vec3, target: Vec3| Camera { near: 0.1, far: 900.0, ..Camera::looking_at(eye, target, aspect) };
+    match view {
+        "car" | "wrong-colour-space" => (Scene::Stage, at(Vec3::new(-3.3, 1.9, 4.3), Vec3::new(0.2, 0.7, 0.0))),
+        // The left of the stage: the wall, the sphere, the torus and the
+        // cone, in a low sun from the side.
+        "normal-maps" | "no-normal-maps" | "face-tangents" => {
+            (Scene::Stage, at(Vec3::new(-2.2, 1.5, 0.9), Vec3::new(-6.4, 0.9, -3.6)))
+        }
+        "tbn" => (Scene::Stage, at(Vec3::new(0.0, 4.2, 10.5), Vec3::new(0.0, 1.0, -2.0))),
+        "nearest" | "linear" | "mipmaps" | "anisotropic" => (
+            Scene::Lab,
+            Camera {
+                near: 0.1,
+                far: 1500.0,
+                ..Camera::looking_at(Vec3::new(0.0, 1.7, 0.0), Vec3::new(0.0, 0.0, -30.0), aspect)
+            },
+        ),
+        _ => (Scene::City, lighting::aerial_camera(aspect)),
+    }
+}
+
+/// The CPU side of every built-in model, made once per device and shared
+/// by every instance of the chapter (`Gpu::cached`): tangents for a whole
+/// city take a while in a debug build.
+pub struct BuiltinModels {
+    pub city: ModelData,
+    pub stage: ModelData,
+    pub stage_face_tangents: ModelData,
+    pub lab: ModelData,
+    pub car: LoadedModel,
+    pub tower: LoadedModel,
+}
+
+impl BuiltinModels {
+    fn load() -> anyhow::Result<Self> {
+        let read: ReadFile = &builtin::read;
+        let stage = scenes::stage_set();
+        Ok(Self {
+            city: scenes::textured_city(&City::new()),
+            stage_face_tangents: stage.with_face_tangents(),
+            stage,
+            lab: scenes::lab_floor(),
+            car: obj::load(Path::new("models/car/car.obj"), read)?,
+            tower: obj::load(Path::new("models/tower/tower.obj"), read)?,
+        })
+    }
+}
+
+/// The featured model on the stage: the car, or the learner's.
+pub struct Featured {
+    pub name: String,
+    pub model: GpuModel,
+    pub placement: Mat4,
+    pub triangles: usize,
+    pub objects: usize,
+    /// Scale applied to fit the stage, and the load time and memory (for
+    /// a learner's model).
+    pub scale: f32,
+    pub load_ms: Option<f64>,
+    pub peak_memory: Option<u64>,
+}
+
+/// Everything drawable, on the GPU.
+struct Models {
+    city: GpuModel,
+    drones: GpuModel,
+    car: GpuModel,
+    tower: GpuModel,
+    stage: GpuModel,
+    stage_face_tangents: GpuModel,
+    lab: GpuModel,
+}
+
+pub struct TexturesChapter {
+    pub settings: Settings,
+    pub scene: Scene,
+    pub camera: Camera,
+    pub controller: FlyController,
+    pub city: City,
+    pub clocks: Clocks,
+    last_time: f32,
+    mips: MipMaker,
+    materials: Materials,
+    models: Models,
+    pub featured: Featured,
+    renderer: TexturedRenderer,
+    instances: wgpu::Buffer,
+    scene_lights: SceneLights,
+    sky: CitySky,
+    post: PostChain,
+    target: Target,
+    /// What loading had to warn about, one line each.
+    pub warnings: Vec<String>,
+    /// What loading the built-in textures cost.
+    texture_report: TextureReport,
+    last_lights: usize,
+}
+
+/// The built-in textures: how many, and what loading them cost.
+#[derive(Clone, Copy, Debug)]
+struct TextureReport {
+    materials: usize,
+    texels: u64,
+    /// Decoding, uploading and the mip passes, waited for, in ms.
+    load_ms: f64,
+    /// The mip passes alone, on the GPU, in ms.
+    mip_ms: f64,
+}
+
+impl TexturesChapter {
+    /// The city at this moment: lights, and the instances and draws for the
+    /// textured city, the tower, the car models and the drones.
+    fn city_frame(
+        &mut self,
+        gpu: &Gpu,
+        time: f32,
+        day: &Daylight,
+        instances: &mut Vec<ModelInstance>,
+    ) -> (Vec<Light>, Vec<(Which, std::ops::Range<u32>)>) {
+        let traffic = self.city.traffic(self.clocks.cars.time(time), self.clocks.drones.time(time));
+        let lights = lighting::frame_lights(&self.city, &traffic, &[], LightCount::City, day.night);
+        let drones = scenes::bake(&traffic.drone_parts);
+        self.models.drones.update(&gpu.device, &gpu.queue, &drones);
+        let mut draws = Vec::new();
+        let mut push = |which, list: Vec<ModelInstance>| {
+            let start = instances.len() as u32;
+            instances.extend(list);
+            draws.push((which, start..instances.len() as u32));
+        };
+        push(Which::City, vec![ModelInstance::new(Mat4::IDENTITY, 1.0)]);
+        push(Which::Drones, vec![ModelInstance::new(Mat4::IDENTITY, 1.0)]);
+        // The tower's windows light up as night falls.
+        push(Which::Tower, vec![ModelInstance::new(scenes::tower_placement(), day.night)]);
+        let cars = traffic
+            .cars
+            .iter()
+            .map(|pose| {
+                ModelInstance::new(
+                    Mat4::from_rotation_translation(Quat::from_rotation_y(pose.heading), pose.position),
+                    1.0,
+                )
+            })
+            .collect();
+        push(Which::Car, cars);
+        (lights, draws)
+    }
+}
+
+/// Which model a draw uses.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+enum Which {
+    City,
+    Drones,
+    Tower,
+    Car,
+    Featured,
+    Stage,
+    StageFaceTangents,
+    Lab,
+}
+
+impl Chapter for TexturesChapter {
+    const NAME: &'static str = env!("CARGO_PKG_NAME");
+    // Measured mean FLIP 0.0258: the textures' mip levels differ most; outliers at most 0.1%.
+    const BROWSER_TOLERANCE: common::Tolerance = common::Tolerance { mean: 0.04, outliers: 0.002 };
+    const TITLE: &'static str = "09 · Textures";
+    const VIEWS: &'static [View] = VIEWS;
+    const SNAPSHOT_TIME: f32 = 6.0;
+    const BENCH_FRAMES: u32 = 5;
+    const BENCH_BASELINE: Option<&'static str> = Some("no-normal-maps");
+    const KEYS: &'static [(&'static str, &'static str)] = &[
+        ("W A S D / arrows", "move"),
+        ("E / Space, Q / Shift+Space", "rise, fall"),
+        ("left drag, or Tab to lock", "look around"),
+        ("[", "pause or resume the drones"),
+        ("]", "pause or resume the cars"),
+    ];
+    const FLAGS: &'static [ChapterFlag] = &[ChapterFlag {
+        name: "model",
+        value_name: "PATH.obj",
+        help: "Show this OBJ model (with its MTL and textures beside it) on the stage instead of the car",
+    }];
+
+    fn gpu_needs() -> common::GpuNeeds {
+        common::GpuNeeds { required: wgpu::Features::empty(), optional: PostChain::OPTIONAL_FEATURES }
+    }
+
+    fn new(gpu: &Gpu, target: Target) -> anyhow::Result<Self> {
+        let device = &gpu.device;
+        let builtin: Arc<anyhow::Result<BuiltinModels>> = gpu.cached((), BuiltinModels::load);
+        let builtin = match builtin.as_ref() {
+            Ok(models) => models,
+            Err(error) => anyhow::bail!("the built-in models: {error:#}"),
+        };
+        let read: ReadFile = &builtin::read;
+        let mut mips = MipMaker::new(gpu)?;
+        let ((materials, models, warnings, mip_ms), load_ms) = common::timing::measure(|| {
+            let mut up = Uploader::new(gpu, &mut mips, read);
+            let mut materials = Materials::new(&mut up);
+            materials.insert_image(&mut up, Path::new(scenes::CHECKER), &materials::checkerboard());
+            let mut model = |data: &ModelData, label| upload_model(&mut up, &mut materials, data, label);
+            let city = model(&builtin.city, "city");
+            let models = Models {
+                drones: GpuModel::upload(device, &ModelData::default(), city.first_material, "drones"),
+                car: model(&builtin.car.model, "car"),
+                tower: model(&builtin.tower.model, "tower"),
+                stage: model(&builtin.stage, "stage"),
+                stage_face_tangents: model(&builtin.stage_face_tangents, "stage, face tangents"),
+                lab: model(&builtin.lab, "lab"),
+                city,
+            };
+            let mip_ms = up.finish();
+            let mut warnings = builtin.car.warnings.clone();
+            warnings.extend(builtin.tower.warnings.iter().cloned());
+            warnings.append(&mut materials.warnings);
+            (materials, models, warnings, mip_ms)
+        });
+        let texture_report =
+            TextureReport { materials: materials.list.len(), texels: materials.texels, load_ms, mip_ms };
+        let scene_lights = SceneLights::new(device);
+        let renderer = TexturedRenderer::new(gpu, &scene_lights, &materials)?;
+        let sky = CitySky::new(gpu, &scene_lights)?;
+        let post = PostChain::new(gpu, target)?;
+        let instances = device.create_buffer(&wgpu::BufferDescriptor {
+            label: Some("instances"),
+            size: 64 * std::mem::size_of::<ModelInstance>() as u64,
+            usage: wgpu::BufferUsages::VERTEX | wgpu::BufferUsages::COPY_DST,
+            mapped_at_creation: false,
+        });
+        let (placement, scale) = scenes::stage_placement(builtin.car.model.bounds());
+        let featured = Featured {
+            name: "the car (assets/models/car/car.obj)".into(),
+            // The car's own buffers again, with the car's materials.
+            model: GpuModel::upload(device, &builtin.car.model, models.car.first_material, "featured"),
+            placement,
+            triangles: builtin.car.model.triangle_count(),
+            objects: builtin.car.objects,
+            scale,
+            load_ms: None,
+            peak_memory: None,
+        };
+        for warning in &warnings {
+            eprintln!("warning: {warning}");
+        }
+        let (scene, camera) = view_camera("day", target.aspect());
+        Ok(Self {
+            settings: Settings::for_view("day"),
+            scene,
+            camera,
+            controller: FlyController { speed: 12.0, ..Default::default() },
+            city: City::new(),
+            clocks: Clocks::default(),
+            last_time: 0.0,
+            mips,
+            materials,
+            models,
+            featured,
+            renderer,
+            instances,
+            scene_lights,
+            sky,
+            post,
+            target,
+            warnings,
+            texture_report,
+            last_lights: 0,
+        })
+    }
+
+    // ANCHOR: model_flag
+    fn apply_flags(&mut self, gpu: &Gpu, flags: &FlagValues) -> anyhow::Result<()> {
+        let Some(path) = flags.get("model") else { return Ok(()) };
+        let path = PathBuf::from(path);
+        let read: ReadFile = &|p: &Path| common::files::read(p);
+        let (loaded, load_ms) = common::timing::measure(|| obj::load(&path, read));
+        let loaded = loaded.map_err(|e| UsageError(format!("--model: {e}")))?;
+        let mut up = Uploader::new(gpu, &mut self.mips, read);
+        let model = upload_model(&mut up, &mut self.materials, &loaded.model, "model");
+        up.finish();
+        let (placement, scale) = scenes::stage_placement(loaded.model.bounds());
+        let mut warnings = loaded.warnings;
+        warnings.append(&mut self.materials.warnings);
+        for warning in &warnings {
+            eprintln!("warning: {warning}");
+        }
+        self.warnings.extend(warnings);
+        self.featured = Featured {
+            name: path.display().to_string(),
+            model,
+            placement,
+            triangles: loaded.model.triangle_count(),
+            objects: loaded.objects,
+            scale,
+            load_ms: Some(load_ms),
+            peak_memory: common::memory::peak_process_bytes(),
+        };
+        Ok(())
+    }
+    // ANCHOR_END: model_flag
+
+    fn resize(&mut self, gpu: &Gpu, target: Target) {
+        self.target = target;
+        self.camera.aspect = target.aspect();
+        self.post.resize(gpu, target);
+    }
+
+    fn select_view(&mut self, view: usize) {
+        self.settings = Settings::for_view(VIEWS[view].name);
+    }
+
+    fn reset_camera(&mut self, view: usize) {
+        (self.scene, self.camera) = view_camera(VIEWS[view].name, self.target.aspect());
+    }
+
+    fn camera_mut(&mut self) -> Option<&mut Camera> {
+        Some(&mut self.camera)
+    }
+
+    fn update(&mut self, input: &Input, dt: f32) {
+        if input.pressed(KeyCode::BracketLeft) {
+            self.clocks.drones.set_paused(!self.clocks.drones.is_paused(), self.last_time);
+        }
+        if input.pressed(KeyCode::BracketRight) {
+            self.clocks.cars.set_paused(!self.clocks.cars.is_paused(), self.last_time);
+        }
+        self.controller.update(&mut self.camera, input, dt);
+    }
+
+    // ANCHOR: render
+    fn render(&mut self, gpu: &Gpu, frame: &mut Frame) {
+        self.last_time = frame.time;
+        let s = self.settings;
+        let day = daylight(s.time_of_day.phase(frame.time, 120.0));
+        let camera = self.camera;
+
+        // This frame's lights, instances and draws, by scene.
+        let mut instances = Vec::new();
+        let (lights, draws) = match self.scene {
+            Scene::City => self.city_frame(gpu, frame.time, &day, &mut instances),
+            Scene::Stage => {
+                instances.push(ModelInstance::new(Mat4::IDENTITY, 1.0));
+                instances.push(ModelInstance::new(self.featured.placement, 1.0));
+                let set = if s.tangents == Tangents::PerFace { Which::StageFaceTangents } else { Which::Stage };
+                (scenes::stage_lights(), vec![(set, 0..1), (Which::Featured, 1..2)])
+            }
+            Scene::Lab => {
+                instances.push(ModelInstance::new(Mat4::IDENTITY, 1.0));
+                (Vec::new(), vec![(Which::Lab, 0..1)])
+            }
+        };
+        let lists = frame.timer.cpu("light culling", || clusters::cull(&camera, &lights));
+        self.last_lights = lights.len();
+        let options = LoopOptions { culling: true, highlight: Highlight::BlinnPhong, heat_map: false };
+        self.scene_lights.write(gpu, &camera, &day, &lights, &lists, options);
+        self.sky.write(gpu, &camera, &day);
+        let bytes = (instances.len() * std::mem::size_of::<ModelInstance>()) as u64;
+        if bytes > self.instances.size() {
+            self.instances = gpu.device.create_buffer(&wgpu::BufferDescriptor {
+                label: Some("instances"),
+                size: bytes.next_power_of_two(),
+                usage: wgpu::BufferUsages::VERTEX | wgpu::BufferUsages::COPY_DST,
+                mapped_at_creation: false,
+            });
+        }
+        gpu.queue.write_buffer(&self.instances, 0, bytemuck::cast_slice(&instances));
+        let models = &self.models;
+        let draws: Vec<Draw> = draws
+            .into_iter()
+            .map(|(which, instances)| Draw {
+                model: match which {
+                    Which::City => &models.city,
+                    Which::Drones => &models.drones,
+                    Which::Tower => &models.tower,
+                    Which::Car => &models.car,
+                    Which::Featured => &self.featured.model,
+                    Which::Stage => &models.stage,
+                    Which::StageFaceTangents => &models.stage_face_tangents,
+                    Which::Lab => &models.lab,
+                },
+                instances,
+            })
+            .collect();
+
+        // The scene, in HDR, then the sky behind it.
+        {
+            let mut pass = common::chapter::scene_pass(
+                frame.encoder,
+                frame.timer,
+                "scene",
+                &self.post.hdr().colour,
+                wgpu::Color::BLACK,
+                &self.post.hdr().depth,
+            );
+            pass.set_bind_group(0, &self.scene_lights.group, &[]);
+            let list = DrawList { materials: &self.materials, instances: &self.instances, draws };
+            self.renderer.draw(gpu, &mut pass, &s, self.target.width, &list);
+            if !s.show_frame {
+                self.sky.draw(&mut pass);
+            }
+        }
+
+        // Bloom, then tone mapping to the target (chapter 08's). The
+        // tangent frame is shown as it is, not tone-mapped.
+        let output = if s.show_frame { PostOutput::RawHdr } else { PostOutput::Picture };
+        let bloom = s.bloom.then(BloomSettings::default);
+        self.post.finish(gpu, frame, &PostSettings { output, exposure: s.exposure, bloom });
+    }
+    // ANCHOR_END: render
+
+    fn ui(&mut self, ui: &mut egui::Ui) {
+        let aspect = self.target.aspect();
+        ui.horizontal(|ui| {
+            ui.label("go to");
+            for (label, view) in [("city", "day"), ("stage", "car"), ("sampling lab", "mipmaps")] {
+                if ui.button(label).clicked() {
+                    (self.scene, self.camera) = view_camera(view, aspect);
+                }
+            }
+        });
+        let s = &mut self.settings;
+        ui.horizontal_wrapped(|ui| {
+            ui.label("time of day");
+            for time in TimeOfDay::ALL {
+                ui.radio_value(&mut s.time_of_day, time, format!("{time:?}").to_lowercase());
+            }
+        });
+        ui.horizontal_wrapped(|ui| {
+            ui.label("sampler");
+            for (mode, label) in [
+                (SamplerMode::Nearest, "nearest"),
+                (SamplerMode::Linear, "bilinear"),
+                (SamplerMode::Mipmaps, "trilinear (mipmaps)"),
+                (SamplerMode::Anisotropic, "anisotropic 16x"),
+            ] {
+                ui.radio_value(&mut s.sampler, mode, label);
+            }
+        });
+        if !self.renderer.anisotropy {
+            ui.label("this adapter cannot filter anisotropically: 'anisotropic' is trilinear here");
+        }
+        ui.checkbox(&mut s.normal_maps, "normal maps");
+        ui.checkbox(&mut s.flip_green, "read normal maps' green as down the image (DirectX)");
+        ui.horizontal(|ui| {
+            ui.label("tangents on the stage's primitives");
+            ui.radio_value(&mut s.tangents, Tangents::PerVertex, "per vertex");
+            ui.radio_value(&mut s.tangents, Tangents::PerFace, "per face");
+        });
+        ui.checkbox(&mut s.swapped_colour_spaces, "swap colour spaces (albedo as data, normal maps as sRGB)");
+        ui.checkbox(&mut s.show_frame, "show the tangent frame (T | B | N)");
+        ui.checkbox(&mut s.bloom, "bloom");
+        ui.add(egui::Slider::new(&mut s.exposure, 0.1..=4.0).logarithmic(true).text("exposure"));
+        let f = &self.featured;
+        ui.label(format!(
+            "model: {}: {} triangles, {} objects, scaled ×{:.3} to fit",
+            f.name, f.triangles, f.objects, f.scale
+        ));
+        for warning in &self.warnings {
+            ui.colored_label(egui::Color32::from_rgb(230, 180, 60), warning);
+        }
+    }
+
+    fn stats(&mut self, _gpu: &Gpu) -> String {
+        let TextureReport { materials, texels, load_ms, mip_ms } = self.texture_report;
+        let f = &self.featured;
+        let load = match (f.load_ms, f.peak_memory) {
+            (Some(ms), Some(bytes)) => format!(", loaded in {ms:.0} ms, peak memory {} MiB", bytes / (1 << 20)),
+            (Some(ms), None) => format!(", loaded in {ms:.0} ms"),
+            _ => String::new(),
+        };
+        format!(
+            "{materials} materials, {:.1} M texels: decoded, uploaded and mipmapped in {load_ms:.0} ms, of which the mip passes {mip_ms:.1} ms; model {}: {} triangles{load}; {} lights; anisotropic filtering {}",
+            texels as f64 / 1e6,
+            f.name,
+            f.triangles,
+            self.last_lights,
+            if self.renderer.anisotropy { "available" } else { "not available" },
+        )
+    }
+
+    fn reload_shaders(&mut self, gpu: &Gpu) -> Result<(), ShaderError> {
+        self.renderer.reload_shaders(gpu)?;
+        self.sky.reload_shaders(gpu)?;
+        self.post.reload_shaders(gpu)?;
+        Ok(())
+    }
+}

@@ -1,0 +1,183 @@
+//! Textured models lit by chapter 08's lights: [`TexturedRenderer`], one
+//! pipeline with group 0 the [`SceneLights`], group 1 a material and group
+//! 2 the sampler; the [`DrawList`] of models, instances and materials it
+//! draws (chapters 10 and 11 draw theirs with it too); and
+//! [`upload_model`], which puts a model and its materials on the GPU.
+
+use common::chapter::{mesh_pipeline, sampler_entry, storage_entry};
+use common::{Gpu, ShaderError, shader, wgpu};
+use lighting::{HDR_FORMAT, SceneLights};
+
+use crate::demo::Settings;
+use crate::materials::{Materials, SamplerMode, Uploader};
+use crate::mesh::{GpuModel, ModelData, ModelInstance, TexturedVertex};
+
+// ANCHOR: view_options
+/// `ViewOptions` in textured.wgsl.
+#[repr(C)]
+#[derive(Clone, Copy, bytemuck::Pod, bytemuck::Zeroable)]
+struct ViewOptions {
+    flip_green: u32,
+    target_width: f32,
+    _padding: [f32; 2],
+}
+// ANCHOR_END: view_options
+
+// ANCHOR: renderer
+/// Draws textured models lit by chapter 08's lights: one pipeline, group 0
+/// the [`SceneLights`], group 1 a material, group 2 the sampler and view
+/// options. A piece with explicit inputs: the models, their instances and
+/// the materials; chapter 11 draws its boat with it.
+pub struct TexturedRenderer {
+    pipeline_layout: wgpu::PipelineLayout,
+    pipelines: Pipelines,
+    options: wgpu::Buffer,
+    /// One group per sampler mode, in `SamplerMode::ALL`'s order.
+    sampler_groups: Vec<wgpu::BindGroup>,
+    /// Whether the adapter filters anisotropically.
+    pub anisotropy: bool,
+}
+
+/// The fragment shaders: with normal maps, without (no normal map read at
+/// all, so the bench sees what they cost), and the tangent frame view.
+struct Pipelines {
+    normal_mapped: wgpu::RenderPipeline,
+    plain: wgpu::RenderPipeline,
+    frame: wgpu::RenderPipeline,
+}
+
+/// One model drawn with a range of this frame's instances.
+pub struct Draw<'a> {
+    pub model: &'a GpuModel,
+    pub instances: std::ops::Range<u32>,
+}
+
+/// What a frame draws: models with their instances, and the materials
+/// the models' parts refer to.
+pub struct DrawList<'a> {
+    pub materials: &'a Materials,
+    pub instances: &'a wgpu::Buffer,
+    pub draws: Vec<Draw<'a>>,
+}
+
+// ANCHOR_END: renderer
+
+// ANCHOR: draw_list
+impl DrawList<'_> {
+    /// Draws every model, one draw per part with its material in group 1
+    /// (`swapped`: the material's views in the other colour space), into a
+    /// pass whose pipeline and other groups are set. Chapter 10 draws its
+    /// level with this too.
+    pub fn draw(&self, pass: &mut wgpu::RenderPass<'_>, swapped: bool) {
+        pass.set_vertex_buffer(1, self.instances.slice(..));
+        for draw in &self.draws {
+            if draw.instances.is_empty() {
+                continue;
+            }
+            pass.set_vertex_buffer(0, draw.model.vertices.slice(..));
+            pass.set_index_buffer(draw.model.indices.slice(..), wgpu::IndexFormat::Uint32);
+            for part in &draw.model.parts {
+                let material = &self.materials.list[draw.model.first_material + part.material];
+                pass.set_bind_group(1, if swapped { &material.swapped_group } else { &material.group }, &[]);
+                pass.draw_indexed(part.indices.clone(), 0, draw.instances.clone());
+            }
+        }
+    }
+}
+// ANCHOR_END: draw_list
+
+impl TexturedRenderer {
+    pub fn new(gpu: &Gpu, lights: &SceneLights, materials: &Materials) -> Result<Self, ShaderError> {
+        let device = &gpu.device;
+        let layout = device.create_bind_group_layout(&wgpu::BindGroupLayoutDescriptor {
+            label: Some("view"),
+            entries: &[sampler_entry(0), storage_entry(1, wgpu::ShaderStages::FRAGMENT)],
+        });
+        let options = device.create_buffer(&wgpu::BufferDescriptor {
+            label: Some("view options"),
+            size: std::mem::size_of::<ViewOptions>() as u64,
+            // Storage, not uniform: the shader branches on it (see `storage_entry`).
+            usage: wgpu::BufferUsages::STORAGE | wgpu::BufferUsages::COPY_DST,
+            mapped_at_creation: false,
+        });
+        let anisotropy =
+            gpu.adapter.get_downlevel_capabilities().flags.contains(wgpu::DownlevelFlags::ANISOTROPIC_FILTERING);
+        let sampler_groups = SamplerMode::ALL
+            .iter()
+            .map(|mode| {
+                let sampler = device.create_sampler(&mode.descriptor(anisotropy));
+                device.create_bind_group(&wgpu::BindGroupDescriptor {
+                    label: Some("view"),
+                    layout: &layout,
+                    entries: &[
+                        wgpu::BindGroupEntry { binding: 0, resource: wgpu::BindingResource::Sampler(&sampler) },
+                        wgpu::BindGroupEntry { binding: 1, resource: options.as_entire_binding() },
+                    ],
+                })
+            })
+            .collect();
+        let pipeline_layout = device.create_pipeline_layout(&wgpu::PipelineLayoutDescriptor {
+            label: Some("textured"),
+            bind_group_layouts: &[Some(&lights.layout), Some(&materials.layout), Some(&layout)],
+            immediate_size: 0,
+        });
+        let pipelines = Self::pipelines(gpu, &pipeline_layout)?;
+        Ok(Self { pipeline_layout, pipelines, options, sampler_groups, anisotropy })
+    }
+
+    fn pipelines(gpu: &Gpu, layout: &wgpu::PipelineLayout) -> Result<Pipelines, ShaderError> {
+        let module = shader!("textures/textured.wgsl", imports: ["lighting/lights.wgsl", "textures/surface.wgsl"])
+            .module(gpu)?;
+        let buffers = [Some(TexturedVertex::LAYOUT), Some(ModelInstance::LAYOUT)];
+        let pipeline =
+            |fragment| mesh_pipeline(&gpu.device, layout, &module, ("vs_main", fragment), &buffers, HDR_FORMAT.into());
+        gpu.catch_validation(|| Pipelines {
+            normal_mapped: pipeline("fs_normal_mapped"),
+            plain: pipeline("fs_plain"),
+            frame: pipeline("fs_frame"),
+        })
+        .map_err(ShaderError)
+    }
+
+    pub fn reload_shaders(&mut self, gpu: &Gpu) -> Result<(), ShaderError> {
+        self.pipelines = Self::pipelines(gpu, &self.pipeline_layout)?;
+        Ok(())
+    }
+
+    // ANCHOR: draw
+    /// Draws `draws` into `pass`, whose group 0 must already be the scene's
+    /// lights; `instances` holds every draw's instances.
+    pub fn draw(
+        &self,
+        gpu: &Gpu,
+        pass: &mut wgpu::RenderPass<'_>,
+        settings: &Settings,
+        target_width: u32,
+        list: &DrawList,
+    ) {
+        let options = ViewOptions {
+            flip_green: u32::from(settings.flip_green),
+            target_width: target_width as f32,
+            _padding: [0.0; 2],
+        };
+        gpu.queue.write_buffer(&self.options, 0, bytemuck::bytes_of(&options));
+        let mode = SamplerMode::ALL.iter().position(|m| *m == settings.sampler).unwrap_or(0);
+        pass.set_pipeline(match (settings.show_frame, settings.normal_maps) {
+            (true, _) => &self.pipelines.frame,
+            (false, true) => &self.pipelines.normal_mapped,
+            (false, false) => &self.pipelines.plain,
+        });
+        pass.set_bind_group(2, &self.sampler_groups[mode], &[]);
+        list.draw(pass, settings.swapped_colour_spaces);
+    }
+    // ANCHOR_END: draw
+}
+
+/// Uploads `model`'s materials and then the model.
+pub fn upload_model(up: &mut Uploader, materials: &mut Materials, model: &ModelData, label: &str) -> GpuModel {
+    let first = materials.list.len();
+    for desc in &model.materials {
+        materials.add(up, desc);
+    }
+    GpuModel::upload(&up.gpu.device, model, first, label)
+}

@@ -1,0 +1,601 @@
+//! The chapter itself: the settings each view applies, the views, the side
+//! camera and the part of the level it sees, who plays (the script or the
+//! keys), and `impl Chapter`, which renders the shadow map, then the level
+//! through the shadowed renderer, then chapter 08's post chain.
+
+use std::path::Path;
+
+use common::args::UsageError;
+use common::glam::{Mat4, Vec2, Vec3, Vec4};
+use common::{
+    Camera, Chapter, ChapterFlag, FlagValues, Frame, Gpu, Input, ShaderError, Target, View, anyhow, egui, wgpu,
+    winit::keyboard::KeyCode,
+};
+use lighting::bloom::BloomSettings;
+use lighting::lights::Daylight;
+use lighting::{CitySky, Highlight, LoopOptions, PostChain, PostOutput, PostSettings, SceneLights};
+use textures::materials::{Materials, Uploader};
+use textures::mesh::{GpuModel, ModelInstance};
+use textures::mipmaps::MipMaker;
+use textures::{Draw, DrawList, obj, upload_model};
+
+use crate::game::{self, Controls, Game, Level, PropKind};
+use crate::lines::{LineList, Lines};
+use crate::parallax::Parallax;
+use crate::physics;
+use crate::scene;
+use crate::shadow_map::{self, Bias, Cull, Filter, LightBox, ShadowMap, ShadowSettings, fit_light};
+use crate::shadowed_renderer::ShadowedRenderer;
+
+// ANCHOR: views
+pub const VIEWS: &[View] = &[
+    View::mode("default", "the game mid-jump, with soft shadows that harden where they touch (PCSS)"),
+    View::mode("hard", "one comparison per pixel: the shadow map's texels are the shadow's edge"),
+    View::mode("pcf-3x3", "nine comparisons a texel apart, averaged: a soft edge one texel wide"),
+    View::mode("poisson", "sixteen comparisons on a Poisson disk, turned per pixel: the seed's filter"),
+    View::mode("acne", "no bias: lit surfaces shadow themselves in stripes"),
+    View::mode("peter-panning", "far too much bias: shadows come loose from what casts them"),
+    View::mode("shadow-map", "the sun's depth, full screen: near the sun dark, far light"),
+    View::mode("light-frustum", "the sun's box (yellow) around the part of the level the camera sees (cyan)"),
+    View::mode("collision-boxes", "the boxes the physics works with, drawn over the scene"),
+    View::mode("parallax", "the background layers tinted by depth: red near, green middle, blue far"),
+    View::bench("map-1024", "Poisson filtering with a 1024² shadow map"),
+    View::bench("map-4096", "Poisson filtering with a 4096² shadow map"),
+    View::bench("no-shadows", "no lookup at all: what the filters are measured against"),
+];
+// ANCHOR_END: views
+
+/// What the camera shows.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Show {
+    /// The lit scene.
+    Scene,
+    /// The shadow map, full screen.
+    ShadowMap,
+    /// How much sun reaches each pixel (red) and whether its surface faces
+    /// the sun (green), unlit: what the shadow tests count.
+    Sunlit,
+}
+
+/// What the sun's box is fitted to.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Fit {
+    /// The part of the level the camera sees.
+    Visible,
+    /// The whole level: simpler, and every texel three times as coarse.
+    WholeLevel,
+}
+
+/// What a view decides.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Settings {
+    pub shadow: ShadowSettings,
+    pub fit: Fit,
+    /// The time of day as a phase (0.25 sunrise, 0.5 noon, 0.75 sunset).
+    pub phase: f32,
+    /// Whether the sun moves on by itself, a day every [`DAY_SECONDS`].
+    pub sun_moves: bool,
+    pub show: Show,
+    pub collision_boxes: bool,
+    pub light_box: bool,
+    pub tint_layers: bool,
+    /// How far behind the level the camera stands, metres.
+    pub camera_distance: f32,
+    pub bloom: bool,
+}
+
+impl Settings {
+    pub fn for_view(name: &str) -> Self {
+        let mut s = Self {
+            shadow: ShadowSettings { filter: Filter::Pcss, ..Default::default() },
+            fit: Fit::Visible,
+            // Nine in the morning: the sun 35° high, on the left, in front.
+            phase: 0.375,
+            sun_moves: false,
+            show: Show::Scene,
+            collision_boxes: false,
+            light_box: false,
+            tint_layers: false,
+            camera_distance: CAMERA_DISTANCE,
+            bloom: true,
+        };
+        match name {
+            // The filters side by side, on a 512² map: texels of 8.8 cm,
+            // big enough to see what each filter does to them.
+            "hard" | "pcf-3x3" | "poisson" => {
+                s.shadow.size = 512;
+                s.shadow.filter = match name {
+                    "hard" => Filter::Hard,
+                    "pcf-3x3" => Filter::Pcf3x3,
+                    _ => Filter::Poisson,
+                };
+            }
+            "acne" => {
+                s.shadow.filter = Filter::Hard;
+                s.shadow.bias = Bias::NONE;
+            }
+            "peter-panning" => {
+                s.shadow.filter = Filter::Hard;
+                s.shadow.bias = Bias::TOO_MUCH;
+            }
+            "shadow-map" => s.show = Show::ShadowMap,
+            "light-frustum" => {
+                s.light_box = true;
+                s.camera_distance = 60.0;
+            }
+            "collision-boxes" => s.collision_boxes = true,
+            "parallax" => s.tint_layers = true,
+            "map-1024" | "map-4096" => {
+                s.shadow.filter = Filter::Poisson;
+                s.shadow.size = if name == "map-1024" { 1024 } else { 4096 };
+            }
+            "no-shadows" => s.shadow.filter = Filter::Off,
+            _ => {}
+        }
+        s
+    }
+}
+
+// ANCHOR: camera
+/// How far in front of the level the camera stands, metres.
+pub const CAMERA_DISTANCE: f32 = 11.0;
+
+/// The side camera: `distance` in front of the level's middle (z = 0),
+/// looking down at the player at about 17°, so that the ground where
+/// shadows fall shows.
+pub fn side_camera(player: Vec2, distance: f32, aspect: f32) -> Camera {
+    let eye = Vec3::new(player.x, player.y + 0.3 * distance, distance);
+    Camera { near: 0.5, far: 400.0, ..Camera::looking_at(eye, Vec3::new(player.x, player.y, 0.0), aspect) }
+}
+
+/// The part of the level the camera sees: where the corners of its view
+/// cross the level's front and back faces (z = ±`half_depth`). The sun's
+/// box is fitted around these eight points.
+pub fn visible_part(camera: &Camera, half_depth: f32) -> [Vec3; 8] {
+    let inverse = camera.view_projection().inverse();
+    std::array::from_fn(|i| {
+        let ndc = Vec3::new(if i & 1 == 0 { -1.0 } else { 1.0 }, if i & 2 == 0 { -1.0 } else { 1.0 }, 1.0);
+        let far = inverse.project_point3(ndc);
+        let z = if i & 4 == 0 { half_depth } else { -half_depth };
+        let t = (z - camera.position.z) / (far.z - camera.position.z);
+        camera.position + (far - camera.position) * t
+    })
+}
+// ANCHOR_END: camera
+
+/// The models the level is drawn with.
+struct Models {
+    level: GpuModel,
+    tree: GpuModel,
+    rock: GpuModel,
+    krate: GpuModel,
+    player: GpuModel,
+}
+
+// ANCHOR: play
+/// Who plays: the script (pictures, and a window until a key is pressed)
+/// or the keys.
+enum Play {
+    /// The scripted run at the scene time, kept so that the next frame
+    /// continues from it rather than replaying from the start. (To see it
+    /// again in a window, set the overlay's scene time back to 0.)
+    Demo(Game),
+    Keys(Game),
+}
+
+/// How long a day lasts when the sun moves, seconds.
+pub const DAY_SECONDS: f32 = 120.0;
+
+/// The keys' controls this frame. Pressing left and right together
+/// cancels out; jump is held, so holding Space jumps again on landing.
+pub fn controls_from(input: &Input) -> Controls {
+    let any = |keys: &[KeyCode]| keys.iter().any(|k| input.held(*k));
+    Controls {
+        left: any(&[KeyCode::KeyA, KeyCode::ArrowLeft]),
+        right: any(&[KeyCode::KeyD, KeyCode::ArrowRight]),
+        jump: any(&[KeyCode::Space, KeyCode::KeyW, KeyCode::ArrowUp]),
+    }
+}
+// ANCHOR_END: play
+
+pub struct ShadowsChapter {
+    pub settings: Settings,
+    level: Level,
+    solids: Vec<physics::Aabb>,
+    play: Play,
+    materials: Materials,
+    models: Models,
+    /// Every instance: the level's and the props', which never move, then
+    /// the player's, written each frame.
+    instances: wgpu::Buffer,
+    /// Which model (an index into `Models`' order) draws which instances.
+    draws: Vec<(usize, std::ops::Range<u32>)>,
+    /// The box around everything that casts a shadow.
+    bounds: (Vec3, Vec3),
+    renderer: ShadowedRenderer,
+    pub shadow_map: ShadowMap,
+    map_view: shadow_map::MapView,
+    parallax: Parallax,
+    lines: Lines,
+    scene_lights: SceneLights,
+    sky: CitySky,
+    post: PostChain,
+    target: Target,
+    /// This frame's light box, for the overlay.
+    last_box: Option<LightBox>,
+    /// The size --shadow-map-size asked for.
+    size_flag: Option<u32>,
+    pub warnings: Vec<String>,
+}
+
+impl ShadowsChapter {
+    /// The game the keys are playing, once a key has taken over.
+    pub fn played_by_keys(&self) -> Option<&Game> {
+        match &self.play {
+            Play::Keys(game) => Some(game),
+            Play::Demo(_) => None,
+        }
+    }
+
+    /// The game as it stands at scene time `time`.
+    fn game_at(&mut self, time: f32) -> Game {
+        match &mut self.play {
+            Play::Keys(game) => *game,
+            Play::Demo(game) => {
+                // The script ends at 21 s and the player stands still from
+                // then on: a time past a minute is a minute, so that
+                // `--time 1e9` does not simulate thirty years.
+                let steps = (time.min(60.0) / game::STEP).round() as u64;
+                if steps < game.steps {
+                    *game = Game::new(&self.level);
+                }
+                while game.steps < steps {
+                    let controls = game::script(game.time());
+                    game.step(&self.solids, controls);
+                }
+                *game
+            }
+        }
+    }
+
+    /// The instances of the level (one), the trees, rocks and crates, and a
+    /// last one for the player, with the draws that use them.
+    fn level_instances(level: &Level, game: &Game) -> (Vec<ModelInstance>, Vec<(usize, std::ops::Range<u32>)>) {
+        let mut instances = vec![ModelInstance::new(Mat4::IDENTITY, 1.0)];
+        let mut draws = vec![(0, 0..1)];
+        for (which, kind) in [(1, PropKind::Tree), (2, PropKind::Rock), (3, PropKind::Crate)] {
+            let start = instances.len() as u32;
+            instances.extend(scene::prop_instances(level, kind));
+            draws.push((which, start..instances.len() as u32));
+        }
+        let start = instances.len() as u32;
+        instances.push(scene::player_instance(game));
+        draws.push((4, start..start + 1));
+        (instances, draws)
+    }
+
+    /// Moves the player's instance, the last one, to where `game` has it.
+    fn place_player(&self, gpu: &Gpu, game: &Game) {
+        let size = std::mem::size_of::<ModelInstance>() as u64;
+        let offset = self.instances.size() - size;
+        gpu.queue.write_buffer(&self.instances, offset, bytemuck::bytes_of(&scene::player_instance(game)));
+    }
+
+    /// The collision boxes, as the physics sees them, in the plane z = 0.
+    fn collision_lines(&self, game: &Game) -> LineList {
+        let mut list = LineList::default();
+        let solid = Vec4::new(0.2, 1.0, 0.3, 1.0);
+        for aabb in &self.solids {
+            list.rectangle(aabb.min.extend(0.0), aabb.max.extend(0.0), solid);
+        }
+        let player = if game.on_floor { Vec4::new(1.0, 0.85, 0.1, 1.0) } else { Vec4::new(1.0, 0.25, 0.2, 1.0) };
+        list.rectangle(game.player.aabb.min.extend(0.0), game.player.aabb.max.extend(0.0), player);
+        list
+    }
+}
+
+impl Chapter for ShadowsChapter {
+    const NAME: &'static str = env!("CARGO_PKG_NAME");
+    // Measured mean FLIP 0.0187; outliers at most 0.1%.
+    const BROWSER_TOLERANCE: common::Tolerance = common::Tolerance { mean: 0.028, outliers: 0.002 };
+    const TITLE: &'static str = "10 · Shadows";
+    const VIEWS: &'static [View] = VIEWS;
+    /// Mid-jump: the player is in the air over the first wall.
+    const SNAPSHOT_TIME: f32 = 5.7;
+    const BENCH_FRAMES: u32 = 10;
+    const BENCH_BASELINE: Option<&'static str> = Some("hard");
+    const KEYS: &'static [(&'static str, &'static str)] =
+        &[("A D / ← →", "run (the first key takes over from the demo)"), ("Space / W / ↑", "jump")];
+    const FLAGS: &'static [ChapterFlag] = &[ChapterFlag {
+        name: "shadow-map-size",
+        value_name: "TEXELS",
+        help: "The shadow map's size along each side, 512 to 4096 (clamped to what the adapter allows)",
+    }];
+
+    fn gpu_needs() -> common::GpuNeeds {
+        common::GpuNeeds { required: wgpu::Features::empty(), optional: PostChain::OPTIONAL_FEATURES }
+    }
+
+    fn new(gpu: &Gpu, target: Target) -> anyhow::Result<Self> {
+        let device = &gpu.device;
+        let level = game::level();
+        let read: obj::ReadFile = &scene::read;
+        let mut warnings = Vec::new();
+        let mut load = |path: &str| -> anyhow::Result<obj::LoadedModel> {
+            let loaded = obj::load(Path::new(path), read)?;
+            warnings.extend(loaded.warnings.iter().cloned());
+            Ok(loaded)
+        };
+        let tree = load(scene::prop_model(PropKind::Tree))?;
+        let rock = load(scene::prop_model(PropKind::Rock))?;
+        let krate = load(scene::prop_model(PropKind::Crate))?;
+        let player = load(scene::PLAYER_MODEL)?;
+        let scene_lights = SceneLights::new(device);
+        let mut mips = MipMaker::new(gpu)?;
+        let mut up = Uploader::new(gpu, &mut mips, read);
+        let mut materials = Materials::new(&mut up);
+        let models = Models {
+            level: upload_model(&mut up, &mut materials, &scene::level_model(&level), "level"),
+            tree: upload_model(&mut up, &mut materials, &tree.model, "tree"),
+            rock: upload_model(&mut up, &mut materials, &rock.model, "rock"),
+            krate: upload_model(&mut up, &mut materials, &krate.model, "crate"),
+            player: upload_model(&mut up, &mut materials, &player.model, "player"),
+        };
+        let parallax = Parallax::new(gpu, &mut up, &scene_lights, &level)?;
+        up.finish();
+        warnings.append(&mut materials.warnings);
+        for warning in &warnings {
+            eprintln!("warning: {warning}");
+        }
+        let shadow_map = ShadowMap::new(gpu, shadow_map::DEFAULT_SIZE)?;
+        let renderer = ShadowedRenderer::new(gpu, &scene_lights, &materials, &shadow_map)?;
+        let map_view = shadow_map::MapView::new(gpu, target.format)?;
+        let sky = CitySky::new(gpu, &scene_lights)?;
+        let post = PostChain::new(gpu, target)?;
+        let solids = level.solids();
+        let bounds = scene::level_bounds(&level);
+        let (instances, draws) = Self::level_instances(&level, &Game::new(&level));
+        let instances = wgpu::util::DeviceExt::create_buffer_init(
+            device,
+            &wgpu::util::BufferInitDescriptor {
+                label: Some("instances"),
+                contents: bytemuck::cast_slice(&instances),
+                usage: wgpu::BufferUsages::VERTEX | wgpu::BufferUsages::COPY_DST,
+            },
+        );
+        Ok(Self {
+            settings: Settings::for_view("default"),
+            play: Play::Demo(Game::new(&level)),
+            solids,
+            level,
+            materials,
+            models,
+            instances,
+            draws,
+            bounds,
+            renderer,
+            shadow_map,
+            map_view,
+            parallax,
+            lines: Lines::new(gpu, target.format)?,
+            scene_lights,
+            sky,
+            post,
+            target,
+            last_box: None,
+            size_flag: None,
+            warnings,
+        })
+    }
+
+    fn apply_flags(&mut self, gpu: &Gpu, flags: &FlagValues) -> anyhow::Result<()> {
+        let Some(value) = flags.get("shadow-map-size") else { return Ok(()) };
+        let size: u32 = value.parse().map_err(|_| {
+            UsageError(format!("--shadow-map-size: '{value}' is not a whole number of texels (512 to 4096)"))
+        })?;
+        self.size_flag = Some(size);
+        self.settings.shadow.size = size;
+        self.shadow_map.resize(&gpu.device, size);
+        if let Some(note) = &self.shadow_map.note {
+            eprintln!("note: {note}");
+        }
+        Ok(())
+    }
+
+    fn resize(&mut self, gpu: &Gpu, target: Target) {
+        self.target = target;
+        self.post.resize(gpu, target);
+    }
+
+    fn select_view(&mut self, view: usize) {
+        self.settings = Settings::for_view(VIEWS[view].name);
+        // --shadow-map-size wins over what a view asks for.
+        if let Some(size) = self.size_flag {
+            self.settings.shadow.size = size;
+        }
+    }
+
+    // ANCHOR: update
+    fn update(&mut self, input: &Input, dt: f32) {
+        let controls = controls_from(input);
+        if let Play::Demo(game) = self.play
+            && (controls.left || controls.right || controls.jump)
+        {
+            self.play = Play::Keys(game);
+        }
+        if let Play::Keys(game) = &mut self.play {
+            // Fixed steps; a long pause (a hidden window) is capped, not
+            // integrated in one go.
+            game.advance(&self.solids, controls, dt);
+        }
+    }
+    // ANCHOR_END: update
+
+    // ANCHOR: render
+    fn render(&mut self, gpu: &Gpu, frame: &mut Frame) {
+        let s = self.settings;
+        let game = self.game_at(frame.time);
+        let player = game.player.aabb.centre();
+        let camera = side_camera(player, s.camera_distance, self.target.aspect());
+        // The sun's box is fitted to what the game's camera sees, whichever
+        // camera draws the picture.
+        let game_camera = side_camera(player, CAMERA_DISTANCE, self.target.aspect());
+        let bounds = self.bounds;
+        let visible = visible_part(&game_camera, bounds.1.z);
+        let focus: Vec<Vec3> = match s.fit {
+            Fit::Visible => visible.to_vec(),
+            Fit::WholeLevel => (0..8)
+                .map(|i| {
+                    let pick = |bit, lo: f32, hi: f32| if i & bit == 0 { lo } else { hi };
+                    Vec3::new(
+                        pick(1, bounds.0.x, bounds.1.x),
+                        pick(2, bounds.0.y, bounds.1.y),
+                        pick(4, bounds.0.z, bounds.1.z),
+                    )
+                })
+                .collect(),
+        };
+        let phase = if s.sun_moves { s.phase + frame.time / DAY_SECONDS } else { s.phase };
+        let day: Daylight = scene::sun_at(phase.rem_euclid(1.0));
+        // The map's size first: the box's texels are fitted to it.
+        self.shadow_map.resize(&gpu.device, s.shadow.size);
+        let light = fit_light(day.direction, &focus, bounds, self.shadow_map.size);
+        self.last_box = Some(light);
+        self.shadow_map.write(gpu, &light, &s.shadow);
+        let options = LoopOptions { culling: false, highlight: Highlight::BlinnPhong, heat_map: false };
+        self.scene_lights.write(gpu, &camera, &day, &[], &Default::default(), options);
+        self.sky.write(gpu, &camera, &day);
+        self.place_player(gpu, &game);
+        let m = &self.models;
+        let models = [&m.level, &m.tree, &m.rock, &m.krate, &m.player];
+        let list = DrawList {
+            materials: &self.materials,
+            instances: &self.instances,
+            draws: self
+                .draws
+                .iter()
+                .map(|(i, instances)| Draw { model: models[*i], instances: instances.clone() })
+                .collect(),
+        };
+
+        // Pass one: the sun's view, depth only.
+        self.shadow_map.render(gpu, frame.encoder, frame.timer, &s.shadow, &list);
+        if s.show == Show::ShadowMap {
+            let range = visible.map(|p| light.view_proj.project_point3(p).z);
+            let (lo, hi) = range.iter().fold((f32::MAX, f32::MIN), |(lo, hi), z| (lo.min(*z), hi.max(*z)));
+            self.map_view.draw(gpu, frame, &self.shadow_map, (lo, hi), self.target.aspect());
+            return;
+        }
+
+        // Pass two: the camera's view, each fragment asking the map.
+        {
+            let mut pass = common::chapter::scene_pass(
+                frame.encoder,
+                frame.timer,
+                "scene",
+                &self.post.hdr().colour,
+                wgpu::Color::BLACK,
+                &self.post.hdr().depth,
+            );
+            pass.set_bind_group(0, &self.scene_lights.group, &[]);
+            self.renderer.draw(&mut pass, &self.shadow_map, &list, s.show == Show::Sunlit);
+            if s.show == Show::Scene {
+                self.parallax.draw(gpu, &mut pass, day.horizon, s.tint_layers);
+                self.sky.draw(&mut pass);
+            }
+        }
+        // What the tests count is shown as it is, not tone-mapped.
+        let output = if s.show == Show::Sunlit { PostOutput::RawHdr } else { PostOutput::Picture };
+        let bloom = s.bloom.then(BloomSettings::default);
+        self.post.finish(gpu, frame, &PostSettings { output, exposure: 1.0, bloom });
+
+        // Lines over the picture.
+        let mut lines = LineList::default();
+        if s.collision_boxes {
+            lines = self.collision_lines(&game);
+        }
+        if s.light_box {
+            lines.box_edges(&light.corners(), Vec4::new(1.0, 0.85, 0.1, 1.0));
+            lines.box_edges(&visible, Vec4::new(0.2, 0.9, 1.0, 1.0));
+        }
+        self.lines.draw(gpu, frame.encoder, frame.timer, frame.target, camera.view_projection(), &lines);
+    }
+    // ANCHOR_END: render
+
+    fn ui(&mut self, ui: &mut egui::Ui) {
+        if let Play::Keys(_) = self.play
+            && ui.button("replay the demo").clicked()
+        {
+            self.play = Play::Demo(Game::new(&self.level));
+        }
+        let s = &mut self.settings;
+        ui.horizontal_wrapped(|ui| {
+            ui.label("filter");
+            for filter in Filter::ALL {
+                ui.radio_value(&mut s.shadow.filter, filter, filter.label());
+            }
+        });
+        ui.horizontal_wrapped(|ui| {
+            ui.label("shadow map");
+            for size in shadow_map::SIZES {
+                ui.radio_value(&mut s.shadow.size, size, format!("{size}²"));
+            }
+        });
+        if let Some(note) = &self.shadow_map.note {
+            ui.colored_label(egui::Color32::from_rgb(230, 180, 60), note);
+        }
+        ui.add(egui::Slider::new(&mut s.shadow.bias.slope_scale, 0.0..=20.0).text("slope-scaled bias"));
+        ui.add(egui::Slider::new(&mut s.shadow.bias.constant, 0..=100_000).text("constant bias (depth steps)"));
+        ui.add(egui::Slider::new(&mut s.shadow.bias.normal_offset, 0.0..=8.0).text("normal offset (texels)"));
+        ui.add(egui::Slider::new(&mut s.shadow.radius, 0.5..=8.0).text("Poisson radius (texels)"));
+        ui.add(egui::Slider::new(&mut s.shadow.light_width, 0.005..=0.2).logarithmic(true).text("PCSS light width"));
+        ui.horizontal(|ui| {
+            ui.label("shadow pass culls");
+            ui.radio_value(&mut s.shadow.cull, Cull::Back, "back faces");
+            ui.radio_value(&mut s.shadow.cull, Cull::Front, "front faces");
+            ui.radio_value(&mut s.shadow.cull, Cull::None, "nothing");
+        });
+        ui.horizontal(|ui| {
+            ui.label("fit the sun's box to");
+            ui.radio_value(&mut s.fit, Fit::Visible, "what the camera sees");
+            ui.radio_value(&mut s.fit, Fit::WholeLevel, "the whole level");
+        });
+        ui.horizontal(|ui| {
+            ui.add(egui::Slider::new(&mut s.phase, 0.2..=0.8).text("time of day (0.25 sunrise, 0.75 sunset)"));
+            ui.checkbox(&mut s.sun_moves, "moving");
+        });
+        ui.checkbox(&mut s.collision_boxes, "collision boxes");
+        ui.checkbox(&mut s.light_box, "the sun's box");
+        ui.checkbox(&mut s.tint_layers, "tint the layers by depth");
+        if let Some(light) = self.last_box {
+            ui.label(format!(
+                "one shadow-map texel covers {:.1} cm; the box is {:.0} m deep",
+                light.texel * 100.0,
+                light.depth
+            ));
+        }
+        for warning in &self.warnings {
+            ui.colored_label(egui::Color32::from_rgb(230, 180, 60), warning);
+        }
+    }
+
+    fn stats(&mut self, _gpu: &Gpu) -> String {
+        let texel = self.last_box.map_or(0.0, |b| b.texel * 100.0);
+        format!(
+            "shadow map {0}² ({1}), one texel {texel:.2} cm",
+            self.shadow_map.size,
+            self.settings.shadow.filter.label()
+        )
+    }
+
+    fn reload_shaders(&mut self, gpu: &Gpu) -> Result<(), ShaderError> {
+        self.renderer.reload_shaders(gpu)?;
+        self.shadow_map.reload_shaders(gpu)?;
+        self.map_view.reload_shaders(gpu)?;
+        self.parallax.reload_shaders(gpu)?;
+        self.lines.reload_shaders(gpu)?;
+        self.sky.reload_shaders(gpu)?;
+        self.post.reload_shaders(gpu)?;
+        Ok(())
+    }
+}
