@@ -131,7 +131,7 @@ async fn still_picture<C: Chapter>(args: &Args) -> anyhow::Result<()> {
     let time = args.time.unwrap_or(C::SNAPSHOT_TIME);
     let target = Target { format: scene_format, width, height };
     let mut chapter = crate::chapter::create::<C>(&gpu, target, &args.chapter_flags)?;
-    crate::chapter::show_view(&mut chapter, view);
+    chapter.select_view(view);
     let frame = match surface.get_current_texture() {
         wgpu::CurrentSurfaceTexture::Success(frame) | wgpu::CurrentSurfaceTexture::Suboptimal(frame) => frame,
         other => anyhow::bail!("the canvas gave no texture to draw into ({other:?})"),

@@ -53,6 +53,49 @@ impl View {
     }
 }
 
+// ANCHOR: view_table
+/// One row of a chapter's view table, the one place a view is named: the
+/// [`View`], the chapter's settings that choosing it applies (`S`, all of
+/// them, whatever the view before), and for a preset the camera it places
+/// (`P`, the chapter's own enum of cameras). A mode has no camera, so it
+/// never moves the learner's.
+#[derive(Clone, Copy, Debug)]
+pub struct ViewRow<S, P> {
+    pub view: View,
+    pub settings: S,
+    pub camera: Option<P>,
+}
+
+impl<S, P> ViewRow<S, P> {
+    /// A way of drawing: applies `settings`, leaves the camera alone.
+    pub const fn mode(name: &'static str, about: &'static str, settings: S) -> Self {
+        Self { view: View::mode(name, about), settings, camera: None }
+    }
+
+    /// A place to look from: applies `settings` and puts the camera at `camera`.
+    pub const fn preset(name: &'static str, about: &'static str, settings: S, camera: P) -> Self {
+        Self { view: View::preset(name, about), settings, camera: Some(camera) }
+    }
+
+    /// A workload for `--bench`, not a snapshot (see [`View::bench`]).
+    pub const fn bench(name: &'static str, about: &'static str, settings: S) -> Self {
+        Self { view: View::bench(name, about), settings, camera: None }
+    }
+}
+
+/// The views of a table, in its order: a chapter's [`Chapter::VIEWS`] is
+/// `&views_of(&TABLE)`.
+pub const fn views_of<S, P, const N: usize>(table: &[ViewRow<S, P>; N]) -> [View; N] {
+    let mut views = [View::mode("", ""); N];
+    let mut i = 0;
+    while i < N {
+        views[i] = table[i].view;
+        i += 1;
+    }
+    views
+}
+// ANCHOR_END: view_table
+
 /// How far a picture may be from its reference and still pass, by NVIDIA's
 /// FLIP metric (the snapshot tests compute it): a mean over the image and a
 /// share of visibly wrong pixels.
@@ -198,10 +241,21 @@ pub trait Chapter: Sized + 'static {
     /// resources such as the depth buffer.
     fn resize(&mut self, _gpu: &Gpu, _target: Target) {}
 
-    /// The learner (or `--view`) picked `view`: set everything the view
-    /// decides, whatever the view before it was, except the camera. Call it
-    /// through [`show_view`], which also places the camera for presets.
-    fn select_view(&mut self, _view: usize) {}
+    /// Applies what `view` decides, whatever the view before it was, except
+    /// the camera: its row's settings in the chapter's view table. Only
+    /// [`Chapter::select_view`] calls it.
+    fn apply_view(&mut self, _view: usize) {}
+
+    /// The learner (or `--view`, or a test) picked `view`: its settings,
+    /// and for a preset, its camera. The one way to switch views; chapters
+    /// implement [`Chapter::apply_view`] and [`Chapter::reset_camera`]
+    /// instead of this.
+    fn select_view(&mut self, view: usize) {
+        self.apply_view(view);
+        if Self::VIEWS[view].kind == ViewKind::Preset {
+            self.reset_camera(view);
+        }
+    }
 
     /// Puts the camera where `view` starts: the preset's camera, or for a
     /// mode, the chapter's starting camera. The overlay's "reset camera"
@@ -245,15 +299,6 @@ pub fn create<C: Chapter>(gpu: &Gpu, target: Target, flags: &FlagValues) -> anyh
     let mut chapter = C::new(gpu, target)?;
     chapter.apply_flags(gpu, flags)?;
     Ok(chapter)
-}
-
-/// Switches `chapter` to `view` as the overlay and `--view` do: the view's
-/// settings, and for a preset, its camera.
-pub fn show_view<C: Chapter>(chapter: &mut C, view: usize) {
-    chapter.select_view(view);
-    if C::VIEWS[view].kind == ViewKind::Preset {
-        chapter.reset_camera(view);
-    }
 }
 
 /// Looks a view up by name.

@@ -201,7 +201,7 @@ pub fn render_image_with<C: Chapter>(
 ) -> anyhow::Result<image::RgbaImage> {
     let target = Target { format: OFFSCREEN_FORMAT, width: request.width, height: request.height };
     let mut chapter = crate::chapter::create::<C>(gpu, target, flags)?;
-    crate::chapter::show_view(&mut chapter, request.view);
+    chapter.select_view(request.view);
     capture(gpu, &mut chapter, target, request.time, request.view)
 }
 
@@ -238,7 +238,7 @@ pub fn bench<C: Chapter>(
     let setup = Instant::now();
     let mut chapter = crate::chapter::create::<C>(gpu, target, flags)?;
     let setup_ms = setup.elapsed().as_secs_f64() * 1e3;
-    crate::chapter::show_view(&mut chapter, request.view);
+    chapter.select_view(request.view);
     let offscreen = Offscreen::new(&gpu.device, target);
     let timer = PassTimer::new(&gpu.device, 16);
 

@@ -36,7 +36,7 @@ pub mod web;
 mod window;
 
 pub use camera::{Camera, FlyController};
-pub use chapter::{Chapter, ChapterFlag, FlagValues, Frame, Target, Tolerance, View, ViewKind, show_view};
+pub use chapter::{Chapter, ChapterFlag, FlagValues, Frame, Target, Tolerance, View, ViewKind, ViewRow, views_of};
 pub use cli::run;
 pub use gpu::{Gpu, GpuNeeds, NoAdapter};
 pub use input::Input;

@@ -6,7 +6,6 @@ use std::collections::VecDeque;
 
 use winit::window::Window;
 
-use crate::chapter::show_view;
 use crate::memory::MemoryUse;
 use crate::{Chapter, Gpu};
 
@@ -185,7 +184,7 @@ impl<C: Chapter> Panel<'_, C> {
                 }
             });
             if *self.view != before {
-                show_view(self.chapter, *self.view);
+                self.chapter.select_view(*self.view);
             }
             ui.small(C::VIEWS[*self.view].about);
             if let Some(c) = self.chapter.camera_mut() {

@@ -22,7 +22,6 @@ use winit::keyboard::{KeyCode, PhysicalKey};
 use winit::window::{CursorGrabMode, Window, WindowId};
 
 use crate::args::{Args, check_size};
-use crate::chapter::show_view;
 use crate::memory::MemoryUse;
 use crate::overlay::{FrameHistory, Overlay, Panel};
 use crate::probe::{self, Probe};
@@ -302,7 +301,7 @@ impl Opening {
         let view = args.view_index::<C>();
         let target = Target { format: scene_format, width: config.width, height: config.height };
         let mut chapter = crate::chapter::create::<C>(&gpu, target, &args.chapter_flags)?;
-        show_view(&mut chapter, view);
+        chapter.select_view(view);
         let overlay = Overlay::new(&window, &gpu, overlay_format);
 
         let watcher = shader::ShaderWatcher::start();

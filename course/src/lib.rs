@@ -12,7 +12,7 @@
 use std::process::ExitCode;
 
 use common::headless::{Offscreen, draw_frame, read_texture};
-use common::{Camera, Chapter, Gpu, GpuNeeds, PassTimer, Target, Tolerance, View, anyhow, image, show_view};
+use common::{Camera, Chapter, Gpu, GpuNeeds, PassTimer, Target, Tolerance, View, anyhow, image};
 
 /// Every chapter, in book order: its type, the part of the book it is in,
 /// the view the README shows, and what it teaches in a line (the README's
@@ -193,7 +193,7 @@ struct Instance<C: Chapter> {
 
 impl<C: Chapter> AnyChapter for Instance<C> {
     fn show(&mut self, view: usize) {
-        show_view(&mut self.chapter, view);
+        self.chapter.select_view(view);
     }
 
     fn reset_camera(&mut self, view: usize) {

@@ -178,7 +178,7 @@ impl Chapter for FogChapter {
         self.depth = depth_view(&gpu.device, target.width, target.height);
     }
 
-    fn select_view(&mut self, view: usize) {
+    fn apply_view(&mut self, view: usize) {
         self.fog = match VIEWS[view].name {
             "no-fog" => FogSettings::NONE,
             "dense" => FogSettings::DUST_STORM,

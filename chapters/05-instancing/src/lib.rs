@@ -556,7 +556,7 @@ impl Chapter for InstancingChapter {
         self.depth = depth_view(&gpu.device, target.width, target.height);
     }
 
-    fn select_view(&mut self, view: usize) {
+    fn apply_view(&mut self, view: usize) {
         self.setup = setup_for(VIEWS[view].name);
     }
 

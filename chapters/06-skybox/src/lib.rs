@@ -362,7 +362,7 @@ impl Chapter for SkyboxChapter {
         self.depth = depth_view(&gpu.device, target.width, target.height);
     }
 
-    fn select_view(&mut self, view: usize) {
+    fn apply_view(&mut self, view: usize) {
         self.start_phase = start_phase(VIEWS[view].name);
     }
 

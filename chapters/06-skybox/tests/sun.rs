@@ -3,7 +3,7 @@
 //! centre of the picture.
 
 use common::headless::{OFFSCREEN_FORMAT, capture};
-use common::{Camera, Chapter, Gpu, GpuNeeds, Target, show_view};
+use common::{Camera, Chapter, Gpu, GpuNeeds, Target};
 use skybox::{SkyboxChapter, sun_at};
 
 #[test]
@@ -11,7 +11,7 @@ fn the_sun_is_drawn_where_the_light_comes_from() {
     let gpu = Gpu::headless(GpuNeeds::default()).expect("an adapter (lavapipe will do)");
     let target = Target { format: OFFSCREEN_FORMAT, width: 240, height: 136 };
     let mut chapter = SkyboxChapter::new(&gpu, target).unwrap();
-    show_view(&mut chapter, 0);
+    chapter.select_view(0);
     for phase in [0.30, 0.42, 0.55, 0.70] {
         chapter.start_phase = phase;
         let light = sun_at(phase).direction;

@@ -451,7 +451,7 @@ impl Chapter for WaterChapter {
         self.resize_pictures(&gpu.device);
     }
 
-    fn select_view(&mut self, view: usize) {
+    fn apply_view(&mut self, view: usize) {
         self.settings = WaterSettings::default();
         match VIEWS[view].name {
             "waves" => self.settings.wave_strength = 3.0,

@@ -433,7 +433,7 @@ impl Chapter for TexturesChapter {
         self.post.resize(gpu, target);
     }
 
-    fn select_view(&mut self, view: usize) {
+    fn apply_view(&mut self, view: usize) {
         self.settings = Settings::for_view(VIEWS[view].name);
     }
 

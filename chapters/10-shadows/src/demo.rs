@@ -407,7 +407,7 @@ impl Chapter for ShadowsChapter {
         self.post.resize(gpu, target);
     }
 
-    fn select_view(&mut self, view: usize) {
+    fn apply_view(&mut self, view: usize) {
         self.settings = Settings::for_view(VIEWS[view].name);
         // --shadow-map-size wins over what a view asks for.
         if let Some(size) = self.size_flag {

@@ -4,7 +4,7 @@
 //! a 1 × 1 target. Nothing may produce a validation error or a NaN.
 
 use common::headless::{OFFSCREEN_FORMAT, Offscreen, draw_frame, read_floats};
-use common::{Chapter, Gpu, PassTimer, Target, chapter::view_index, show_view};
+use common::{Chapter, Gpu, PassTimer, Target, chapter::view_index};
 use lighting::{Display, LightCount, LightingChapter, MAX_LIGHTS, Settings, Shading};
 
 /// Draws one frame with `settings` at `width` × `height`, inside a
@@ -12,7 +12,7 @@ use lighting::{Display, LightCount, LightingChapter, MAX_LIGHTS, Settings, Shadi
 fn draw(gpu: &Gpu, (width, height): (u32, u32), settings: Settings, case: &str) {
     let target = Target { format: OFFSCREEN_FORMAT, width, height };
     let mut chapter = LightingChapter::new(gpu, target).unwrap();
-    show_view(&mut chapter, view_index::<LightingChapter>("night").unwrap());
+    chapter.select_view(view_index::<LightingChapter>("night").unwrap());
     chapter.settings = settings;
     let offscreen = Offscreen::new(&gpu.device, target);
     gpu.catch_validation(|| draw_frame(gpu, &mut chapter, &offscreen.view, 6.0, 1, &PassTimer::off()))

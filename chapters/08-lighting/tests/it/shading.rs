@@ -6,7 +6,7 @@
 
 use common::glam::Vec3;
 use common::headless::{OFFSCREEN_FORMAT, capture};
-use common::{Camera, Chapter, Gpu, Target, chapter::view_index, image, show_view};
+use common::{Camera, Chapter, Gpu, Target, chapter::view_index, image};
 use lighting::LightingChapter;
 use lighting::lights::{TimeOfDay, daylight};
 
@@ -18,7 +18,7 @@ const SIZE: (u32, u32) = (480, 270);
 fn render(gpu: &Gpu, chapter: &mut LightingChapter, view: &str, highlights: bool, exposure: f32) -> image::RgbaImage {
     let target = Target { format: OFFSCREEN_FORMAT, width: SIZE.0, height: SIZE.1 };
     let index = view_index::<LightingChapter>(view).unwrap();
-    show_view(chapter, index);
+    chapter.select_view(index);
     let sun = daylight(TimeOfDay::Morning.phase(0.0, 1.0)).direction;
     let centre = chapter.city.sphere_building + Vec3::Y * 24.0;
     chapter.camera =

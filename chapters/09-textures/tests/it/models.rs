@@ -187,7 +187,7 @@ fn a_missing_texture_is_one_warning_and_a_visible_checker() {
     assert_eq!(about.len(), 1, "one warning for the file, however many materials use it: {:?}", chapter.warnings);
     assert!(about[0].contains("checker"), "{}", about[0]);
     let view = common::chapter::view_index::<TexturesChapter>("car").unwrap();
-    common::show_view(&mut chapter, view);
+    chapter.select_view(view);
     let target = Target { format: OFFSCREEN_FORMAT, width: 320, height: 180 };
     let picture = capture(&gpu, &mut chapter, target, TexturesChapter::SNAPSHOT_TIME, view).unwrap();
     let magenta = picture.pixels().filter(|p| p[0] > 120 && p[2] > 120 && p[1] < 90).count();
@@ -237,7 +237,7 @@ fn a_million_triangles_load_and_render() {
     let mut chapter = chapter_with_model(&gpu, &dir.join("sphere.obj"), (160, 90));
     assert!(chapter.featured.triangles >= 1_000_000, "{} triangles", chapter.featured.triangles);
     let view = common::chapter::view_index::<TexturesChapter>("car").unwrap();
-    common::show_view(&mut chapter, view);
+    chapter.select_view(view);
     let target = Target { format: OFFSCREEN_FORMAT, width: 160, height: 90 };
     let with = capture(&gpu, &mut chapter, target, TexturesChapter::SNAPSHOT_TIME, view).unwrap();
     // The same picture with the model taken off the stage: the middle changes.

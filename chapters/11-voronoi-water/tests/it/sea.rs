@@ -4,7 +4,7 @@
 
 use common::glam::Vec2;
 use common::headless::{OFFSCREEN_FORMAT, capture};
-use common::{Chapter, Gpu, Target, show_view};
+use common::{Chapter, Gpu, Target};
 use voronoi_water::boat::Helm;
 use voronoi_water::sea::{self, CELL, GRID_VERTICES};
 use voronoi_water::{Play, VoronoiWaterChapter};
@@ -21,7 +21,7 @@ fn probe(gpu: &Gpu, chapter: &mut VoronoiWaterChapter, position: Vec2, time: f32
 fn chapter(gpu: &Gpu) -> VoronoiWaterChapter {
     let target = Target { format: OFFSCREEN_FORMAT, width: 64, height: 36 };
     let mut chapter = common::chapter::create::<VoronoiWaterChapter>(gpu, target, &Default::default()).unwrap();
-    show_view(&mut chapter, 0);
+    chapter.select_view(0);
     chapter
 }
 

@@ -5,7 +5,7 @@
 
 use common::glam::Vec2;
 use common::headless::{OFFSCREEN_FORMAT, capture, read_bytes};
-use common::{Chapter, Gpu, PassTimer, Target, show_view};
+use common::{Chapter, Gpu, PassTimer, Target};
 use voronoi_water::sites::{self, nearest, torus_offset};
 use voronoi_water::voronoi::{Method, NONE, Voronoi, VoronoiSettings};
 use voronoi_water::{Settings, VoronoiWaterChapter};
@@ -16,7 +16,7 @@ const HEIGHT: u32 = 240;
 fn chapter(gpu: &Gpu, view: &str) -> VoronoiWaterChapter {
     let target = Target { format: OFFSCREEN_FORMAT, width: WIDTH, height: HEIGHT };
     let mut chapter = common::chapter::create::<VoronoiWaterChapter>(gpu, target, &Default::default()).unwrap();
-    show_view(&mut chapter, common::chapter::view_index::<VoronoiWaterChapter>(view).unwrap());
+    chapter.select_view(common::chapter::view_index::<VoronoiWaterChapter>(view).unwrap());
     chapter
 }
 
