@@ -94,6 +94,8 @@ pub fn find(name: &str) -> Option<Record> {
 pub struct Record {
     /// The package name: `cargo run -p NAME`, its page `live/NAME/`.
     pub name: &'static str,
+    /// The Rust type that implements `Chapter` (`terrain::demo::TerrainChapter`).
+    pub type_name: &'static str,
     /// The book's title for it.
     pub title: &'static str,
     /// The part of the book it belongs to.
@@ -119,6 +121,7 @@ pub struct Record {
 fn record<C: Chapter>(part: &'static str, figure: &'static str, techniques: &'static str) -> Record {
     Record {
         name: C::NAME,
+        type_name: std::any::type_name::<C>(),
         title: C::TITLE,
         part,
         figure,

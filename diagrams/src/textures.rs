@@ -47,7 +47,7 @@ pub fn tangent_from_uvs() -> String {
 }
 
 /// A pixel's footprint on the sampling lab's floor, in texels, as the
-/// lab's camera sees it in a 1280 × 720 picture (`textures::view_camera`,
+/// lab's camera sees it in a 1280 × 720 picture (`textures::CameraPreset::Lab`,
 /// `lab_floor`): what both footprint figures plot.
 struct LabFootprint {
     /// Texels of the lab's checker per metre of its floor.
@@ -62,7 +62,7 @@ struct LabFootprint {
 
 impl LabFootprint {
     fn new() -> Self {
-        let (_, camera) = textures::view_camera("mipmaps", 16.0 / 9.0);
+        let (_, camera) = textures::CameraPreset::Lab.place(16.0 / 9.0);
         // The floor's repeats times the texture's width, over the floor's width.
         let floor = textures::scenes::lab_floor();
         let (low, high) = floor.bounds();
@@ -91,7 +91,7 @@ impl LabFootprint {
 /// The sampling lab's floor as its camera sees it: texels per pixel, along
 /// the view and across it, against distance. The mip level a sampler picks
 /// is the log₂ of that (of the larger, unless it filters anisotropically).
-/// From the lab's camera and floor (`textures::view_camera`, `lab_floor`).
+/// From the lab's camera and floor (`textures::CameraPreset::Lab`, `lab_floor`).
 pub fn texel_footprint() -> String {
     let footprint = LabFootprint::new();
     let mut svg = Svg::new(640.0, 330.0);

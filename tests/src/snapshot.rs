@@ -122,8 +122,21 @@ fn rgb(image: &image::RgbaImage) -> nv_flip::FlipImageRgb8 {
 }
 
 /// Scores `actual` against `reference` (same size) and returns the figures
-/// and FLIP's colour-mapped error image.
+/// and FLIP's colour-mapped error image. Pictures with the same colours
+/// score zero without running FLIP (about 0.2 s a picture), which is what
+/// a snapshot on the adapter that made its reference scores every time.
 pub fn compare(reference: &image::RgbaImage, actual: &image::RgbaImage) -> (Comparison, image::RgbImage) {
+    let same_colours = reference.dimensions() == actual.dimensions()
+        && reference.pixels().zip(actual.pixels()).all(|(a, b)| a.0[..3] == b.0[..3]);
+    if same_colours {
+        let zero = Comparison { mean: 0.0, p99: 0.0, max: 0.0, outliers: 0.0 };
+        return (zero, image::RgbImage::new(actual.width(), actual.height()));
+    }
+    flip(reference, actual)
+}
+
+/// [`compare`] by FLIP, whatever the pictures.
+fn flip(reference: &image::RgbaImage, actual: &image::RgbaImage) -> (Comparison, image::RgbImage) {
     let error = nv_flip::flip(rgb(reference), rgb(actual), nv_flip::DEFAULT_PIXELS_PER_DEGREE);
     let values = error.to_vec();
     let mut pool = nv_flip::FlipPool::from_image(&error);
@@ -197,6 +210,10 @@ mod tests {
     fn identical_pictures_score_zero() {
         let (comparison, _) = compare(&scene(0), &scene(0));
         assert_eq!(comparison.mean, 0.0);
+        // The shortcut agrees with FLIP itself.
+        let (by_flip, _) = flip(&scene(0), &scene(0));
+        assert_eq!((by_flip.mean, by_flip.outliers), (0.0, 0.0));
+        assert!(by_flip.max <= f32::MIN_POSITIVE, "FLIP's pool starts its maximum at the smallest float");
         assert!(comparison.passes(Tolerance::DEFAULT));
     }
 

@@ -25,6 +25,7 @@ fn main() {
     trials.push(Trial::test("every_chapter_crate_is_registered", every_chapter_crate_is_registered));
     trials.push(Trial::test("no_stale_references", no_stale_references));
     trials.push(Trial::test("readme_and_summary_follow_the_records", readme_and_summary_follow_the_records));
+    trials.push(Trial::test("chapters_compose_pieces_not_chapters", chapters_compose_pieces_not_chapters));
     libtest_mimic::run(&Arguments::from_args(), trials).exit();
 }
 
@@ -82,4 +83,47 @@ fn readme_and_summary_follow_the_records() -> Result<(), Failed> {
         }
     }
     Ok(())
+}
+
+/// A later chapter reuses an earlier one's pieces (a renderer, a post
+/// chain), never the earlier chapter itself: no chapter's source names
+/// another chapter's `Chapter` type.
+fn chapters_compose_pieces_not_chapters() -> Result<(), Failed> {
+    let chapters_dir = Path::new(env!("CARGO_MANIFEST_DIR")).join("../chapters");
+    let records = snapshots::chapters();
+    let mut problems = Vec::new();
+    for dir in std::fs::read_dir(&chapters_dir).map_err(|e| e.to_string())? {
+        let dir = dir.map_err(|e| e.to_string())?.path();
+        for file in rust_files(&dir.join("src")).map_err(|e| e.to_string())? {
+            let text = std::fs::read_to_string(&file).map_err(|e| e.to_string())?;
+            for record in &records {
+                let (krate, type_name) = (
+                    record.type_name.split("::").next().unwrap_or_default(),
+                    record.type_name.rsplit("::").next().unwrap_or_default(),
+                );
+                // `chapters/NN-name`
+                let own = dir
+                    .file_name()
+                    .is_some_and(|d| d.to_string_lossy().split_once('-').map(|(_, name)| name) == Some(record.name));
+                let names_it = text.split(|c: char| !c.is_alphanumeric() && c != '_').any(|word| word == type_name);
+                if !own && names_it && text.contains(&format!("{krate}::")) {
+                    problems.push(format!("{} uses {}, another chapter's Chapter type", file.display(), type_name));
+                }
+            }
+        }
+    }
+    if problems.is_empty() { Ok(()) } else { Err(problems.join("\n").into()) }
+}
+
+fn rust_files(dir: &Path) -> std::io::Result<Vec<std::path::PathBuf>> {
+    let mut files = Vec::new();
+    for entry in std::fs::read_dir(dir)? {
+        let path = entry?.path();
+        if path.is_dir() {
+            files.extend(rust_files(&path)?);
+        } else if path.extension().is_some_and(|e| e == "rs") {
+            files.push(path);
+        }
+    }
+    Ok(files)
 }

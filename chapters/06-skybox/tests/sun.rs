@@ -13,7 +13,7 @@ fn the_sun_is_drawn_where_the_light_comes_from() {
     let mut chapter = SkyboxChapter::new(&gpu, target).unwrap();
     chapter.select_view(0);
     for phase in [0.30, 0.42, 0.55, 0.70] {
-        chapter.start_phase = phase;
+        chapter.settings.start_phase = phase;
         let light = sun_at(phase).direction;
         let eye = chapter.camera.position;
         chapter.camera = Camera { far: 3000.0, ..Camera::looking_at(eye, eye + light, target.aspect()) };

@@ -26,9 +26,14 @@ pub struct BloomSettings {
     pub spread: f32,
 }
 
+impl BloomSettings {
+    /// What the chapter starts with.
+    pub const DEFAULT: Self = Self { threshold: 1.0, knee: 0.5, strength: 0.6, spread: 0.6 };
+}
+
 impl Default for BloomSettings {
     fn default() -> Self {
-        Self { threshold: 1.0, knee: 0.5, strength: 0.6, spread: 0.6 }
+        Self::DEFAULT
     }
 }
 

@@ -7,8 +7,8 @@ use common::chapter::storage_entry;
 use common::glam::Vec3;
 use common::wgpu::util::DeviceExt as _;
 use common::{
-    Camera, Chapter, FlyController, Frame, Gpu, Input, ShaderError, Target, View, anyhow, egui, wgpu,
-    winit::keyboard::KeyCode,
+    Camera, Chapter, FlyController, Frame, Gpu, Input, ShaderError, Target, View, ViewRow, anyhow, egui, views_of,
+    wgpu, winit::keyboard::KeyCode,
 };
 
 use crate::bloom::BloomSettings;
@@ -22,27 +22,75 @@ use crate::post::{HdrTarget, PostChain, PostOutput, PostSettings};
 use crate::scene_lights::{Highlight, LoopOptions, MAX_LIGHTS, SceneLights};
 
 // ANCHOR: views
-pub const VIEWS: &[View] = &[
-    View::mode("day", "the city at noon, from above"),
-    View::mode("night", "the city at night: street lamps, lit buildings, headlights, bloom"),
-    View::preset("flat", "the glass sphere in the morning sun, flat shaded: one colour per face"),
-    View::preset("gouraud", "the same, lit per vertex and blended: the highlight smears over the facets"),
-    View::preset("phong", "the same, lit per fragment: a round, sharp highlight (Phong's mirror direction)"),
-    View::preset("blinn-phong", "the same with Blinn-Phong's half vector: a wider, softer highlight"),
-    View::mode("no-bloom", "the night city without bloom: lights are bright dots"),
-    View::mode("bloom-only", "the blurred bright light the bloom adds, alone"),
-    View::mode("light-tiles", "lights each fragment visits, as a heat map (black 0, blue few, red 24 or more)"),
-    View::preset("follow", "at night, behind a car, with its headlights on the road"),
-    View::bench("lights-1", "bench: the night city with 1 light, culled"),
-    View::bench("lights-16", "bench: 16 lights, culled per cluster"),
-    View::bench("lights-64", "bench: 64 lights, culled per cluster"),
-    View::bench("lights-256", "bench: 256 lights, culled per cluster"),
-    View::bench("lights-1024", "bench: 1024 lights, culled per cluster"),
-    View::bench("naive-16", "bench: 16 lights, every fragment visits every light"),
-    View::bench("naive-64", "bench: 64 lights, every fragment visits every light"),
-    View::bench("naive-256", "bench: 256 lights, every fragment visits every light"),
-    View::bench("naive-1024", "bench: 1024 lights, every fragment visits every light"),
+/// Every view, once: what it shows, and for a preset where the camera goes.
+pub const VIEW_TABLE: [ViewRow<Settings, CameraPreset>; 19] = [
+    ViewRow::mode("day", "the city at noon, from above", Settings::DAY),
+    ViewRow::mode("night", "the city at night: street lamps, lit buildings, headlights, bloom", Settings::NIGHT),
+    ViewRow::preset(
+        "flat",
+        "the glass sphere in the morning sun, flat shaded: one colour per face",
+        Settings { shading: Shading::Flat, ..Settings::SPHERE },
+        CameraPreset::Sphere,
+    ),
+    ViewRow::preset(
+        "gouraud",
+        "the same, lit per vertex and blended: the highlight smears over the facets",
+        Settings { shading: Shading::Gouraud, ..Settings::SPHERE },
+        CameraPreset::Sphere,
+    ),
+    ViewRow::preset(
+        "phong",
+        "the same, lit per fragment: a round, sharp highlight (Phong's mirror direction)",
+        Settings { shading: Shading::Phong, ..Settings::SPHERE },
+        CameraPreset::Sphere,
+    ),
+    ViewRow::preset(
+        "blinn-phong",
+        "the same with Blinn-Phong's half vector: a wider, softer highlight",
+        Settings { shading: Shading::Phong, highlight: Highlight::BlinnPhong, ..Settings::SPHERE },
+        CameraPreset::Sphere,
+    ),
+    ViewRow::mode(
+        "no-bloom",
+        "the night city without bloom: lights are bright dots",
+        Settings { bloom_on: false, ..Settings::NIGHT },
+    ),
+    ViewRow::mode(
+        "bloom-only",
+        "the blurred bright light the bloom adds, alone",
+        Settings { display: Display::BloomOnly, ..Settings::NIGHT },
+    ),
+    ViewRow::mode(
+        "light-tiles",
+        "lights each fragment visits, as a heat map (black 0, blue few, red 24 or more)",
+        Settings { display: Display::LightTiles, ..Settings::NIGHT },
+    ),
+    ViewRow::preset(
+        "follow",
+        "at night, behind a car, with its headlights on the road",
+        Settings::NIGHT,
+        CameraPreset::Follow,
+    ),
+    ViewRow::bench("lights-1", "bench: the night city with 1 light, culled", Settings::bench(1, true)),
+    ViewRow::bench("lights-16", "bench: 16 lights, culled per cluster", Settings::bench(16, true)),
+    ViewRow::bench("lights-64", "bench: 64 lights, culled per cluster", Settings::bench(64, true)),
+    ViewRow::bench("lights-256", "bench: 256 lights, culled per cluster", Settings::bench(256, true)),
+    ViewRow::bench("lights-1024", "bench: 1024 lights, culled per cluster", Settings::bench(1024, true)),
+    ViewRow::bench("naive-16", "bench: 16 lights, every fragment visits every light", Settings::bench(16, false)),
+    ViewRow::bench("naive-64", "bench: 64 lights, every fragment visits every light", Settings::bench(64, false)),
+    ViewRow::bench("naive-256", "bench: 256 lights, every fragment visits every light", Settings::bench(256, false)),
+    ViewRow::bench("naive-1024", "bench: 1024 lights, every fragment visits every light", Settings::bench(1024, false)),
 ];
+
+/// Where a preset puts the camera; a mode leaves it, and the "reset
+/// camera" button takes it back to the aerial view.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum CameraPreset {
+    /// Close to the glass sphere ([`sphere_camera`]).
+    Sphere,
+    /// Riding behind the first car ([`follow_camera`]) until the learner moves.
+    Follow,
+}
 // ANCHOR_END: views
 
 /// How surfaces are lit.
@@ -93,47 +141,38 @@ pub struct Settings {
 }
 
 impl Settings {
-    /// The settings view `name` shows, whatever came before.
-    pub fn for_view(name: &str) -> Self {
-        let mut s = Self {
-            time_of_day: TimeOfDay::Night,
-            day_seconds: 120.0,
-            shading: Shading::Phong,
-            highlight: Highlight::BlinnPhong,
-            highlights: true,
-            culling: true,
-            lights: LightCount::City,
-            bloom_on: true,
-            bloom: BloomSettings::default(),
-            display: Display::Scene,
-            exposure: 1.0,
-        };
-        match name {
-            "day" => s.time_of_day = TimeOfDay::Noon,
-            "flat" | "gouraud" | "phong" | "blinn-phong" => {
-                // One light, the morning sun, so that shading is all there is to see.
-                s.time_of_day = TimeOfDay::Morning;
-                s.lights = LightCount::First(0);
-                s.shading = match name {
-                    "flat" => Shading::Flat,
-                    "gouraud" => Shading::Gouraud,
-                    _ => Shading::Phong,
-                };
-                s.highlight = if name == "blinn-phong" { Highlight::BlinnPhong } else { Highlight::Phong };
-            }
-            "no-bloom" => s.bloom_on = false,
-            "bloom-only" => s.display = Display::BloomOnly,
-            "light-tiles" => s.display = Display::LightTiles,
-            _ => {}
-        }
-        if let Some(count) = name.strip_prefix("lights-").and_then(|n| n.parse().ok()) {
-            s.lights = LightCount::First(count);
-        }
-        if let Some(count) = name.strip_prefix("naive-").and_then(|n| n.parse().ok()) {
-            s.lights = LightCount::First(count);
-            s.culling = false;
-        }
-        s
+    /// The night city, as `night` shows it; the other views change a few
+    /// of these.
+    pub const NIGHT: Self = Self {
+        time_of_day: TimeOfDay::Night,
+        day_seconds: 120.0,
+        shading: Shading::Phong,
+        highlight: Highlight::BlinnPhong,
+        highlights: true,
+        culling: true,
+        lights: LightCount::City,
+        bloom_on: true,
+        bloom: BloomSettings::DEFAULT,
+        display: Display::Scene,
+        exposure: 1.0,
+    };
+
+    /// The city at noon: what the chapter starts with.
+    pub const DAY: Self = Self { time_of_day: TimeOfDay::Noon, ..Self::NIGHT };
+
+    /// One light, the morning sun, so that shading is all there is to see:
+    /// the glass sphere's views, with Phong's highlight unless they say otherwise.
+    pub const SPHERE: Self = Self {
+        time_of_day: TimeOfDay::Morning,
+        lights: LightCount::First(0),
+        highlight: Highlight::Phong,
+        ..Self::NIGHT
+    };
+
+    /// The bench's night city with the first `lights` lights, culled per
+    /// cluster or (`culling` false) visited by every fragment.
+    pub const fn bench(lights: u32, culling: bool) -> Self {
+        Self { lights: LightCount::First(lights), culling, ..Self::NIGHT }
     }
 }
 
@@ -235,7 +274,7 @@ impl Chapter for LightingChapter {
     // Measured mean FLIP 0.0086; outliers at most 0.1%.
     const BROWSER_TOLERANCE: common::Tolerance = common::Tolerance { mean: 0.013, outliers: 0.002 };
     const TITLE: &'static str = "08 · Lighting";
-    const VIEWS: &'static [View] = VIEWS;
+    const VIEWS: &'static [View] = &views_of(&VIEW_TABLE);
     const SNAPSHOT_TIME: f32 = 6.0;
     const BENCH_FRAMES: u32 = 5;
     const BENCH_BASELINE: Option<&'static str> = Some("lights-1");
@@ -280,7 +319,7 @@ impl Chapter for LightingChapter {
         Ok(Self {
             camera: aerial_camera(target.aspect()),
             controller: FlyController { speed: 20.0, ..Default::default() },
-            settings: Settings::for_view("day"),
+            settings: Settings::DAY,
             clocks: Clocks::default(),
             follow: false,
             last_time: 0.0,
@@ -307,19 +346,20 @@ impl Chapter for LightingChapter {
     }
 
     fn apply_view(&mut self, view: usize) {
-        self.settings = Settings::for_view(VIEWS[view].name);
+        self.settings = VIEW_TABLE[view].settings;
     }
 
     fn reset_camera(&mut self, view: usize) {
         let aspect = self.target.aspect();
-        self.follow = VIEWS[view].name == "follow";
-        self.camera = match VIEWS[view].name {
-            "flat" | "gouraud" | "phong" | "blinn-phong" => sphere_camera(&self.city, aspect),
-            "follow" => {
+        let preset = VIEW_TABLE[view].camera;
+        self.follow = preset == Some(CameraPreset::Follow);
+        self.camera = match preset {
+            Some(CameraPreset::Sphere) => sphere_camera(&self.city, aspect),
+            Some(CameraPreset::Follow) => {
                 let traffic = self.city.traffic(self.clocks.cars.time(self.last_time), 0.0);
                 follow_camera(&traffic.cars[0], aspect)
             }
-            _ => aerial_camera(aspect),
+            None => aerial_camera(aspect),
         };
     }
 

@@ -9,8 +9,8 @@ use std::sync::Arc;
 use common::args::UsageError;
 use common::glam::{Mat4, Quat, Vec3};
 use common::{
-    Camera, Chapter, ChapterFlag, FlagValues, FlyController, Frame, Gpu, Input, ShaderError, Target, View, anyhow,
-    egui, wgpu, winit::keyboard::KeyCode,
+    Camera, Chapter, ChapterFlag, FlagValues, FlyController, Frame, Gpu, Input, ShaderError, Target, View, ViewRow,
+    anyhow, egui, views_of, wgpu, winit::keyboard::KeyCode,
 };
 use lighting::bloom::BloomSettings;
 use lighting::city::{City, Clocks};
@@ -27,22 +27,74 @@ use crate::scenes;
 use crate::textured_renderer::{Draw, DrawList, TexturedRenderer, upload_model};
 
 // ANCHOR: views
-pub const VIEWS: &[View] = &[
-    View::mode("day", "the textured city at noon, from above"),
-    View::mode("night", "the textured city at night: lit windows, lamps, headlights"),
-    View::preset("car", "the car model and its five materials on the stage (or the model given with --model)"),
-    View::preset("normal-maps", "the stage in a low sun: normal maps give brick, panels and concrete their relief"),
-    View::preset("no-normal-maps", "the same without normal maps: flat, as if painted"),
-    View::preset(
+/// Every view, once: what it shows, and for a preset where the camera goes.
+pub const VIEW_TABLE: [ViewRow<Settings, CameraPreset>; 12] = [
+    ViewRow::mode("day", "the textured city at noon, from above", Settings::DAY),
+    ViewRow::mode(
+        "night",
+        "the textured city at night: lit windows, lamps, headlights",
+        Settings { time_of_day: TimeOfDay::Night, ..Settings::DAY },
+    ),
+    ViewRow::preset(
+        "car",
+        "the car model and its five materials on the stage (or the model given with --model)",
+        Settings::STAGE,
+        CameraPreset::Car,
+    ),
+    ViewRow::preset(
+        "normal-maps",
+        "the stage in a low sun: normal maps give brick, panels and concrete their relief",
+        Settings::STAGE,
+        CameraPreset::Wall,
+    ),
+    ViewRow::preset(
+        "no-normal-maps",
+        "the same without normal maps: flat, as if painted",
+        Settings { normal_maps: false, ..Settings::STAGE },
+        CameraPreset::Wall,
+    ),
+    ViewRow::preset(
         "face-tangents",
         "normal maps with one tangent per triangle, as the seed did: the frame jumps at edges",
+        Settings { tangents: Tangents::PerFace, ..Settings::STAGE },
+        CameraPreset::Wall,
     ),
-    View::preset("tbn", "the tangent frame as colours: tangent (left third), bitangent (middle), normal (right)"),
-    View::preset("wrong-colour-space", "albedo read as data and normal maps as sRGB: washed-out colour, bent light"),
-    View::preset("nearest", "a checkerboard to the horizon, nearest texel: blocky near, moiré far"),
-    View::preset("linear", "the same, bilinear: smooth near, still moiré far"),
-    View::preset("mipmaps", "trilinear filtering with mipmaps: no moiré, but the distance turns grey"),
-    View::preset("anisotropic", "anisotropic filtering (16x): the squares stay sharp much further"),
+    ViewRow::preset(
+        "tbn",
+        "the tangent frame as colours: tangent (left third), bitangent (middle), normal (right)",
+        Settings { show_frame: true, ..Settings::STAGE },
+        CameraPreset::WholeStage,
+    ),
+    ViewRow::preset(
+        "wrong-colour-space",
+        "albedo read as data and normal maps as sRGB: washed-out colour, bent light",
+        Settings { swapped_colour_spaces: true, ..Settings::STAGE },
+        CameraPreset::Car,
+    ),
+    ViewRow::preset(
+        "nearest",
+        "a checkerboard to the horizon, nearest texel: blocky near, moiré far",
+        Settings { sampler: SamplerMode::Nearest, ..Settings::LAB },
+        CameraPreset::Lab,
+    ),
+    ViewRow::preset(
+        "linear",
+        "the same, bilinear: smooth near, still moiré far",
+        Settings { sampler: SamplerMode::Linear, ..Settings::LAB },
+        CameraPreset::Lab,
+    ),
+    ViewRow::preset(
+        "mipmaps",
+        "trilinear filtering with mipmaps: no moiré, but the distance turns grey",
+        Settings { sampler: SamplerMode::Mipmaps, ..Settings::LAB },
+        CameraPreset::Lab,
+    ),
+    ViewRow::preset(
+        "anisotropic",
+        "anisotropic filtering (16x): the squares stay sharp much further",
+        Settings { sampler: SamplerMode::Anisotropic, ..Settings::LAB },
+        CameraPreset::Lab,
+    ),
 ];
 // ANCHOR_END: views
 
@@ -84,67 +136,64 @@ pub struct Settings {
 }
 
 impl Settings {
-    pub fn for_view(name: &str) -> Self {
-        let mut s = Self {
-            time_of_day: TimeOfDay::Noon,
-            // Trilinear: anisotropic filtering is sharper, and about twenty
-            // times dearer on a software rasteriser (see the bench).
-            sampler: SamplerMode::Mipmaps,
-            normal_maps: true,
-            flip_green: false,
-            tangents: Tangents::PerVertex,
-            swapped_colour_spaces: false,
-            show_frame: false,
-            bloom: true,
-            exposure: 1.0,
-        };
-        match name {
-            "night" => s.time_of_day = TimeOfDay::Night,
-            "car" | "normal-maps" | "no-normal-maps" | "face-tangents" | "tbn" | "wrong-colour-space" => {
-                s.time_of_day = TimeOfDay::Morning;
-                s.normal_maps = name != "no-normal-maps";
-                s.tangents = if name == "face-tangents" { Tangents::PerFace } else { Tangents::PerVertex };
-                s.show_frame = name == "tbn";
-                s.swapped_colour_spaces = name == "wrong-colour-space";
-            }
-            "nearest" | "linear" | "mipmaps" | "anisotropic" => {
-                s.sampler = match name {
-                    "nearest" => SamplerMode::Nearest,
-                    "linear" => SamplerMode::Linear,
-                    "mipmaps" => SamplerMode::Mipmaps,
-                    _ => SamplerMode::Anisotropic,
-                };
-                // Black and white squares: no bloom, and an exposure that
-                // keeps white below the shoulder of the tone curve.
-                s.bloom = false;
-                s.exposure = 0.5;
-            }
-            _ => {}
-        }
-        s
-    }
+    /// The textured city at noon: what the chapter starts with.
+    pub const DAY: Self = Self {
+        time_of_day: TimeOfDay::Noon,
+        // Trilinear: anisotropic filtering is sharper, and about twenty
+        // times dearer on a software rasteriser (see the bench).
+        sampler: SamplerMode::Mipmaps,
+        normal_maps: true,
+        flip_green: false,
+        tangents: Tangents::PerVertex,
+        swapped_colour_spaces: false,
+        show_frame: false,
+        bloom: true,
+        exposure: 1.0,
+    };
+
+    /// The stage's views: the morning sun.
+    pub const STAGE: Self = Self { time_of_day: TimeOfDay::Morning, ..Self::DAY };
+
+    /// The sampling lab's views: black and white squares, so no bloom, and
+    /// an exposure that keeps white below the shoulder of the tone curve.
+    pub const LAB: Self = Self { bloom: false, exposure: 0.5, ..Self::DAY };
 }
 
-/// Where each view puts the camera, and in which scene.
-pub fn view_camera(view: &str, aspect: f32) -> (Scene, Camera) {
-    let at = |eye: Vec3, target: Vec3| Camera { near: 0.1, far: 900.0, ..Camera::looking_at(eye, target, aspect) };
-    match view {
-        "car" | "wrong-colour-space" => (Scene::Stage, at(Vec3::new(-3.3, 1.9, 4.3), Vec3::new(0.2, 0.7, 0.0))),
-        // The left of the stage: the wall, the sphere, the torus and the
-        // cone, in a low sun from the side.
-        "normal-maps" | "no-normal-maps" | "face-tangents" => {
-            (Scene::Stage, at(Vec3::new(-2.2, 1.5, 0.9), Vec3::new(-6.4, 0.9, -3.6)))
+/// Where a preset puts the camera, and in which scene.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum CameraPreset {
+    /// Above the city (chapter 08's aerial camera): where the chapter
+    /// starts, and where "reset camera" takes the modes.
+    City,
+    /// In front of the stage, on the featured model.
+    Car,
+    /// The left of the stage: the wall, the sphere, the torus and the
+    /// cone, in a low sun from the side.
+    Wall,
+    /// The whole stage from the front, a little above.
+    WholeStage,
+    /// Standing on the sampling lab's checkerboard, looking to the horizon.
+    Lab,
+}
+
+impl CameraPreset {
+    /// The scene this preset is in, and the camera there for a target of `aspect`.
+    pub fn place(self, aspect: f32) -> (Scene, Camera) {
+        let at = |eye: Vec3, target: Vec3| Camera { near: 0.1, far: 900.0, ..Camera::looking_at(eye, target, aspect) };
+        match self {
+            Self::City => (Scene::City, lighting::aerial_camera(aspect)),
+            Self::Car => (Scene::Stage, at(Vec3::new(-3.3, 1.9, 4.3), Vec3::new(0.2, 0.7, 0.0))),
+            Self::Wall => (Scene::Stage, at(Vec3::new(-2.2, 1.5, 0.9), Vec3::new(-6.4, 0.9, -3.6))),
+            Self::WholeStage => (Scene::Stage, at(Vec3::new(0.0, 4.2, 10.5), Vec3::new(0.0, 1.0, -2.0))),
+            Self::Lab => (
+                Scene::Lab,
+                Camera {
+                    near: 0.1,
+                    far: 1500.0,
+                    ..Camera::looking_at(Vec3::new(0.0, 1.7, 0.0), Vec3::new(0.0, 0.0, -30.0), aspect)
+                },
+            ),
         }
-        "tbn" => (Scene::Stage, at(Vec3::new(0.0, 4.2, 10.5), Vec3::new(0.0, 1.0, -2.0))),
-        "nearest" | "linear" | "mipmaps" | "anisotropic" => (
-            Scene::Lab,
-            Camera {
-                near: 0.1,
-                far: 1500.0,
-                ..Camera::looking_at(Vec3::new(0.0, 1.7, 0.0), Vec3::new(0.0, 0.0, -30.0), aspect)
-            },
-        ),
-        _ => (Scene::City, lighting::aerial_camera(aspect)),
     }
 }
 
@@ -293,7 +342,7 @@ impl Chapter for TexturesChapter {
     // Measured mean FLIP 0.0258: the textures' mip levels differ most; outliers at most 0.1%.
     const BROWSER_TOLERANCE: common::Tolerance = common::Tolerance { mean: 0.04, outliers: 0.002 };
     const TITLE: &'static str = "09 · Textures";
-    const VIEWS: &'static [View] = VIEWS;
+    const VIEWS: &'static [View] = &views_of(&VIEW_TABLE);
     const SNAPSHOT_TIME: f32 = 6.0;
     const BENCH_FRAMES: u32 = 5;
     const BENCH_BASELINE: Option<&'static str> = Some("no-normal-maps");
@@ -371,9 +420,9 @@ impl Chapter for TexturesChapter {
         for warning in &warnings {
             eprintln!("warning: {warning}");
         }
-        let (scene, camera) = view_camera("day", target.aspect());
+        let (scene, camera) = CameraPreset::City.place(target.aspect());
         Ok(Self {
-            settings: Settings::for_view("day"),
+            settings: Settings::DAY,
             scene,
             camera,
             controller: FlyController { speed: 12.0, ..Default::default() },
@@ -434,11 +483,12 @@ impl Chapter for TexturesChapter {
     }
 
     fn apply_view(&mut self, view: usize) {
-        self.settings = Settings::for_view(VIEWS[view].name);
+        self.settings = VIEW_TABLE[view].settings;
     }
 
     fn reset_camera(&mut self, view: usize) {
-        (self.scene, self.camera) = view_camera(VIEWS[view].name, self.target.aspect());
+        let preset = VIEW_TABLE[view].camera.unwrap_or(CameraPreset::City);
+        (self.scene, self.camera) = preset.place(self.target.aspect());
     }
 
     fn camera_mut(&mut self) -> Option<&mut Camera> {
@@ -540,9 +590,11 @@ impl Chapter for TexturesChapter {
         let aspect = self.target.aspect();
         ui.horizontal(|ui| {
             ui.label("go to");
-            for (label, view) in [("city", "day"), ("stage", "car"), ("sampling lab", "mipmaps")] {
+            for (label, preset) in
+                [("city", CameraPreset::City), ("stage", CameraPreset::Car), ("sampling lab", CameraPreset::Lab)]
+            {
                 if ui.button(label).clicked() {
-                    (self.scene, self.camera) = view_camera(view, aspect);
+                    (self.scene, self.camera) = preset.place(aspect);
                 }
             }
         });

@@ -26,5 +26,5 @@ pub mod textured_renderer;
 // The chapter itself: its settings, views, models and frame.
 pub mod demo;
 
-pub use demo::{BuiltinModels, Featured, Scene, Settings, Tangents, TexturesChapter, VIEWS, view_camera};
+pub use demo::{BuiltinModels, CameraPreset, Featured, Scene, Settings, Tangents, TexturesChapter, VIEW_TABLE};
 pub use textured_renderer::{Draw, DrawList, TexturedRenderer, upload_model};

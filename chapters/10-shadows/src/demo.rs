@@ -8,8 +8,8 @@ use std::path::Path;
 use common::args::UsageError;
 use common::glam::{Mat4, Vec2, Vec3, Vec4};
 use common::{
-    Camera, Chapter, ChapterFlag, FlagValues, Frame, Gpu, Input, ShaderError, Target, View, anyhow, egui, wgpu,
-    winit::keyboard::KeyCode,
+    Camera, Chapter, ChapterFlag, FlagValues, Frame, Gpu, Input, ShaderError, Target, View, ViewRow, anyhow, egui,
+    views_of, wgpu, winit::keyboard::KeyCode,
 };
 use lighting::bloom::BloomSettings;
 use lighting::lights::Daylight;
@@ -28,21 +28,70 @@ use crate::shadow_map::{self, Bias, Cull, Filter, LightBox, ShadowMap, ShadowSet
 use crate::shadowed_renderer::ShadowedRenderer;
 
 // ANCHOR: views
-pub const VIEWS: &[View] = &[
-    View::mode("default", "the game mid-jump, with soft shadows that harden where they touch (PCSS)"),
-    View::mode("hard", "one comparison per pixel: the shadow map's texels are the shadow's edge"),
-    View::mode("pcf-3x3", "nine comparisons a texel apart, averaged: a soft edge one texel wide"),
-    View::mode("poisson", "sixteen comparisons on a Poisson disk, turned per pixel: the seed's filter"),
-    View::mode("acne", "no bias: lit surfaces shadow themselves in stripes"),
-    View::mode("peter-panning", "far too much bias: shadows come loose from what casts them"),
-    View::mode("shadow-map", "the sun's depth, full screen: near the sun dark, far light"),
-    View::mode("light-frustum", "the sun's box (yellow) around the part of the level the camera sees (cyan)"),
-    View::mode("collision-boxes", "the boxes the physics works with, drawn over the scene"),
-    View::mode("parallax", "the background layers tinted by depth: red near, green middle, blue far"),
-    View::bench("map-1024", "Poisson filtering with a 1024² shadow map"),
-    View::bench("map-4096", "Poisson filtering with a 4096² shadow map"),
-    View::bench("no-shadows", "no lookup at all: what the filters are measured against"),
+/// Every view, once, with what it shows. All are modes: the side camera
+/// follows the player whatever the view.
+pub const VIEW_TABLE: [ViewRow<Settings, CameraPreset>; 13] = [
+    ViewRow::mode(
+        "default",
+        "the game mid-jump, with soft shadows that harden where they touch (PCSS)",
+        Settings::DEFAULT,
+    ),
+    // The filters side by side, on a 512² map: texels of 8.8 cm, big
+    // enough to see what each filter does to them.
+    ViewRow::mode(
+        "hard",
+        "one comparison per pixel: the shadow map's texels are the shadow's edge",
+        Settings::filtered(Filter::Hard, 512),
+    ),
+    ViewRow::mode(
+        "pcf-3x3",
+        "nine comparisons a texel apart, averaged: a soft edge one texel wide",
+        Settings::filtered(Filter::Pcf3x3, 512),
+    ),
+    ViewRow::mode(
+        "poisson",
+        "sixteen comparisons on a Poisson disk, turned per pixel: the seed's filter",
+        Settings::filtered(Filter::Poisson, 512),
+    ),
+    ViewRow::mode("acne", "no bias: lit surfaces shadow themselves in stripes", Settings::hard_with(Bias::NONE)),
+    ViewRow::mode(
+        "peter-panning",
+        "far too much bias: shadows come loose from what casts them",
+        Settings::hard_with(Bias::TOO_MUCH),
+    ),
+    ViewRow::mode(
+        "shadow-map",
+        "the sun's depth, full screen: near the sun dark, far light",
+        Settings { show: Show::ShadowMap, ..Settings::DEFAULT },
+    ),
+    ViewRow::mode(
+        "light-frustum",
+        "the sun's box (yellow) around the part of the level the camera sees (cyan)",
+        Settings { light_box: true, camera_distance: 60.0, ..Settings::DEFAULT },
+    ),
+    ViewRow::mode(
+        "collision-boxes",
+        "the boxes the physics works with, drawn over the scene",
+        Settings { collision_boxes: true, ..Settings::DEFAULT },
+    ),
+    ViewRow::mode(
+        "parallax",
+        "the background layers tinted by depth: red near, green middle, blue far",
+        Settings { tint_layers: true, ..Settings::DEFAULT },
+    ),
+    ViewRow::bench("map-1024", "Poisson filtering with a 1024² shadow map", Settings::filtered(Filter::Poisson, 1024)),
+    ViewRow::bench("map-4096", "Poisson filtering with a 4096² shadow map", Settings::filtered(Filter::Poisson, 4096)),
+    ViewRow::bench(
+        "no-shadows",
+        "no lookup at all: what the filters are measured against",
+        Settings::filtered(Filter::Off, shadow_map::DEFAULT_SIZE),
+    ),
 ];
+
+/// Where a preset would put the camera: this chapter has none, so no view
+/// can be a preset (`ViewRow::preset` needs a value of this enum).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum CameraPreset {}
 // ANCHOR_END: views
 
 /// What the camera shows.
@@ -85,54 +134,30 @@ pub struct Settings {
 }
 
 impl Settings {
-    pub fn for_view(name: &str) -> Self {
-        let mut s = Self {
-            shadow: ShadowSettings { filter: Filter::Pcss, ..Default::default() },
-            fit: Fit::Visible,
-            // Nine in the morning: the sun 35° high, on the left, in front.
-            phase: 0.375,
-            sun_moves: false,
-            show: Show::Scene,
-            collision_boxes: false,
-            light_box: false,
-            tint_layers: false,
-            camera_distance: CAMERA_DISTANCE,
-            bloom: true,
-        };
-        match name {
-            // The filters side by side, on a 512² map: texels of 8.8 cm,
-            // big enough to see what each filter does to them.
-            "hard" | "pcf-3x3" | "poisson" => {
-                s.shadow.size = 512;
-                s.shadow.filter = match name {
-                    "hard" => Filter::Hard,
-                    "pcf-3x3" => Filter::Pcf3x3,
-                    _ => Filter::Poisson,
-                };
-            }
-            "acne" => {
-                s.shadow.filter = Filter::Hard;
-                s.shadow.bias = Bias::NONE;
-            }
-            "peter-panning" => {
-                s.shadow.filter = Filter::Hard;
-                s.shadow.bias = Bias::TOO_MUCH;
-            }
-            "shadow-map" => s.show = Show::ShadowMap,
-            "light-frustum" => {
-                s.light_box = true;
-                s.camera_distance = 60.0;
-            }
-            "collision-boxes" => s.collision_boxes = true,
-            "parallax" => s.tint_layers = true,
-            "map-1024" | "map-4096" => {
-                s.shadow.filter = Filter::Poisson;
-                s.shadow.size = if name == "map-1024" { 1024 } else { 4096 };
-            }
-            "no-shadows" => s.shadow.filter = Filter::Off,
-            _ => {}
-        }
-        s
+    /// The game mid-jump in soft shadows: what the chapter starts with.
+    pub const DEFAULT: Self = Self {
+        shadow: ShadowSettings { filter: Filter::Pcss, ..ShadowSettings::DEFAULT },
+        fit: Fit::Visible,
+        // Nine in the morning: the sun 35° high, on the left, in front.
+        phase: 0.375,
+        sun_moves: false,
+        show: Show::Scene,
+        collision_boxes: false,
+        light_box: false,
+        tint_layers: false,
+        camera_distance: CAMERA_DISTANCE,
+        bloom: true,
+    };
+
+    /// The default scene with the shadow map looked up by `filter` in a
+    /// `size`² map.
+    pub const fn filtered(filter: Filter, size: u32) -> Self {
+        Self { shadow: ShadowSettings { filter, size, ..Self::DEFAULT.shadow }, ..Self::DEFAULT }
+    }
+
+    /// The default scene with hard shadows and `bias`.
+    pub const fn hard_with(bias: Bias) -> Self {
+        Self { shadow: ShadowSettings { filter: Filter::Hard, bias, ..Self::DEFAULT.shadow }, ..Self::DEFAULT }
     }
 }
 
@@ -299,7 +324,7 @@ impl Chapter for ShadowsChapter {
     // Measured mean FLIP 0.0187; outliers at most 0.1%.
     const BROWSER_TOLERANCE: common::Tolerance = common::Tolerance { mean: 0.028, outliers: 0.002 };
     const TITLE: &'static str = "10 · Shadows";
-    const VIEWS: &'static [View] = VIEWS;
+    const VIEWS: &'static [View] = &views_of(&VIEW_TABLE);
     /// Mid-jump: the player is in the air over the first wall.
     const SNAPSHOT_TIME: f32 = 5.7;
     const BENCH_FRAMES: u32 = 10;
@@ -364,7 +389,7 @@ impl Chapter for ShadowsChapter {
             },
         );
         Ok(Self {
-            settings: Settings::for_view("default"),
+            settings: Settings::DEFAULT,
             play: Play::Demo(Game::new(&level)),
             solids,
             level,
@@ -408,7 +433,7 @@ impl Chapter for ShadowsChapter {
     }
 
     fn apply_view(&mut self, view: usize) {
-        self.settings = Settings::for_view(VIEWS[view].name);
+        self.settings = VIEW_TABLE[view].settings;
         // --shadow-map-size wins over what a view asks for.
         if let Some(size) = self.size_flag {
             self.settings.shadow.size = size;

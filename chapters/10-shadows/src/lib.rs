@@ -26,6 +26,7 @@ pub mod lines;
 pub mod demo;
 
 pub use demo::{
-    CAMERA_DISTANCE, DAY_SECONDS, Fit, Settings, ShadowsChapter, Show, VIEWS, controls_from, side_camera, visible_part,
+    CAMERA_DISTANCE, CameraPreset, DAY_SECONDS, Fit, Settings, ShadowsChapter, Show, VIEW_TABLE, controls_from,
+    side_camera, visible_part,
 };
 pub use shadowed_renderer::ShadowedRenderer;

@@ -93,16 +93,21 @@ pub struct ShadowSettings {
     pub light_width: f32,
 }
 
+impl ShadowSettings {
+    /// A 2048² map, looked up on a Poisson disk, with enough bias.
+    pub const DEFAULT: Self = Self {
+        size: DEFAULT_SIZE,
+        filter: Filter::Poisson,
+        bias: Bias::DEFAULT,
+        cull: Cull::Back,
+        radius: 2.0,
+        light_width: 0.04,
+    };
+}
+
 impl Default for ShadowSettings {
     fn default() -> Self {
-        Self {
-            size: DEFAULT_SIZE,
-            filter: Filter::Poisson,
-            bias: Bias::DEFAULT,
-            cull: Cull::Back,
-            radius: 2.0,
-            light_width: 0.04,
-        }
+        Self::DEFAULT
     }
 }
 // ANCHOR_END: settings

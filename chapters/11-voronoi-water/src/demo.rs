@@ -6,7 +6,8 @@
 
 use common::glam::{Vec2, Vec3};
 use common::{
-    Camera, Chapter, Frame, Gpu, Input, ShaderError, Target, View, anyhow, egui, wgpu, winit::keyboard::KeyCode,
+    Camera, Chapter, Frame, Gpu, Input, ShaderError, Target, View, ViewRow, anyhow, egui, views_of, wgpu,
+    winit::keyboard::KeyCode,
 };
 use lighting::bloom::BloomSettings;
 use lighting::{Highlight, LoopOptions, PostChain, PostOutput, PostSettings, SceneLights};
@@ -26,32 +27,117 @@ use crate::voronoi::{Method, Voronoi, VoronoiSettings};
 use crate::water_texture::{self, Picture, Processing, WaterTexture};
 
 // ANCHOR: views
-pub const VIEWS: &[View] = &[
-    View::preset("default", "sunset: the boat sails into the sun over the Voronoi sea"),
-    View::mode("noon", "the same sea at noon, the sun 60° high"),
-    View::mode("night", "night: the moon's light, the sky from the gradient's dark end"),
-    View::mode("voronoi", "the raw diagram by cones of 8 segments, a hue per cell, tiled 1.5 times down"),
-    View::mode("blurred", "the cells in the sea's shades, box-blurred twice"),
-    View::mode("edges", "Sobel's edges of the blurred cells: the lines of foam"),
-    View::mode("cells", "an id buffer: each pixel's nearest site as red = i % 256, green = i / 256"),
-    View::mode("jfa", "the raw diagram by jump flooding, a hue per cell"),
-    View::mode("shadow-map", "the sun's depth, fitted tightly around the boat"),
-    View::mode("bloom-only", "what bloom adds: the sun and the glints on the water"),
-    View::preset("grid", "the sea's grid as wires, seen from high up: it follows the boat"),
-    View::mode("small-grid", "the seed's magic carpet: a grid of 24 m, three boat lengths"),
-    View::bench("cones-64-512", "64 sites by cones at 512²"),
-    View::bench("jfa-64-512", "64 sites by jump flooding at 512²"),
-    View::bench("cones-1024-512", "1,024 sites by cones at 512²"),
-    View::bench("jfa-1024-512", "1,024 sites by jump flooding at 512²"),
-    View::bench("cones-16384-512", "16,384 sites by cones at 512²"),
-    View::bench("jfa-16384-512", "16,384 sites by jump flooding at 512²"),
-    View::bench("cones-64-1024", "64 sites by cones at 1024²"),
-    View::bench("jfa-64-1024", "64 sites by jump flooding at 1024²"),
-    View::bench("cones-1024-1024", "1,024 sites by cones at 1024²"),
-    View::bench("jfa-1024-1024", "1,024 sites by jump flooding at 1024²"),
-    View::bench("cones-16384-1024", "16,384 sites by cones at 1024²"),
-    View::bench("jfa-16384-1024", "16,384 sites by jump flooding at 1024²"),
+/// Every view, once: what it shows, and for a preset where the camera goes.
+pub const VIEW_TABLE: [ViewRow<Settings, CameraPreset>; 24] = [
+    ViewRow::preset(
+        "default",
+        "sunset: the boat sails into the sun over the Voronoi sea",
+        Settings::SUNSET,
+        CameraPreset::Sunset,
+    ),
+    ViewRow::mode(
+        "noon",
+        "the same sea at noon, the sun 60° high",
+        Settings { day_start: 0.5 - SNAPSHOT_TIME / DAY_SECONDS, ..Settings::SUNSET },
+    ),
+    ViewRow::mode(
+        "night",
+        "night: the moon's light, the sky from the gradient's dark end",
+        Settings { day_start: 0.95 - SNAPSHOT_TIME / DAY_SECONDS, ..Settings::SUNSET },
+    ),
+    ViewRow::mode(
+        "voronoi",
+        "the raw diagram by cones of 8 segments, a hue per cell, tiled 1.5 times down",
+        Settings::diagram(Method::Cones, sites::DEFAULT_COUNT, 512),
+    ),
+    ViewRow::mode(
+        "blurred",
+        "the cells in the sea's shades, box-blurred twice",
+        Settings { show: Show::Picture(Picture::Blurred), ..Settings::SUNSET },
+    ),
+    ViewRow::mode(
+        "edges",
+        "Sobel's edges of the blurred cells: the lines of foam",
+        Settings { show: Show::Picture(Picture::Edges), ..Settings::SUNSET },
+    ),
+    ViewRow::mode(
+        "cells",
+        "an id buffer: each pixel's nearest site as red = i % 256, green = i / 256",
+        Settings {
+            voronoi: VoronoiSettings { method: Method::ExactCones, ..VoronoiSettings::DEFAULT },
+            show: Show::Cells,
+            ..Settings::SUNSET
+        },
+    ),
+    ViewRow::mode(
+        "jfa",
+        "the raw diagram by jump flooding, a hue per cell",
+        Settings::diagram(Method::JumpFlooding, sites::DEFAULT_COUNT, 512),
+    ),
+    ViewRow::mode(
+        "shadow-map",
+        "the sun's depth, fitted tightly around the boat",
+        Settings { show: Show::ShadowMap, ..Settings::SUNSET },
+    ),
+    ViewRow::mode(
+        "bloom-only",
+        "what bloom adds: the sun and the glints on the water",
+        Settings { show: Show::BloomOnly, ..Settings::SUNSET },
+    ),
+    ViewRow::preset(
+        "grid",
+        "the sea's grid as wires, seen from high up: it follows the boat",
+        Settings { wires: true, ..Settings::SUNSET },
+        CameraPreset::High,
+    ),
+    ViewRow::mode(
+        "small-grid",
+        "the seed's magic carpet: a grid of 24 m, three boat lengths",
+        Settings { small_grid: true, ..Settings::SUNSET },
+    ),
+    ViewRow::bench("cones-64-512", "64 sites by cones at 512²", Settings::diagram(Method::Cones, 64, 512)),
+    ViewRow::bench("jfa-64-512", "64 sites by jump flooding at 512²", Settings::diagram(Method::JumpFlooding, 64, 512)),
+    ViewRow::bench("cones-1024-512", "1,024 sites by cones at 512²", Settings::diagram(Method::Cones, 1024, 512)),
+    ViewRow::bench(
+        "jfa-1024-512",
+        "1,024 sites by jump flooding at 512²",
+        Settings::diagram(Method::JumpFlooding, 1024, 512),
+    ),
+    ViewRow::bench("cones-16384-512", "16,384 sites by cones at 512²", Settings::diagram(Method::Cones, 16384, 512)),
+    ViewRow::bench(
+        "jfa-16384-512",
+        "16,384 sites by jump flooding at 512²",
+        Settings::diagram(Method::JumpFlooding, 16384, 512),
+    ),
+    ViewRow::bench("cones-64-1024", "64 sites by cones at 1024²", Settings::diagram(Method::Cones, 64, 1024)),
+    ViewRow::bench(
+        "jfa-64-1024",
+        "64 sites by jump flooding at 1024²",
+        Settings::diagram(Method::JumpFlooding, 64, 1024),
+    ),
+    ViewRow::bench("cones-1024-1024", "1,024 sites by cones at 1024²", Settings::diagram(Method::Cones, 1024, 1024)),
+    ViewRow::bench(
+        "jfa-1024-1024",
+        "1,024 sites by jump flooding at 1024²",
+        Settings::diagram(Method::JumpFlooding, 1024, 1024),
+    ),
+    ViewRow::bench("cones-16384-1024", "16,384 sites by cones at 1024²", Settings::diagram(Method::Cones, 16384, 1024)),
+    ViewRow::bench(
+        "jfa-16384-1024",
+        "16,384 sites by jump flooding at 1024²",
+        Settings::diagram(Method::JumpFlooding, 16384, 1024),
+    ),
 ];
+
+/// Where a preset puts the orbit camera; a mode leaves it, and "reset
+/// camera" takes it back to [`Orbit::DEFAULT`].
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum CameraPreset {
+    /// [`Orbit::DEFAULT`]: behind the boat, into the sunset.
+    Sunset,
+    /// [`Orbit::HIGH`]: high over the boat, to see the grid.
+    High,
+}
 // ANCHOR_END: views
 
 /// What the frame shows.
@@ -96,57 +182,35 @@ pub struct Settings {
 pub const SNAPSHOT_TIME: f32 = 20.0;
 
 impl Settings {
-    pub fn for_view(name: &str) -> Self {
-        let mut s = Self {
-            voronoi: VoronoiSettings::default(),
-            sites: sites::DEFAULT_COUNT,
-            texture_size: 512,
-            processing: Processing::default(),
-            show: Show::Scene,
-            // At the snapshot time the sun stands 4.6° above the horizon.
-            day_start: 0.735 - SNAPSHOT_TIME / DAY_SECONDS,
-            day_runs: true,
-            snap_grid: true,
-            small_grid: false,
-            wires: false,
-            textured_sea: true,
-            shadows: true,
-            bloom: true,
-        };
-        let raw = |s: &mut Self, picture| {
-            s.processing.water_colours = false;
-            s.show = Show::Picture(picture);
-        };
-        match name {
-            "noon" => s.day_start = 0.5 - SNAPSHOT_TIME / DAY_SECONDS,
-            "night" => s.day_start = 0.95 - SNAPSHOT_TIME / DAY_SECONDS,
-            "voronoi" => raw(&mut s, Picture::Colours),
-            "blurred" => s.show = Show::Picture(Picture::Blurred),
-            "edges" => s.show = Show::Picture(Picture::Edges),
-            "cells" => {
-                s.voronoi.method = Method::ExactCones;
-                s.show = Show::Cells;
-            }
-            "jfa" => {
-                s.voronoi.method = Method::JumpFlooding;
-                raw(&mut s, Picture::Colours);
-            }
-            "shadow-map" => s.show = Show::ShadowMap,
-            "bloom-only" => s.show = Show::BloomOnly,
-            "grid" => s.wires = true,
-            "small-grid" => s.small_grid = true,
-            bench => {
-                // "cones-1024-512": method, sites, texture size.
-                let mut parts = bench.split('-');
-                if let (Some(method), Some(count), Some(size)) = (parts.next(), parts.next(), parts.next()) {
-                    s.voronoi.method = if method == "jfa" { Method::JumpFlooding } else { Method::Cones };
-                    s.sites = count.parse().unwrap_or(s.sites);
-                    s.texture_size = size.parse().unwrap_or(s.texture_size);
-                    raw(&mut s, Picture::Colours);
-                }
-            }
+    /// Sunset over the Voronoi sea: what the chapter starts with.
+    pub const SUNSET: Self = Self {
+        voronoi: VoronoiSettings::DEFAULT,
+        sites: sites::DEFAULT_COUNT,
+        texture_size: 512,
+        processing: Processing::DEFAULT,
+        show: Show::Scene,
+        // At the snapshot time the sun stands 4.6° above the horizon.
+        day_start: 0.735 - SNAPSHOT_TIME / DAY_SECONDS,
+        day_runs: true,
+        snap_grid: true,
+        small_grid: false,
+        wires: false,
+        textured_sea: true,
+        shadows: true,
+        bloom: true,
+    };
+
+    /// The raw diagram of `sites` sites by `method` in a texture
+    /// `texture_size` texels wide, a hue per cell, full screen.
+    pub const fn diagram(method: Method, sites: u32, texture_size: u32) -> Self {
+        Self {
+            voronoi: VoronoiSettings { method, ..VoronoiSettings::DEFAULT },
+            sites,
+            texture_size,
+            processing: Processing { water_colours: false, ..Processing::DEFAULT },
+            show: Show::Picture(Picture::Colours),
+            ..Self::SUNSET
         }
-        s
     }
 }
 
@@ -306,7 +370,7 @@ impl Chapter for VoronoiWaterChapter {
     // Measured mean FLIP 0.0282: foam lines are one pixel wide; outliers at most 0.1%.
     const BROWSER_TOLERANCE: common::Tolerance = common::Tolerance { mean: 0.042, outliers: 0.002 };
     const TITLE: &'static str = "11 · Voronoi water";
-    const VIEWS: &'static [View] = VIEWS;
+    const VIEWS: &'static [View] = &views_of(&VIEW_TABLE);
     const SNAPSHOT_TIME: f32 = SNAPSHOT_TIME;
     const BENCH_FRAMES: u32 = 10;
     const BENCH_BASELINE: Option<&'static str> = Some("cones-64-512");
@@ -324,7 +388,7 @@ impl Chapter for VoronoiWaterChapter {
 
     fn new(gpu: &Gpu, target: Target) -> anyhow::Result<Self> {
         let device = &gpu.device;
-        let settings = Settings::for_view("default");
+        let settings = Settings::SUNSET;
         let voronoi = Voronoi::new(gpu, settings.texture_size, settings.texture_size)?;
         let water = WaterTexture::new(gpu, settings.texture_size)?;
         let show = water_texture::Show::new(gpu, &water, target.format)?;
@@ -383,12 +447,15 @@ impl Chapter for VoronoiWaterChapter {
     }
 
     fn apply_view(&mut self, view: usize) {
-        self.settings = Settings::for_view(VIEWS[view].name);
+        self.settings = VIEW_TABLE[view].settings;
         self.clock = DayClock::default();
     }
 
     fn reset_camera(&mut self, view: usize) {
-        self.orbit = if VIEWS[view].name == "grid" { Orbit::HIGH } else { Orbit::DEFAULT };
+        self.orbit = match VIEW_TABLE[view].camera {
+            Some(CameraPreset::High) => Orbit::HIGH,
+            Some(CameraPreset::Sunset) | None => Orbit::DEFAULT,
+        };
     }
 
     // ANCHOR: update

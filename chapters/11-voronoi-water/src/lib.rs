@@ -26,4 +26,6 @@ pub mod islands;
 // The chapter itself: its settings, views, camera, clock and frame.
 pub mod demo;
 
-pub use demo::{DayClock, Orbit, Play, SNAPSHOT_TIME, Settings, Show, VIEWS, VoronoiWaterChapter, orders_from};
+pub use demo::{
+    CameraPreset, DayClock, Orbit, Play, SNAPSHOT_TIME, Settings, Show, VIEW_TABLE, VoronoiWaterChapter, orders_from,
+};

@@ -54,9 +54,15 @@ pub struct VoronoiSettings {
     pub extra_pass: bool,
 }
 
+impl VoronoiSettings {
+    /// Cones of 8 segments, as the seed drew them, tiled.
+    pub const DEFAULT: Self =
+        Self { method: Method::Cones, segments: 8, radius_scale: 1.0, tile_copies: true, extra_pass: false };
+}
+
 impl Default for VoronoiSettings {
     fn default() -> Self {
-        Self { method: Method::Cones, segments: 8, radius_scale: 1.0, tile_copies: true, extra_pass: false }
+        Self::DEFAULT
     }
 }
 

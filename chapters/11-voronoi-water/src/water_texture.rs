@@ -24,9 +24,14 @@ pub struct Processing {
     pub foam: (f32, f32),
 }
 
+impl Processing {
+    /// The sea's shades, blurred, with foam along the edges.
+    pub const DEFAULT: Self = Self { water_colours: true, blur_radius: 4, edges: true, foam: (0.04, 0.12) };
+}
+
 impl Default for Processing {
     fn default() -> Self {
-        Self { water_colours: true, blur_radius: 4, edges: true, foam: (0.04, 0.12) }
+        Self::DEFAULT
     }
 }
 

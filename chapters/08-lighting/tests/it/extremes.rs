@@ -24,7 +24,7 @@ fn draw(gpu: &Gpu, (width, height): (u32, u32), settings: Settings, case: &str) 
 #[test]
 fn sliders_at_their_ends_draw_without_errors_or_nans() {
     let gpu = Gpu::headless(LightingChapter::gpu_needs()).expect("an adapter (lavapipe will do)");
-    let night = Settings::for_view("night");
+    let night = Settings::NIGHT;
     let small = (96, 54);
     for lights in [LightCount::First(0), LightCount::First(MAX_LIGHTS), LightCount::City] {
         for shading in [Shading::Flat, Shading::Gouraud, Shading::Phong] {

@@ -160,8 +160,8 @@ fn a_box_above_a_plane_casts_the_shadow_geometry_predicts() {
 fn shadowed_lit_faces(gpu: &Gpu, view: &str) -> (usize, usize) {
     let target = Target { format: OFFSCREEN_FORMAT, width: 480, height: 270 };
     let mut chapter = ShadowsChapter::new(gpu, target).unwrap();
-    chapter.settings = shadows::Settings { show: Show::Sunlit, ..shadows::Settings::for_view(view) };
     let index = common::chapter::view_index::<ShadowsChapter>(view).unwrap();
+    chapter.settings = shadows::Settings { show: Show::Sunlit, ..shadows::VIEW_TABLE[index].settings };
     let image = capture(gpu, &mut chapter, target, ShadowsChapter::SNAPSHOT_TIME, index).unwrap();
     let facing = image.pixels().filter(|p| p[1] > 128).count();
     let dark = image.pixels().filter(|p| p[1] > 128 && p[0] < 128).count();

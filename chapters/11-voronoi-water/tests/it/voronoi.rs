@@ -8,7 +8,7 @@ use common::headless::{OFFSCREEN_FORMAT, capture, read_bytes};
 use common::{Chapter, Gpu, PassTimer, Target};
 use voronoi_water::sites::{self, nearest, torus_offset};
 use voronoi_water::voronoi::{Method, NONE, Voronoi, VoronoiSettings};
-use voronoi_water::{Settings, VoronoiWaterChapter};
+use voronoi_water::{VIEW_TABLE, VoronoiWaterChapter};
 
 const WIDTH: u32 = 400;
 const HEIGHT: u32 = 240;
@@ -164,8 +164,20 @@ fn one_site_the_most_sites_and_two_sites_in_one_place_all_work() {
 
 #[test]
 fn the_slider_settings_reach_the_views() {
-    // The `cells` view is exact; the bench views parse their names.
-    assert_eq!(Settings::for_view("cells").voronoi.method, Method::ExactCones);
-    let bench = Settings::for_view("jfa-16384-1024");
+    // The `cells` view is exact; each bench view draws what its name says.
+    let settings = |view| VIEW_TABLE[common::chapter::view_index::<VoronoiWaterChapter>(view).unwrap()].settings;
+    assert_eq!(settings("cells").voronoi.method, Method::ExactCones);
+    let bench = settings("jfa-16384-1024");
     assert_eq!((bench.voronoi.method, bench.sites, bench.texture_size), (Method::JumpFlooding, 16_384, 1024));
+    let benches: Vec<_> = VIEW_TABLE.iter().filter(|row| !row.view.snapshot).collect();
+    assert_eq!(benches.len(), 12);
+    for row in benches {
+        let s = row.settings;
+        let method = match s.voronoi.method {
+            Method::Cones => "cones",
+            Method::JumpFlooding => "jfa",
+            other => panic!("{}: a bench view by {other:?}", row.view.name),
+        };
+        assert_eq!(row.view.name, format!("{method}-{}-{}", s.sites, s.texture_size));
+    }
 }

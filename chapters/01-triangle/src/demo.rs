@@ -1,0 +1,120 @@
+//! The chapter itself: what each view decides, the views, the overlay's
+//! colour pickers, and `impl Chapter`, which puts the vertex buffer and the
+//! two pipelines together into a frame.
+
+use common::wgpu::util::DeviceExt as _;
+use common::{Chapter, Frame, Gpu, ShaderError, Target, View, ViewRow, anyhow, egui, shader, views_of, wgpu};
+
+use crate::pipeline::build_pipeline;
+use crate::vertex::{ColoredVertex, TRIANGLE};
+
+/// The background, a dark blue-grey (linear RGB).
+const CLEAR: wgpu::Color = wgpu::Color { r: 0.02, g: 0.025, b: 0.04, a: 1.0 };
+
+/// What a view decides.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct Settings {
+    /// Blend the corners' colours across the triangle (off: every pixel
+    /// takes the first corner's colour).
+    pub interpolate: bool,
+}
+
+impl Settings {
+    pub const DEFAULT: Self = Self { interpolate: true };
+}
+
+/// The triangle has no camera, so no view is a preset: this enum has no values.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum CameraPreset {}
+
+/// Every view, with the settings it applies.
+pub const VIEW_TABLE: [ViewRow<Settings, CameraPreset>; 2] = [
+    ViewRow::mode("default", "colours interpolated across the triangle", Settings::DEFAULT),
+    ViewRow::mode(
+        "flat",
+        "interpolation off: one colour per triangle, from its first vertex",
+        Settings { interpolate: false },
+    ),
+];
+
+pub struct Triangle {
+    pub settings: Settings,
+    vertices: wgpu::Buffer,
+    corners: [ColoredVertex; 3],
+    smooth: wgpu::RenderPipeline,
+    flat: wgpu::RenderPipeline,
+    format: wgpu::TextureFormat,
+}
+
+impl Triangle {
+    fn pipelines(gpu: &Gpu, format: wgpu::TextureFormat) -> Result<[wgpu::RenderPipeline; 2], ShaderError> {
+        let module = shader!("triangle/triangle.wgsl").module(gpu)?;
+        gpu.catch_validation(|| {
+            [
+                build_pipeline(&gpu.device, &module, format, "vs_main", "fs_main"),
+                build_pipeline(&gpu.device, &module, format, "vs_flat", "fs_flat"),
+            ]
+        })
+        .map_err(ShaderError)
+    }
+}
+
+impl Chapter for Triangle {
+    const NAME: &'static str = env!("CARGO_PKG_NAME");
+    const TITLE: &'static str = "01 · The first triangle";
+    const VIEWS: &'static [View] = &views_of(&VIEW_TABLE);
+
+    // ANCHOR: new
+    fn new(gpu: &Gpu, target: Target) -> anyhow::Result<Self> {
+        let vertices = gpu.device.create_buffer_init(&wgpu::util::BufferInitDescriptor {
+            label: Some("triangle vertices"),
+            contents: bytemuck::cast_slice(&TRIANGLE),
+            // COPY_DST so the colour pickers in the overlay can rewrite it.
+            usage: wgpu::BufferUsages::VERTEX | wgpu::BufferUsages::COPY_DST,
+        });
+        let [smooth, flat] = Self::pipelines(gpu, target.format)?;
+        Ok(Self { settings: Settings::DEFAULT, vertices, corners: TRIANGLE, smooth, flat, format: target.format })
+    }
+    // ANCHOR_END: new
+
+    fn apply_view(&mut self, view: usize) {
+        self.settings = VIEW_TABLE[view].settings;
+    }
+
+    // ANCHOR: render
+    fn render(&mut self, gpu: &Gpu, frame: &mut Frame) {
+        gpu.queue.write_buffer(&self.vertices, 0, bytemuck::cast_slice(&self.corners));
+        let mut pass = frame.encoder.begin_render_pass(&wgpu::RenderPassDescriptor {
+            label: Some("triangle"),
+            color_attachments: &[Some(wgpu::RenderPassColorAttachment {
+                view: frame.target,
+                depth_slice: None,
+                resolve_target: None,
+                ops: wgpu::Operations { load: wgpu::LoadOp::Clear(CLEAR), store: wgpu::StoreOp::Store },
+            })],
+            timestamp_writes: frame.timer.pass("triangle"),
+            ..Default::default()
+        });
+        pass.set_pipeline(if self.settings.interpolate { &self.smooth } else { &self.flat });
+        pass.set_vertex_buffer(0, self.vertices.slice(..));
+        pass.draw(0..3, 0..1);
+    }
+    // ANCHOR_END: render
+
+    fn ui(&mut self, ui: &mut egui::Ui) {
+        ui.label("Corner colours (linear RGB):");
+        ui.horizontal(|ui| {
+            for corner in &mut self.corners {
+                ui.color_edit_button_rgb(&mut corner.color);
+            }
+        });
+        if ui.button("reset").clicked() {
+            self.corners = TRIANGLE;
+        }
+    }
+
+    fn reload_shaders(&mut self, gpu: &Gpu) -> Result<(), ShaderError> {
+        [self.smooth, self.flat] = Self::pipelines(gpu, self.format)?;
+        Ok(())
+    }
+}

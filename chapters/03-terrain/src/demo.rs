@@ -1,0 +1,197 @@
+//! The chapter itself: what each view decides, the views and their
+//! cameras, the overlay's controls, and `impl Chapter`, which draws the
+//! terrain from the flying camera, or from high above for `chunks`.
+
+use common::texture::depth_view;
+use common::{
+    Camera, Chapter, FlyController, Frame, Gpu, Input, ShaderError, ShaderFile, Target, View, ViewRow, anyhow, egui,
+    shader, views_of, wgpu,
+};
+
+use crate::cameras::{close_up_camera, overhead_camera, start_camera};
+use crate::culling::Frustum;
+use crate::heightfield::{HeightField, TerrainSettings};
+use crate::terrain_data::TerrainData;
+use crate::terrain_renderer::{KEEP_ALL, SKY, Shading, Sun, TerrainRenderer, Viewpoint, gpu_needs};
+
+/// What a view decides.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct Settings {
+    /// How the ground is coloured.
+    pub shading: Shading,
+}
+
+impl Settings {
+    pub const DEFAULT: Self = Self { shading: Shading::Shaded };
+}
+
+/// The places a view can put the camera.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum CameraPreset {
+    /// At the foot of the cliff, where the wireframe's cells are large.
+    CloseUp,
+}
+
+impl CameraPreset {
+    pub fn camera(self, field: &HeightField, aspect: f32) -> Camera {
+        match self {
+            Self::CloseUp => close_up_camera(field, aspect),
+        }
+    }
+}
+
+// Every view but `close-up` is a mode: a way of drawing what the flying
+// camera sees. `chunks` too: it shows that camera's culling from above.
+
+/// Every view, with the settings it applies and, for a preset, its camera.
+pub const VIEW_TABLE: [ViewRow<Settings, CameraPreset>; 5] = [
+    ViewRow::mode("default", "the terrain, coloured by height and slope, with its cliff", Settings::DEFAULT),
+    ViewRow::mode(
+        "wireframe",
+        "the triangles of the height-map mesh, wherever they are at least 8 pixels apart",
+        Settings { shading: Shading::Wireframe },
+    ),
+    ViewRow::preset(
+        "close-up",
+        "the wireframe from the foot of the cliff, where the 1 m cells are large",
+        Settings { shading: Shading::Wireframe },
+        CameraPreset::CloseUp,
+    ),
+    ViewRow::mode(
+        "normals",
+        "normals from the whole height field: no seams at chunk borders",
+        Settings { shading: Shading::Normals },
+    ),
+    ViewRow::mode(
+        "chunks",
+        "from 4 km above: a colour per chunk your camera draws, dark for the culled ones",
+        Settings { shading: Shading::Chunks },
+    ),
+];
+
+pub struct TerrainChapter {
+    pub settings: Settings,
+    pub terrain: TerrainRenderer,
+    pub camera: Camera,
+    pub controller: FlyController,
+    viewpoint: Viewpoint,
+    layout: wgpu::PipelineLayout,
+    pipeline: wgpu::RenderPipeline,
+    depth: wgpu::TextureView,
+    target: Target,
+    /// Chunks drawn in the last frame.
+    pub drawn: usize,
+    /// The overlay changed the settings; regenerate before the next frame.
+    regenerate_requested: bool,
+}
+
+fn terrain_shader() -> ShaderFile {
+    shader!("terrain/terrain.wgsl")
+}
+
+impl Chapter for TerrainChapter {
+    const NAME: &'static str = env!("CARGO_PKG_NAME");
+    const PREPARES_IN_STEPS: bool = true;
+    const TITLE: &'static str = "03 · Terrain from noise";
+    const VIEWS: &'static [View] = &views_of(&VIEW_TABLE);
+    const KEYS: &'static [(&'static str, &'static str)] = FlyController::KEYS;
+    const BENCH_FRAMES: u32 = 10;
+
+    fn gpu_needs() -> common::GpuNeeds {
+        gpu_needs()
+    }
+
+    /// The terrain is the long part of starting: in steps, so a page shows its progress.
+    fn prepare(gpu: &Gpu) -> Option<common::Preparation> {
+        TerrainData::prepare(gpu, TerrainSettings::default())
+    }
+
+    fn new(gpu: &Gpu, target: Target) -> anyhow::Result<Self> {
+        let terrain = TerrainRenderer::new(gpu, TerrainSettings::default());
+        let layout = gpu.device.create_pipeline_layout(&wgpu::PipelineLayoutDescriptor {
+            label: Some("terrain"),
+            bind_group_layouts: &[Some(&terrain.bind_group_layout)],
+            immediate_size: 0,
+        });
+        let pipeline = terrain.pipeline(gpu, &terrain_shader(), &layout, target.format)?;
+        Ok(Self {
+            settings: Settings::DEFAULT,
+            camera: start_camera(terrain.field(), target.aspect()),
+            controller: FlyController { speed: 40.0, ..Default::default() },
+            viewpoint: terrain.viewpoint(&gpu.device),
+            terrain,
+            layout,
+            pipeline,
+            depth: depth_view(&gpu.device, target.width, target.height),
+            target,
+            drawn: 0,
+            regenerate_requested: false,
+        })
+    }
+
+    fn resize(&mut self, gpu: &Gpu, target: Target) {
+        self.target = target;
+        self.camera.aspect = target.aspect();
+        self.depth = depth_view(&gpu.device, target.width, target.height);
+    }
+
+    fn apply_view(&mut self, view: usize) {
+        self.settings = VIEW_TABLE[view].settings;
+    }
+
+    fn reset_camera(&mut self, view: usize) {
+        let (field, aspect) = (self.terrain.field(), self.target.aspect());
+        self.camera = match VIEW_TABLE[view].camera {
+            Some(preset) => preset.camera(field, aspect),
+            None => start_camera(field, aspect),
+        };
+    }
+
+    fn camera_mut(&mut self) -> Option<&mut Camera> {
+        Some(&mut self.camera)
+    }
+
+    fn update(&mut self, input: &Input, dt: f32) {
+        self.controller.update(&mut self.camera, input, dt);
+    }
+
+    // ANCHOR: render
+    fn render(&mut self, gpu: &Gpu, frame: &mut Frame) {
+        if std::mem::take(&mut self.regenerate_requested) {
+            self.terrain.regenerate(gpu);
+        }
+        let shading = self.settings.shading;
+        let mut pass = frame.scene_pass("terrain", SKY, &self.depth);
+        pass.set_pipeline(&self.pipeline);
+        if shading == Shading::Chunks {
+            // Look from high above at what the flying camera culls: every
+            // chunk is drawn (coarsely), coloured if the camera keeps it.
+            let frustum = Frustum::from_view_projection(self.camera.view_projection());
+            self.terrain.write_chunk_flags(&gpu.queue, &frustum);
+            self.drawn = self.terrain.mesh().bounds.iter().filter(|b| frustum.intersects(b)).count();
+            let overhead = overhead_camera(self.terrain.field(), self.target.aspect());
+            self.terrain.aim(&gpu.queue, &mut self.viewpoint, &overhead, Sun::AFTERNOON, shading, KEEP_ALL);
+            self.terrain.bind(&mut pass, &self.viewpoint);
+            self.terrain.mesh().draw_all_coarse(&mut pass);
+        } else {
+            self.terrain.aim(&gpu.queue, &mut self.viewpoint, &self.camera, Sun::AFTERNOON, shading, KEEP_ALL);
+            self.drawn = self.terrain.draw(&mut pass, &self.viewpoint);
+        }
+    }
+    // ANCHOR_END: render
+
+    fn ui(&mut self, ui: &mut egui::Ui) {
+        ui.label(format!("chunks drawn: {} / {}", self.drawn, self.terrain.mesh().bounds.len()));
+        self.regenerate_requested |= self.terrain.settings_ui(ui);
+        ui.add(egui::Slider::new(&mut self.controller.speed, 5.0..=400.0).logarithmic(true).text("speed (m/s)"));
+    }
+
+    fn stats(&mut self, _gpu: &Gpu) -> String {
+        self.terrain.stats(self.drawn)
+    }
+
+    fn reload_shaders(&mut self, gpu: &Gpu) -> Result<(), ShaderError> {
+        self.pipeline = self.terrain.pipeline(gpu, &terrain_shader(), &self.layout, self.target.format)?;
+        Ok(())
+    }
+}

@@ -1,0 +1,160 @@
+//! The chapter itself: the fog each view applies, the views, the
+//! overlay's sliders, and `impl Chapter`, which draws chapter 03's terrain
+//! through the fog with the far plane pulled in to where it turns opaque.
+
+use common::texture::depth_view;
+use common::{
+    Camera, Chapter, FlyController, Frame, Gpu, Input, ShaderError, Target, View, ViewRow, anyhow, egui, views_of, wgpu,
+};
+use terrain::heightfield::{HeightField, TerrainSettings};
+use terrain::{KEEP_ALL, SKY, Shading, Sun, TerrainRenderer, Viewpoint, start_camera};
+
+use crate::fog_binding::{FogBinding, fog_shader};
+use crate::fog_settings::FogSettings;
+
+/// No view of this chapter places the camera (every one is a mode): this
+/// enum has no values.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum CameraPreset {}
+
+impl CameraPreset {
+    pub fn camera(self, _field: &HeightField, _aspect: f32) -> Camera {
+        match self {}
+    }
+}
+
+/// Every view, with the fog it applies.
+pub const VIEW_TABLE: [ViewRow<FogSettings, CameraPreset>; 3] = [
+    ViewRow::mode("default", "the terrain in a light haze, fading into the sky", FogSettings::HAZE),
+    ViewRow::mode("no-fog", "the same view without fog: a hard edge where the world ends", FogSettings::NONE),
+    ViewRow::mode("dense", "a dust storm: thick fog, and a far plane pulled in to 588 m", FogSettings::DUST_STORM),
+];
+
+pub struct FogChapter {
+    pub terrain: TerrainRenderer,
+    pub fog: FogSettings,
+    pub camera: Camera,
+    pub controller: FlyController,
+    fog_binding: FogBinding,
+    viewpoint: Viewpoint,
+    layout: wgpu::PipelineLayout,
+    pipeline: wgpu::RenderPipeline,
+    depth: wgpu::TextureView,
+    target: Target,
+    pub drawn: usize,
+    regenerate_requested: bool,
+}
+
+impl Chapter for FogChapter {
+    const NAME: &'static str = env!("CARGO_PKG_NAME");
+    const PREPARES_IN_STEPS: bool = true;
+    const TITLE: &'static str = "04 · Fog";
+    const VIEWS: &'static [View] = &views_of(&VIEW_TABLE);
+    const KEYS: &'static [(&'static str, &'static str)] = FlyController::KEYS;
+    const BENCH_FRAMES: u32 = 10;
+
+    fn gpu_needs() -> common::GpuNeeds {
+        terrain::gpu_needs()
+    }
+
+    /// The terrain is the long part of starting: in steps, so a page shows its progress.
+    fn prepare(gpu: &Gpu) -> Option<common::Preparation> {
+        terrain::TerrainData::prepare(gpu, TerrainSettings::default())
+    }
+
+    fn new(gpu: &Gpu, target: Target) -> anyhow::Result<Self> {
+        let device = &gpu.device;
+        let terrain = TerrainRenderer::new(gpu, TerrainSettings::default());
+        let fog_binding = FogBinding::new(device);
+        let layout = device.create_pipeline_layout(&wgpu::PipelineLayoutDescriptor {
+            label: Some("fog"),
+            bind_group_layouts: &[Some(&terrain.bind_group_layout), Some(&fog_binding.layout)],
+            immediate_size: 0,
+        });
+        let pipeline = terrain.pipeline(gpu, &fog_shader(), &layout, target.format)?;
+        Ok(Self {
+            camera: start_camera(terrain.field(), target.aspect()),
+            controller: FlyController { speed: 40.0, ..Default::default() },
+            fog: FogSettings::HAZE,
+            viewpoint: terrain.viewpoint(device),
+            terrain,
+            fog_binding,
+            layout,
+            pipeline,
+            depth: depth_view(device, target.width, target.height),
+            target,
+            drawn: 0,
+            regenerate_requested: false,
+        })
+    }
+
+    fn resize(&mut self, gpu: &Gpu, target: Target) {
+        self.target = target;
+        self.camera.aspect = target.aspect();
+        self.depth = depth_view(&gpu.device, target.width, target.height);
+    }
+
+    fn apply_view(&mut self, view: usize) {
+        self.fog = VIEW_TABLE[view].settings;
+    }
+
+    fn reset_camera(&mut self, view: usize) {
+        let (field, aspect) = (self.terrain.field(), self.target.aspect());
+        self.camera = match VIEW_TABLE[view].camera {
+            Some(preset) => preset.camera(field, aspect),
+            None => start_camera(field, aspect),
+        };
+    }
+
+    fn camera_mut(&mut self) -> Option<&mut Camera> {
+        Some(&mut self.camera)
+    }
+
+    fn update(&mut self, input: &Input, dt: f32) {
+        self.controller.update(&mut self.camera, input, dt);
+    }
+
+    // ANCHOR: render
+    fn render(&mut self, gpu: &Gpu, frame: &mut Frame) {
+        if std::mem::take(&mut self.regenerate_requested) {
+            self.terrain.regenerate(gpu);
+        }
+        // Nothing past the opaque distance can be seen: stop drawing there.
+        self.camera.far = self.fog.far_plane();
+        self.fog_binding.write(&gpu.queue, self.fog);
+        self.terrain.aim(&gpu.queue, &mut self.viewpoint, &self.camera, Sun::AFTERNOON, Shading::Shaded, KEEP_ALL);
+
+        // Clear to the fog colour: where there is no ground, the fog's
+        // "infinitely far" is what shows.
+        let mut pass = frame.scene_pass("terrain", SKY, &self.depth);
+        pass.set_pipeline(&self.pipeline);
+        pass.set_bind_group(1, &self.fog_binding.group, &[]);
+        self.drawn = self.terrain.draw(&mut pass, &self.viewpoint);
+    }
+    // ANCHOR_END: render
+
+    fn ui(&mut self, ui: &mut egui::Ui) {
+        ui.add(egui::Slider::new(&mut self.fog.density, 0.0..=0.01).logarithmic(true).text("density (per m)"));
+        ui.add(egui::Slider::new(&mut self.fog.gradient, 0.5..=4.0).text("gradient"));
+        ui.label(format!(
+            "opaque beyond {:.0} m; far plane {:.0} m; chunks drawn {} / {}",
+            self.fog.opaque_distance(),
+            self.camera.far,
+            self.drawn,
+            self.terrain.mesh().bounds.len()
+        ));
+        ui.collapsing("terrain", |ui| {
+            self.regenerate_requested |= self.terrain.settings_ui(ui);
+        });
+        ui.add(egui::Slider::new(&mut self.controller.speed, 5.0..=400.0).logarithmic(true).text("speed (m/s)"));
+    }
+
+    fn stats(&mut self, _gpu: &Gpu) -> String {
+        format!("far plane {:.0} m; {}", self.camera.far, self.terrain.stats(self.drawn))
+    }
+
+    fn reload_shaders(&mut self, gpu: &Gpu) -> Result<(), ShaderError> {
+        self.pipeline = self.terrain.pipeline(gpu, &fog_shader(), &self.layout, self.target.format)?;
+        Ok(())
+    }
+}

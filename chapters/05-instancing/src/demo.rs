@@ -1,0 +1,197 @@
+//! The chapter itself: the rocks each view draws, the views, the overlay's
+//! controls, and `impl Chapter`, which draws the Mars plain from the
+//! camera standing on it.
+
+use common::texture::depth_view;
+use common::{
+    Camera, Chapter, FlyController, Frame, Gpu, Input, ShaderError, Target, View, ViewRow, anyhow, egui, views_of, wgpu,
+};
+use fog::FogSettings;
+use terrain::heightfield::{HeightField, TerrainSettings};
+use terrain::{KEEP_ALL, SKY, Sun, Viewpoint};
+
+use crate::mars_plain::{DrawCalls, MarsPlain, Mode, Setup, plain_camera};
+use crate::rock_field::{MAX_ONE_PER_DRAW, MAX_ROCKS, RockInstance, SEED};
+use crate::rock_mesh::rock_mesh;
+
+/// No view of this chapter places the camera (every one is a mode): this
+/// enum has no values.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum CameraPreset {}
+
+impl CameraPreset {
+    pub fn camera(self, _field: &HeightField, _aspect: f32) -> Camera {
+        match self {}
+    }
+}
+
+/// Every view, with the rocks it draws and how. The bench views leave the
+/// terrain out, so that their numbers are the rocks' alone.
+pub const VIEW_TABLE: [ViewRow<Setup, CameraPreset>; 7] = [
+    ViewRow::mode("default", "the Mars plain: terrain, fog and 200,000 rocks in one draw call", Setup::DEFAULT),
+    ViewRow::mode(
+        "naive",
+        "the same plain with 2,000 rocks, one draw call each",
+        Setup { rocks: 2_000, mode: Mode::OnePerDraw, terrain: true },
+    ),
+    ViewRow::mode(
+        "rocks-10k",
+        "bench: 10,000 rocks, instanced, no terrain",
+        Setup { rocks: 10_000, mode: Mode::Instanced, terrain: false },
+    ),
+    ViewRow::mode(
+        "rocks-100k",
+        "bench: 100,000 rocks, instanced, no terrain",
+        Setup { rocks: 100_000, mode: Mode::Instanced, terrain: false },
+    ),
+    ViewRow::mode(
+        "rocks-1m",
+        "bench: 1,000,000 rocks, instanced, no terrain",
+        Setup { rocks: 1_000_000, mode: Mode::Instanced, terrain: false },
+    ),
+    ViewRow::mode(
+        "naive-10k",
+        "bench: 10,000 rocks, one draw call each, no terrain",
+        Setup { rocks: 10_000, mode: Mode::OnePerDraw, terrain: false },
+    ),
+    ViewRow::mode(
+        "flat-1m",
+        "bench: 1,000,000 rocks, instanced, flat colour: the cost floor",
+        Setup { rocks: 1_000_000, mode: Mode::Flat, terrain: false },
+    ),
+];
+
+pub struct InstancingChapter {
+    pub plain: MarsPlain,
+    pub fog: FogSettings,
+    pub setup: Setup,
+    pub camera: Camera,
+    pub controller: FlyController,
+    viewpoint: Viewpoint,
+    depth: wgpu::TextureView,
+    target: Target,
+    /// Draw calls in the last frame.
+    pub draw_calls: DrawCalls,
+    regenerate_requested: bool,
+}
+
+impl Chapter for InstancingChapter {
+    const NAME: &'static str = env!("CARGO_PKG_NAME");
+    const PREPARES_IN_STEPS: bool = true;
+    const TITLE: &'static str = "05 · Instancing";
+    const VIEWS: &'static [View] = &views_of(&VIEW_TABLE);
+    const KEYS: &'static [(&'static str, &'static str)] = FlyController::KEYS;
+    const BENCH_FRAMES: u32 = 10;
+
+    fn gpu_needs() -> common::GpuNeeds {
+        terrain::gpu_needs()
+    }
+
+    /// The terrain is the long part of starting: in steps, so a page shows its progress.
+    fn prepare(gpu: &Gpu) -> Option<common::Preparation> {
+        terrain::TerrainData::prepare(gpu, TerrainSettings::default())
+    }
+
+    fn new(gpu: &Gpu, target: Target) -> anyhow::Result<Self> {
+        let plain = MarsPlain::new(gpu, target.format)?;
+        Ok(Self {
+            camera: plain_camera(plain.terrain.field(), target.aspect()),
+            controller: FlyController { speed: 20.0, ..Default::default() },
+            fog: FogSettings::HAZE,
+            setup: Setup::DEFAULT,
+            viewpoint: plain.terrain.viewpoint(&gpu.device),
+            plain,
+            depth: depth_view(&gpu.device, target.width, target.height),
+            target,
+            draw_calls: DrawCalls::default(),
+            regenerate_requested: false,
+        })
+    }
+
+    fn resize(&mut self, gpu: &Gpu, target: Target) {
+        self.target = target;
+        self.camera.aspect = target.aspect();
+        self.depth = depth_view(&gpu.device, target.width, target.height);
+    }
+
+    fn apply_view(&mut self, view: usize) {
+        self.setup = VIEW_TABLE[view].settings;
+    }
+
+    fn reset_camera(&mut self, view: usize) {
+        let (field, aspect) = (self.plain.terrain.field(), self.target.aspect());
+        self.camera = match VIEW_TABLE[view].camera {
+            Some(preset) => preset.camera(field, aspect),
+            None => plain_camera(field, aspect),
+        };
+    }
+
+    fn camera_mut(&mut self) -> Option<&mut Camera> {
+        Some(&mut self.camera)
+    }
+
+    fn update(&mut self, input: &Input, dt: f32) {
+        self.controller.update(&mut self.camera, input, dt);
+    }
+
+    // ANCHOR: render
+    fn render(&mut self, gpu: &Gpu, frame: &mut Frame) {
+        if std::mem::take(&mut self.regenerate_requested) {
+            self.plain.regenerate(gpu);
+        }
+        // Chapter 04: nothing beyond the fog's opaque distance needs drawing.
+        self.camera.far = self.fog.far_plane();
+        let sky = [SKY.r as f32, SKY.g as f32, SKY.b as f32];
+        self.plain.set_air(&gpu.queue, self.fog, sky);
+        self.plain.aim(&gpu.queue, &mut self.viewpoint, &self.camera, Sun::AFTERNOON, KEEP_ALL);
+        let mut pass = frame.scene_pass("terrain and rocks", SKY, &self.depth);
+        self.draw_calls = self.plain.draw(&mut pass, &self.viewpoint, self.setup);
+    }
+    // ANCHOR_END: render
+
+    fn ui(&mut self, ui: &mut egui::Ui) {
+        let s = &mut self.setup;
+        ui.horizontal(|ui| {
+            ui.radio_value(&mut s.mode, Mode::Instanced, "instanced");
+            ui.radio_value(&mut s.mode, Mode::OnePerDraw, "one draw per rock");
+            ui.radio_value(&mut s.mode, Mode::Flat, "flat");
+        });
+        let max = if s.mode == Mode::OnePerDraw { MAX_ONE_PER_DRAW } else { self.plain.rocks_placed() };
+        s.rocks = s.rocks.min(max);
+        ui.add(egui::Slider::new(&mut s.rocks, 0..=max).logarithmic(true).text("rocks"));
+        ui.checkbox(&mut s.terrain, "terrain");
+        let calls = self.draw_calls;
+        ui.label(format!(
+            "draw calls last frame: {} ({} terrain chunks, {} for the rocks)",
+            calls.total(),
+            calls.terrain,
+            calls.rocks
+        ));
+        if self.plain.rocks_placed() < MAX_ROCKS {
+            ui.label(format!("this terrain is steep: only {} rocks found room", self.plain.rocks_placed()));
+        }
+        ui.add(egui::Slider::new(&mut self.fog.density, 0.0..=0.01).logarithmic(true).text("fog density"));
+        ui.collapsing("terrain settings", |ui| {
+            self.regenerate_requested |= self.plain.terrain.settings_ui(ui);
+        });
+        ui.add(egui::Slider::new(&mut self.controller.speed, 2.0..=200.0).logarithmic(true).text("speed (m/s)"));
+    }
+
+    fn stats(&mut self, _gpu: &Gpu) -> String {
+        let calls = self.draw_calls;
+        format!(
+            "{} rocks, {:?}; {} draw calls ({} terrain chunks + {} for the rocks); {} vertices per rock, {} bytes per instance",
+            self.setup.rocks.min(self.plain.rocks_placed()),
+            self.setup.mode,
+            calls.total(),
+            calls.terrain,
+            calls.rocks,
+            rock_mesh(SEED).vertices.len(),
+            std::mem::size_of::<RockInstance>()
+        )
+    }
+
+    fn reload_shaders(&mut self, gpu: &Gpu) -> Result<(), ShaderError> {
+        self.plain.reload_shaders(gpu)
+    }
+}

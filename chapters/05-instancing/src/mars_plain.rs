@@ -1,0 +1,275 @@
+//! The Mars plain so far: chapter 03's terrain in chapter 04's fog, strewn
+//! with this chapter's rocks, drawn instanced, one call per rock, or flat.
+//! Chapters 05, 06 and 07 each own one and draw it through explicit inputs.
+
+use std::sync::Arc;
+
+use common::glam::{Vec3, Vec4};
+use common::texture::depth_test;
+use common::{Camera, Gpu, ShaderError, ShaderFile, Vertex, anyhow, shader, wgpu};
+use fog::{FogBinding, FogSettings, fog_shader};
+use terrain::heightfield::{HeightField, TerrainSettings};
+use terrain::{Shading, Sun, TerrainRenderer, Viewpoint};
+
+use crate::rock_field::{MAX_ONE_PER_DRAW, RockField, RockInstance};
+
+/// Standing on the plain, eyes 3.5 m up, looking across the rocks at the cliff.
+pub fn plain_camera(field: &HeightField, aspect: f32) -> Camera {
+    let s = field.settings;
+    let x = s.extent() * 0.47 + 60.0;
+    let z = s.cliff_line(x) + 230.0;
+    let eye = Vec3::new(x, field.height_at(x, z) + 3.5, z);
+    let ahead = Vec3::new(x + 40.0, 0.0, z - 200.0);
+    let target = Vec3::new(ahead.x, field.height_at(ahead.x, ahead.z) + 2.0, ahead.z);
+    Camera { far: fog::MAX_FAR, near: 0.1, ..Camera::looking_at(eye, target, aspect) }
+}
+
+/// How the rocks are drawn.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Mode {
+    /// All rocks in one instanced draw call.
+    Instanced,
+    /// One draw call per rock, each with its own uniform offset.
+    OnePerDraw,
+    /// Instanced, with a flat colour and no lighting or fog: the floor.
+    Flat,
+}
+
+/// What a view shows: the rock count, how they are drawn, and whether the
+/// terrain is drawn too (the bench views leave it out so that the numbers
+/// are the rocks' alone).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Setup {
+    pub rocks: u32,
+    pub mode: Mode,
+    pub terrain: bool,
+}
+
+impl Setup {
+    /// The plain as the book shows it: the terrain and 200,000 rocks in one draw call.
+    pub const DEFAULT: Self = Self { rocks: 200_000, mode: Mode::Instanced, terrain: true };
+}
+
+fn rocks_shader() -> ShaderFile {
+    shader!("instancing/rocks.wgsl", imports: ["terrain/terrain.wgsl", "fog/fog.wgsl"])
+}
+
+struct RockPipelines {
+    instanced: wgpu::RenderPipeline,
+    one_per_draw: wgpu::RenderPipeline,
+    flat: wgpu::RenderPipeline,
+}
+
+fn rock_pipeline(
+    gpu: &Gpu,
+    module: &wgpu::ShaderModule,
+    layout: &wgpu::PipelineLayout,
+    format: wgpu::TextureFormat,
+    vertex_entry: &str,
+    fragment_entry: &str,
+) -> wgpu::RenderPipeline {
+    let instanced = vertex_entry == "vs_instanced";
+    let buffers = [Some(Vertex::LAYOUT), instanced.then_some(RockInstance::LAYOUT)];
+    gpu.device.create_render_pipeline(&wgpu::RenderPipelineDescriptor {
+        label: Some(vertex_entry),
+        layout: Some(layout),
+        vertex: wgpu::VertexState {
+            module,
+            entry_point: Some(vertex_entry),
+            buffers: if instanced { &buffers } else { &buffers[..1] },
+            compilation_options: Default::default(),
+        },
+        primitive: wgpu::PrimitiveState { cull_mode: Some(wgpu::Face::Back), ..Default::default() },
+        depth_stencil: depth_test(),
+        multisample: Default::default(),
+        fragment: Some(wgpu::FragmentState {
+            module,
+            entry_point: Some(fragment_entry),
+            targets: &[Some(format.into())],
+            compilation_options: Default::default(),
+        }),
+        multiview_mask: None,
+        cache: None,
+    })
+}
+
+/// Draw calls recorded for one picture of the plain.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct DrawCalls {
+    /// One per terrain chunk in view.
+    pub terrain: u32,
+    /// One for all rocks, or one per rock.
+    pub rocks: u32,
+}
+
+impl DrawCalls {
+    pub fn total(&self) -> u32 {
+        self.terrain + self.rocks
+    }
+}
+
+// ANCHOR: mars_plain
+/// The Mars plain: chapter 03's terrain in chapter 04's fog, strewn with this
+/// chapter's rocks. Chapters 05, 06 and 07 each own one and draw it through
+/// explicit inputs: a viewpoint aimed from a camera, the sun, the air, and
+/// what the picture should show.
+pub struct MarsPlain {
+    pub terrain: TerrainRenderer,
+    rocks: Arc<RockField>,
+    /// The fog's uniform (group 1), the same for every picture of a frame.
+    pub fog: FogBinding,
+    singles_group: wgpu::BindGroup,
+    layouts: [wgpu::PipelineLayout; 2],
+    terrain_pipeline: wgpu::RenderPipeline,
+    rock_pipelines: RockPipelines,
+    format: wgpu::TextureFormat,
+}
+// ANCHOR_END: mars_plain
+
+impl MarsPlain {
+    /// The plain for targets of `format`.
+    pub fn new(gpu: &Gpu, format: wgpu::TextureFormat) -> anyhow::Result<Self> {
+        let device = &gpu.device;
+        let terrain = TerrainRenderer::new(gpu, TerrainSettings::default());
+        let rocks = RockField::get(gpu, terrain.field());
+        let fog = FogBinding::new(device);
+        let single_layout = device.create_bind_group_layout(&wgpu::BindGroupLayoutDescriptor {
+            label: Some("one rock"),
+            entries: &[wgpu::BindGroupLayoutEntry {
+                binding: 0,
+                visibility: wgpu::ShaderStages::VERTEX,
+                ty: wgpu::BindingType::Buffer {
+                    ty: wgpu::BufferBindingType::Uniform,
+                    has_dynamic_offset: true,
+                    min_binding_size: wgpu::BufferSize::new(std::mem::size_of::<RockInstance>() as u64),
+                },
+                count: None,
+            }],
+        });
+        let layout = |label, groups: &[Option<&wgpu::BindGroupLayout>]| {
+            device.create_pipeline_layout(&wgpu::PipelineLayoutDescriptor {
+                label: Some(label),
+                bind_group_layouts: groups,
+                immediate_size: 0,
+            })
+        };
+        let shared = [Some(&terrain.bind_group_layout), Some(&fog.layout)];
+        let layouts =
+            [layout("rocks", &shared), layout("one rock per draw", &[shared[0], shared[1], Some(&single_layout)])];
+        let terrain_pipeline = terrain.pipeline(gpu, &fog_shader(), &layouts[0], format)?;
+        let rock_pipelines = Self::build_rock_pipelines(gpu, &layouts, format)?;
+        let singles_group = Self::singles_group(device, &single_layout, &rocks);
+        Ok(Self { terrain, rocks, fog, singles_group, layouts, terrain_pipeline, rock_pipelines, format })
+    }
+
+    fn build_rock_pipelines(
+        gpu: &Gpu,
+        layouts: &[wgpu::PipelineLayout; 2],
+        format: wgpu::TextureFormat,
+    ) -> Result<RockPipelines, ShaderError> {
+        let module = rocks_shader().module(gpu)?;
+        gpu.catch_validation(|| RockPipelines {
+            instanced: rock_pipeline(gpu, &module, &layouts[0], format, "vs_instanced", "fs_main"),
+            one_per_draw: rock_pipeline(gpu, &module, &layouts[1], format, "vs_single", "fs_main"),
+            flat: rock_pipeline(gpu, &module, &layouts[0], format, "vs_instanced", "fs_flat"),
+        })
+        .map_err(ShaderError)
+    }
+
+    fn singles_group(device: &wgpu::Device, layout: &wgpu::BindGroupLayout, rocks: &RockField) -> wgpu::BindGroup {
+        device.create_bind_group(&wgpu::BindGroupDescriptor {
+            label: Some("one rock"),
+            layout,
+            entries: &[wgpu::BindGroupEntry {
+                binding: 0,
+                resource: wgpu::BindingResource::Buffer(wgpu::BufferBinding {
+                    buffer: &rocks.singles,
+                    offset: 0,
+                    size: wgpu::BufferSize::new(std::mem::size_of::<RockInstance>() as u64),
+                }),
+            }],
+        })
+    }
+
+    /// How many rocks there are to draw.
+    pub fn rocks_placed(&self) -> u32 {
+        self.rocks.placed
+    }
+
+    /// Makes the terrain again from `self.terrain.settings`, and the rocks on it.
+    pub fn regenerate(&mut self, gpu: &Gpu) {
+        self.terrain.regenerate(gpu);
+        self.rocks = RockField::get(gpu, self.terrain.field());
+        let layout = self.rock_pipelines.one_per_draw.get_bind_group_layout(2);
+        self.singles_group = Self::singles_group(&gpu.device, &layout, &self.rocks);
+    }
+
+    /// Sets the air every picture of this frame is seen through: `fog`, in
+    /// the colour `fog_colour` (linear RGB).
+    pub fn set_air(&self, queue: &wgpu::Queue, fog: FogSettings, fog_colour: [f32; 3]) {
+        self.fog.write_with_colour(queue, fog, fog_colour);
+    }
+
+    /// Aims `viewpoint` from `camera`, lit by `sun`, keeping what `clip` keeps.
+    pub fn aim(&self, queue: &wgpu::Queue, viewpoint: &mut Viewpoint, camera: &Camera, sun: Sun, clip: Vec4) {
+        self.terrain.aim(queue, viewpoint, camera, sun, Shading::Shaded, clip);
+    }
+
+    // ANCHOR: draw
+    /// Records the terrain (unless `setup` leaves it out) and `setup.rocks`
+    /// rocks into `pass`, as seen from `viewpoint`.
+    pub fn draw(&self, pass: &mut wgpu::RenderPass<'_>, viewpoint: &Viewpoint, setup: Setup) -> DrawCalls {
+        // Group 0 (camera, sun) and group 1 (fog) serve the terrain and the rocks alike.
+        pass.set_bind_group(1, &self.fog.group, &[]);
+        self.terrain.bind(pass, viewpoint);
+        let mut calls = DrawCalls::default();
+        if setup.terrain {
+            pass.set_pipeline(&self.terrain_pipeline);
+            calls.terrain = self.terrain.draw(pass, viewpoint) as u32;
+        }
+        calls.rocks = self.draw_rocks(pass, setup);
+        calls
+    }
+    // ANCHOR_END: draw
+
+    // ANCHOR: draw_rocks
+    /// Draws the first `setup.rocks` rocks; returns the number of draw calls.
+    fn draw_rocks(&self, pass: &mut wgpu::RenderPass<'_>, setup: Setup) -> u32 {
+        let Setup { mode, .. } = setup;
+        let rocks = setup.rocks.min(self.rocks.placed);
+        let mesh = &self.rocks.mesh;
+        pass.set_vertex_buffer(0, mesh.vertex_buffer.slice(..));
+        pass.set_index_buffer(mesh.index_buffer.slice(..), wgpu::IndexFormat::Uint32);
+        match mode {
+            Mode::Instanced | Mode::Flat => {
+                let pipeline =
+                    if mode == Mode::Flat { &self.rock_pipelines.flat } else { &self.rock_pipelines.instanced };
+                pass.set_pipeline(pipeline);
+                pass.set_vertex_buffer(1, self.rocks.instances.slice(..));
+                // Every rock, one call: the GPU loops over the instances itself.
+                pass.draw_indexed(0..mesh.index_count, 0, 0..rocks);
+                1
+            }
+            Mode::OnePerDraw => {
+                pass.set_pipeline(&self.rock_pipelines.one_per_draw);
+                let rocks = rocks.min(MAX_ONE_PER_DRAW);
+                for i in 0..rocks {
+                    // A bind group change and a draw per rock, validated and
+                    // recorded one by one: this is the cost instancing removes.
+                    pass.set_bind_group(2, &self.singles_group, &[i * self.rocks.single_stride]);
+                    pass.draw_indexed(0..mesh.index_count, 0, 0..1);
+                }
+                rocks
+            }
+        }
+    }
+    // ANCHOR_END: draw_rocks
+
+    /// Rebuilds the terrain and rock pipelines from the WGSL on disk.
+    pub fn reload_shaders(&mut self, gpu: &Gpu) -> Result<(), ShaderError> {
+        let terrain = self.terrain.pipeline(gpu, &fog_shader(), &self.layouts[0], self.format)?;
+        self.rock_pipelines = Self::build_rock_pipelines(gpu, &self.layouts, self.format)?;
+        self.terrain_pipeline = terrain;
+        Ok(())
+    }
+}

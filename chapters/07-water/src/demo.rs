@@ -1,0 +1,338 @@
+//! The chapter itself: what each view decides, the views and their
+//! cameras, the overlay's controls, and `impl Chapter`, which composes
+//! chapter 05's plain, chapter 06's sky and the water: three pictures of
+//! the scene a frame, then the water reading two of them.
+
+use common::chapter::scene_pass;
+use common::glam::{Vec2, Vec4};
+use common::texture::depth_view;
+use common::{
+    Camera, Chapter, FlyController, Frame, Gpu, Input, PassTimer, ShaderError, Target, View, ViewRow, anyhow, egui,
+    views_of, wgpu,
+};
+use fog::FogSettings;
+use instancing::{MarsPlain, Mode, Setup, plain_camera};
+use skybox::{Sky, SkyViewpoint, sun_at};
+use terrain::heightfield::HeightField;
+use terrain::{KEEP_ALL, SKY, Viewpoint};
+
+use crate::lake::{find_lake, lake_camera, mirrored};
+use crate::water_renderer::{WaterRenderer, WaterSettings};
+
+/// What reaches the screen.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Display {
+    /// The lake, with everything around it.
+    Lake,
+    /// The reflection picture, full screen.
+    Reflection,
+    /// The refraction picture, full screen.
+    Refraction,
+}
+
+/// What a view decides.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Settings {
+    pub water: WaterSettings,
+    pub display: Display,
+}
+
+impl Settings {
+    pub const DEFAULT: Self = Self { water: WaterSettings::DEFAULT, display: Display::Lake };
+}
+
+/// How high above the water the start camera stands, metres.
+const EYE_HEIGHT: f32 = 18.0;
+
+/// The places a view can put the camera.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum CameraPreset {
+    /// At the same shore, 6 m above the water, where the waves look large.
+    CloseToWater,
+}
+
+impl CameraPreset {
+    pub fn camera(self, field: &HeightField, centre: Vec2, size: f32, level: f32, aspect: f32) -> Camera {
+        match self {
+            Self::CloseToWater => lake_camera(field, centre, size, level, 6.0, aspect),
+        }
+    }
+}
+
+/// Every view, with the settings it applies and, for a preset, its camera.
+pub const VIEW_TABLE: [ViewRow<Settings, CameraPreset>; 5] = [
+    ViewRow::mode(
+        "default",
+        "the lake: reflection and refraction mixed by Fresnel, ripples and waves",
+        Settings::DEFAULT,
+    ),
+    ViewRow::mode(
+        "reflection",
+        "the reflection picture, full screen: the scene above the water, from below it",
+        Settings { display: Display::Reflection, ..Settings::DEFAULT },
+    ),
+    ViewRow::mode(
+        "refraction",
+        "the refraction picture, full screen: the scene below the water",
+        Settings { display: Display::Refraction, ..Settings::DEFAULT },
+    ),
+    ViewRow::preset(
+        "waves",
+        "the geometric waves three times as strong, seen from 6 m above the water",
+        Settings { water: WaterSettings { wave_strength: 3.0, ..WaterSettings::DEFAULT }, ..Settings::DEFAULT },
+        CameraPreset::CloseToWater,
+    ),
+    ViewRow::mode(
+        "no-fresnel",
+        "reflection and refraction half and half at every angle",
+        Settings { water: WaterSettings { fresnel: false, ..WaterSettings::DEFAULT }, ..Settings::DEFAULT },
+    ),
+];
+
+/// The uniforms for drawing the plain and the sky from one camera. The
+/// frame draws three pictures, each from its own camera, so it keeps three
+/// of these, and all three pictures are recorded before one submit.
+struct Eye {
+    ground: Viewpoint,
+    sky: SkyViewpoint,
+}
+
+/// Which of the frame's pictures an `Eye` draws.
+const REFLECTION: usize = 0;
+const REFRACTION: usize = 1;
+const MAIN: usize = 2;
+
+/// The time of day the lake is seen at (mid-morning, chapter 06's `day`).
+const START_PHASE: f32 = 0.40;
+
+pub struct WaterChapter {
+    pub plain: MarsPlain,
+    pub sky: Sky,
+    pub water: WaterRenderer,
+    pub camera: Camera,
+    pub controller: FlyController,
+    pub fog: FogSettings,
+    pub rocks: Setup,
+    pub settings: Settings,
+    /// Seconds in a day (chapter 06's slider).
+    pub day_seconds: f32,
+    pub level: f32,
+    /// The lake's centre (x, z) and side, metres.
+    pub centre: Vec2,
+    pub size: f32,
+    eyes: [Eye; 3],
+    depth: wgpu::TextureView,
+    target: Target,
+}
+
+impl WaterChapter {
+    // ANCHOR: picture
+    /// Records the plain and the sky, seen from `camera` through eye `eye`,
+    /// into `colour` and `depth`, keeping only what `clip` keeps. Each
+    /// picture has its own eye, so its uniforms are not overwritten by the
+    /// next picture's before the one submit at the end of the frame.
+    #[allow(clippy::too_many_arguments)]
+    fn take_picture(
+        &mut self,
+        gpu: &Gpu,
+        encoder: &mut wgpu::CommandEncoder,
+        timer: &PassTimer,
+        (label, eye): (&'static str, usize),
+        (colour, depth): (&wgpu::TextureView, &wgpu::TextureView),
+        camera: &Camera,
+        clip: Vec4,
+        phase: f32,
+    ) {
+        let Eye { ground, sky } = &mut self.eyes[eye];
+        self.plain.aim(&gpu.queue, ground, camera, sun_at(phase), clip);
+        self.sky.aim(&gpu.queue, sky, camera, phase);
+        let mut pass = scene_pass(encoder, timer, label, colour, SKY, depth);
+        self.plain.draw(&mut pass, ground, self.rocks);
+        self.sky.draw(&mut pass, sky);
+    }
+    // ANCHOR_END: picture
+}
+
+impl Chapter for WaterChapter {
+    const NAME: &'static str = env!("CARGO_PKG_NAME");
+    // Measured mean FLIP 0.0123; outliers at most 0.1%.
+    const BROWSER_TOLERANCE: common::Tolerance = common::Tolerance { mean: 0.018, outliers: 0.002 };
+    const PREPARES_IN_STEPS: bool = true;
+    const TITLE: &'static str = "07 · Water";
+    const VIEWS: &'static [View] = &views_of(&VIEW_TABLE);
+    const SNAPSHOT_TIME: f32 = 0.0;
+    const KEYS: &'static [(&'static str, &'static str)] = FlyController::KEYS;
+    const BENCH_FRAMES: u32 = 5;
+
+    /// Clip distances where the adapter has them; a fragment discard otherwise.
+    fn gpu_needs() -> common::GpuNeeds {
+        terrain::gpu_needs()
+    }
+
+    /// The terrain is the long part of starting: in steps, so a page shows its progress.
+    fn prepare(gpu: &Gpu) -> Option<common::Preparation> {
+        terrain::TerrainData::prepare(gpu, terrain::heightfield::TerrainSettings::default())
+    }
+
+    fn new(gpu: &Gpu, target: Target) -> anyhow::Result<Self> {
+        let device = &gpu.device;
+        let plain = MarsPlain::new(gpu, target.format)?;
+        let sky = Sky::new(gpu, target.format)?;
+        let field = plain.terrain.field();
+        let (centre, size, level) = find_lake(field, &plain_camera(field, target.aspect()));
+        let settings = Settings::DEFAULT;
+        let water = WaterRenderer::new(gpu, &plain, centre, size, target, settings.water.resolution)?;
+        let eyes = std::array::from_fn(|_| Eye { ground: plain.terrain.viewpoint(device), sky: sky.viewpoint(device) });
+        let camera = lake_camera(field, centre, size, level, EYE_HEIGHT, target.aspect());
+        Ok(Self {
+            plain,
+            sky,
+            water,
+            camera,
+            controller: FlyController { speed: 10.0, ..Default::default() },
+            fog: FogSettings::HAZE,
+            rocks: Setup { rocks: 200_000, mode: Mode::Instanced, terrain: true },
+            settings,
+            day_seconds: 240.0,
+            level,
+            centre,
+            size,
+            eyes,
+            depth: depth_view(device, target.width, target.height),
+            target,
+        })
+    }
+
+    fn resize(&mut self, gpu: &Gpu, target: Target) {
+        self.target = target;
+        self.camera.aspect = target.aspect();
+        self.depth = depth_view(&gpu.device, target.width, target.height);
+        self.water.resize_pictures(&gpu.device, target, self.settings.water.resolution);
+    }
+
+    fn apply_view(&mut self, view: usize) {
+        self.settings = VIEW_TABLE[view].settings;
+    }
+
+    fn reset_camera(&mut self, view: usize) {
+        let (field, aspect) = (self.plain.terrain.field(), self.target.aspect());
+        let (centre, size, level) = (self.centre, self.size, self.level);
+        self.camera = match VIEW_TABLE[view].camera {
+            Some(preset) => preset.camera(field, centre, size, level, aspect),
+            None => lake_camera(field, centre, size, level, EYE_HEIGHT, aspect),
+        };
+    }
+
+    fn camera_mut(&mut self) -> Option<&mut Camera> {
+        Some(&mut self.camera)
+    }
+
+    fn update(&mut self, input: &Input, dt: f32) {
+        self.controller.update(&mut self.camera, input, dt);
+    }
+
+    // ANCHOR: render
+    fn render(&mut self, gpu: &Gpu, frame: &mut Frame) {
+        self.water.resize_pictures(&gpu.device, self.target, self.settings.water.resolution);
+        let phase = (START_PHASE + frame.time / self.day_seconds).rem_euclid(1.0);
+        self.camera.far = self.fog.far_plane();
+        self.plain.set_air(&gpu.queue, self.fog, self.sky.fog_colour(phase));
+        let camera = self.camera;
+        let bias = 0.5; // a little overlap, so that waves do not open gaps at the shore
+        let display = self.settings.display;
+        let (reflection, refraction) = (self.water.reflection.clone(), self.water.refraction.clone());
+        // 1. The reflection: from below the water, keeping what is above it.
+        if display != Display::Refraction {
+            let above = Vec4::new(0.0, 1.0, 0.0, -self.level + bias);
+            let targets = (&reflection.colour, &reflection.depth);
+            let mirror = mirrored(&camera, self.level);
+            self.take_picture(
+                gpu,
+                frame.encoder,
+                frame.timer,
+                ("reflection", REFLECTION),
+                targets,
+                &mirror,
+                above,
+                phase,
+            );
+        }
+        // 2. The refraction: from the camera, keeping what is below the water.
+        if display != Display::Reflection {
+            let below = Vec4::new(0.0, -1.0, 0.0, self.level + bias);
+            let targets = (&refraction.colour, &refraction.depth);
+            self.take_picture(
+                gpu,
+                frame.encoder,
+                frame.timer,
+                ("refraction", REFRACTION),
+                targets,
+                &camera,
+                below,
+                phase,
+            );
+        }
+        match display {
+            Display::Reflection => return self.water.show(frame, 0),
+            Display::Refraction => return self.water.show(frame, 1),
+            Display::Lake => {}
+        }
+
+        // 3. The scene itself, whole.
+        let depth = self.depth.clone();
+        let targets = (frame.target, &depth);
+        self.take_picture(gpu, frame.encoder, frame.timer, ("plain and sky", MAIN), targets, &camera, KEEP_ALL, phase);
+
+        // 4. The water on top, reading both pictures.
+        self.water.aim(&gpu.queue, self.level, frame.time, &camera, self.settings.water);
+        let mut pass = frame.encoder.begin_render_pass(&wgpu::RenderPassDescriptor {
+            label: Some("water surface"),
+            color_attachments: &[Some(wgpu::RenderPassColorAttachment {
+                view: frame.target,
+                depth_slice: None,
+                resolve_target: None,
+                ops: wgpu::Operations { load: wgpu::LoadOp::Load, store: wgpu::StoreOp::Store },
+            })],
+            depth_stencil_attachment: Some(wgpu::RenderPassDepthStencilAttachment {
+                view: &depth,
+                depth_ops: Some(wgpu::Operations { load: wgpu::LoadOp::Load, store: wgpu::StoreOp::Store }),
+                stencil_ops: None,
+            }),
+            timestamp_writes: frame.timer.pass("water surface"),
+            ..Default::default()
+        });
+        self.water.draw(&mut pass, &self.plain, &self.eyes[MAIN].ground);
+    }
+    // ANCHOR_END: render
+
+    fn ui(&mut self, ui: &mut egui::Ui) {
+        let s = &mut self.settings.water;
+        ui.add(egui::Slider::new(&mut s.resolution, 0.25..=1.0).text("reflection/refraction resolution"));
+        let mut waves_on = s.wave_strength > 0.0;
+        if ui.checkbox(&mut waves_on, "waves (off: the flat surface, textures only)").changed() {
+            s.wave_strength = if waves_on { 1.0 } else { 0.0 };
+        }
+        ui.add(egui::Slider::new(&mut s.wave_strength, 0.0..=4.0).text("wave strength"));
+        ui.add(egui::Slider::new(&mut s.ripples, 0.0..=0.05).text("ripple distortion"));
+        ui.checkbox(&mut s.fresnel, "Fresnel");
+        let (width, height) = self.water.pictures_size();
+        ui.label(format!("water level {:.1} m; pictures {width}×{height}", self.level));
+        ui.separator();
+        ui.add(egui::Slider::new(&mut self.day_seconds, 10.0..=1200.0).logarithmic(true).text("day length (s)"));
+        ui.add(egui::Slider::new(&mut self.fog.density, 0.0..=0.01).logarithmic(true).text("fog density"));
+        let max = self.plain.rocks_placed();
+        ui.add(egui::Slider::new(&mut self.rocks.rocks, 0..=max).logarithmic(true).text("rocks"));
+        ui.add(egui::Slider::new(&mut self.controller.speed, 2.0..=100.0).logarithmic(true).text("speed (m/s)"));
+    }
+
+    fn stats(&mut self, _gpu: &Gpu) -> String {
+        let (width, height) = self.water.pictures_size();
+        format!("pictures {width}×{height}; {} rocks in each picture", self.rocks.rocks.min(self.plain.rocks_placed()))
+    }
+
+    fn reload_shaders(&mut self, gpu: &Gpu) -> Result<(), ShaderError> {
+        self.plain.reload_shaders(gpu)?;
+        self.sky.reload_shaders(gpu)?;
+        self.water.reload_shaders(gpu)
+    }
+}

@@ -1,0 +1,43 @@
+//! Where the lake is on the plain, the camera at its shore, and the camera
+//! mirrored in its water, which takes the reflection picture.
+
+use common::Camera;
+use common::glam::Vec2;
+use terrain::heightfield::HeightField;
+
+// ANCHOR: lake
+/// Where the lake is: a square 520 m across, 260 m ahead of `camera`, its
+/// level at the 30th percentile of the ground's heights in that square, so
+/// that the lowest third of it is under water.
+pub fn find_lake(field: &HeightField, camera: &Camera) -> (Vec2, f32, f32) {
+    let forward = Vec2::new(camera.forward().x, camera.forward().z).normalize();
+    let centre = Vec2::new(camera.position.x, camera.position.z) + forward * 260.0;
+    let size = 520.0;
+    let mut heights: Vec<f32> = (0..64 * 64)
+        .map(|i| {
+            let p = centre + (Vec2::new((i % 64) as f32, (i / 64) as f32) / 63.0 - 0.5) * size;
+            field.height_at(p.x, p.y)
+        })
+        .collect();
+    heights.sort_by(f32::total_cmp);
+    (centre, size, heights[heights.len() * 3 / 10])
+}
+
+/// Standing at the lake's southern shore, `height` metres above the water,
+/// looking north across it towards the cliff.
+pub fn lake_camera(field: &HeightField, centre: Vec2, size: f32, level: f32, height: f32, aspect: f32) -> Camera {
+    let eye = Vec2::new(centre.x, centre.y + 0.42 * size);
+    let eye = common::glam::Vec3::new(eye.x, (level + height).max(field.height_at(eye.x, eye.y) + 2.0), eye.y);
+    let target = common::glam::Vec3::new(centre.x, level, centre.y - 0.2 * size);
+    Camera { far: 3000.0, near: 0.1, ..Camera::looking_at(eye, target, aspect) }
+}
+
+/// The camera mirrored in the water: as far below the surface as the real
+/// one is above it, looking as far up as the real one looks down.
+pub fn mirrored(camera: &Camera, level: f32) -> Camera {
+    let mut mirror = *camera;
+    mirror.position.y = 2.0 * level - camera.position.y;
+    mirror.pitch = -camera.pitch;
+    mirror
+}
+// ANCHOR_END: lake
