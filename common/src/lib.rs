@@ -1,8 +1,12 @@
 //! The plumbing every chapter shares, and two lessons of chapter 02 that
 //! every later chapter builds on: the camera (`camera.rs`, which the
 //! [`Chapter`] trait itself names) and the unit primitives
-//! (`primitives.rs`). Page 02 teaches those two from here; nothing else in
-//! this crate is a technique the book teaches.
+//! (`primitives.rs`). Page 02 teaches those two from here. Three small
+//! helpers that later chapters need live here too, so that using them
+//! does not make a chapter depend on unrelated chapters: Perlin noise and
+//! fBm (`noise.rs`, taught on page 03), a seeded random number generator
+//! (`rng.rs`, page 05), and the sun's path through the day (`sun.rs`, page
+//! 06). Nothing else in this crate is a technique the book teaches.
 //!
 //! A chapter implements [`Chapter`]; its `main` calls [`run`]. From there
 //! this crate opens a window with an egui overlay and hot-reloaded shaders,
@@ -21,13 +25,16 @@ pub mod headless;
 pub mod input;
 pub mod memory;
 pub mod mesh;
+pub mod noise;
 mod overlay;
 pub mod parallel;
 pub mod pipeline;
 pub mod preparation;
 pub mod primitives;
 mod probe;
+pub mod rng;
 pub mod shader;
+pub mod sun;
 mod surface;
 pub mod texture;
 pub mod timing;

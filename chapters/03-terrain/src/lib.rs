@@ -6,7 +6,7 @@
 //! re-exports after them are the pieces later chapters compose.
 
 // Improved Perlin noise and its octaves (fBm).
-pub mod noise;
+pub use common::noise;
 // The height field: heights from noise, with a cliff, and normals.
 pub mod heightfield;
 // The height field cut into chunks: vertices, shared indices, bounding boxes.

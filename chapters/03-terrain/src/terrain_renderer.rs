@@ -18,18 +18,7 @@ use crate::terrain_mesh::{TERRAIN_VERTEX_LAYOUT, TerrainMesh};
 /// Pale butterscotch: the Martian sky, and the clear colour.
 pub const SKY: wgpu::Color = wgpu::Color { r: 0.62, g: 0.42, b: 0.28, a: 1.0 };
 
-/// The light: a direction towards the sun, and how strong it is (1 by day,
-/// 0 when it is below the horizon). Chapter 06 moves it with the sky.
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub struct Sun {
-    pub direction: Vec3,
-    pub strength: f32,
-}
-
-impl Sun {
-    /// Low in the south-east, so slopes show as light and shade.
-    pub const AFTERNOON: Self = Self { direction: Vec3::new(0.75, 0.35, 0.35), strength: 1.0 };
-}
+pub use common::sun::Sun;
 
 /// `Globals` in terrain.wgsl.
 #[repr(C)]

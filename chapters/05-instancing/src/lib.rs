@@ -7,7 +7,7 @@
 //! re-exports after them are the pieces later chapters compose.
 
 // A tiny seeded random number generator (SplitMix64).
-pub mod rng;
+pub use common::rng;
 // The one rock mesh: a randomised, flat-shaded icosahedron.
 pub mod rock_mesh;
 // Per-instance records, the scatter, and the rocks on the GPU.

@@ -7,7 +7,7 @@
 //! re-exports after them are the pieces later chapters compose.
 
 // The sun's path: the sky's turn at a time of day, the sun, the day blend.
-pub mod sun_path;
+pub use common::sun as sun_path;
 // The sky: cube maps, their horizon colour, a viewpoint per camera, the draw.
 pub mod sky;
 // The chapter itself: its settings, views, cameras and frame.

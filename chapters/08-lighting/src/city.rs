@@ -6,8 +6,8 @@
 use std::f32::consts::{FRAC_PI_2, FRAC_PI_4, TAU};
 
 use common::glam::{Mat4, Quat, Vec2, Vec3};
+use common::rng::Rng;
 use common::{MeshData, primitives};
-use instancing::Rng;
 
 use crate::lights::{Light, LightKind};
 use crate::paths::{PausableClock, Pose, SegmentedPath};

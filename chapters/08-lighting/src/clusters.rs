@@ -184,7 +184,7 @@ fn cluster_boxes(camera: &Camera) -> Vec<(Vec3, Vec3)> {
 mod tests {
     use super::*;
     use crate::lights::LightKind;
-    use instancing::Rng;
+    use common::rng::Rng;
 
     fn camera() -> Camera {
         Camera {

@@ -229,7 +229,7 @@ pub fn frame_lights(city: &City, traffic: &Traffic, beacons: &[Light], count: Li
 /// Small coloured lights scattered over the city: not part of its design,
 /// there to fill the bench's larger light counts.
 pub fn beacons(count: usize) -> Vec<Light> {
-    let mut rng = instancing::Rng::new(21);
+    let mut rng = common::rng::Rng::new(21);
     (0..count)
         .map(|_| {
             let hue = rng.unit();

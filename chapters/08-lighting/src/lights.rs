@@ -151,7 +151,7 @@ pub struct Daylight {
 
 /// The sun's path is chapter 06's: rising in the east, over the south.
 pub fn daylight(phase: f32) -> Daylight {
-    let direction = skybox::sun_at(phase).direction;
+    let direction = common::sun::sun_at(phase).direction;
     let height = direction.y;
     let up = smoothstep(-0.04, 0.12, height);
     let white = smoothstep(0.05, 0.45, height);

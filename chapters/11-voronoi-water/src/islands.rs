@@ -4,9 +4,9 @@
 //! with them; each is drawn at its copy nearest the boat.
 
 use common::glam::{Vec2, Vec3};
+use common::noise::Fbm;
 use common::{Gpu, ShaderError, shader, wgpu};
 use lighting::{HDR_FORMAT, SceneLights};
-use terrain::noise::Fbm;
 
 use crate::atmosphere::Atmosphere;
 use crate::sea::PERIOD_METRES;

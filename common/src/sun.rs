@@ -1,11 +1,25 @@
-//! The sun's path through the day: the turn of the sky at a time of day,
+//! The sun's path through the day (chapter 06 teaches it; chapters 07,
+//! 08 and 10 light their scenes with it): the turn of the sky at a time of day,
 //! the sun it carries (the light the ground is lit by), and how much of the
 //! day sky shows.
 
 use std::f32::consts::TAU;
 
-use common::glam::{Quat, Vec3};
-use terrain::Sun;
+use glam::{Quat, Vec3};
+
+/// The light: a direction towards the sun, and how strong it is (1 by day,
+/// 0 when it is below the horizon). Chapter 03 lights its terrain with a
+/// fixed one; chapter 06 moves it with the sky.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Sun {
+    pub direction: Vec3,
+    pub strength: f32,
+}
+
+impl Sun {
+    /// Low in the south-east, so slopes show as light and shade.
+    pub const AFTERNOON: Self = Self { direction: Vec3::new(0.75, 0.35, 0.35), strength: 1.0 };
+}
 
 // ANCHOR: sun_path
 /// Where the sun rises: on the eastern horizon (+x), a little south (+z).
