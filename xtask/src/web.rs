@@ -253,19 +253,26 @@ pub fn browser_test(chapters: &[String]) -> anyhow::Result<()> {
     ensure!(html.join("live").is_dir(), "{} has no live chapters: run `cargo xtask book` first", html.display());
     let port = serve_in_background(&html, 0)?;
     let url = format!("http://127.0.0.1:{port}");
-    let mut args = vec!["run", "--quiet", "-p", "browser", "--", url.as_str()];
+    let mut args = vec![url.as_str()];
     args.extend(chapters.iter().map(String::as_str));
     run_browser_bin(&args, &chromium)
 }
 
+/// Runs the browser test's binary with `args`. It is built as part of the
+/// workspace's binaries, as the window test builds them: built alone
+/// (`cargo run -p browser`), cargo would pick other features for the
+/// crates it shares with the rest and compile headless_chrome and its
+/// protocol code a second time (70 s of a cold `cargo xtask test`).
 fn run_browser_bin(args: &[&str], chromium: &Path) -> anyhow::Result<()> {
-    println!("\n$ cargo {}", args.join(" "));
-    let status = Command::new(std::env::var("CARGO").unwrap_or_else(|_| "cargo".into()))
+    cargo(&["build", "--quiet", "--workspace", "--bins"])?;
+    let binary = target_dir().join("debug").join("browser");
+    println!("\n$ {} {}", binary.display(), args.join(" "));
+    let status = Command::new(&binary)
         .args(args)
         .current_dir(root())
         .env("CHROMIUM", chromium)
         .status()
-        .context("cannot run cargo")?;
+        .with_context(|| format!("cannot run {}", binary.display()))?;
     ensure!(status.success(), "the browser test failed");
     Ok(())
 }
@@ -288,7 +295,7 @@ pub fn bench(tabulate_only: bool) -> anyhow::Result<()> {
     let rows_path = rows_file.display().to_string();
     // `--tabulate`: write the page again from the last run's browser figures.
     if !tabulate_only {
-        run_browser_bin(&["run", "--quiet", "-p", "browser", "--", &url, "--bench", &rows_path], &chromium)?;
+        run_browser_bin(&[&url, "--bench", &rows_path], &chromium)?;
     }
     let rows = std::fs::read_to_string(&rows_file)?;
     let mut build = vec!["build", "--quiet", "--release"];

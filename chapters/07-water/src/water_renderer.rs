@@ -234,6 +234,7 @@ impl WaterRenderer {
         pass.draw(0..3, 0..1);
     }
 
+    // ANCHOR: aim
     /// Writes the water's uniform: its `level`, the scene `time`, the
     /// camera's near and far planes, the lake's waves and `settings`.
     pub fn aim(&self, queue: &wgpu::Queue, level: f32, time: f32, camera: &Camera, settings: WaterSettings) {
@@ -249,6 +250,7 @@ impl WaterRenderer {
         };
         queue.write_buffer(&self.uniform, 0, bytemuck::bytes_of(&uniform));
     }
+    // ANCHOR_END: aim
 
     /// Draws the surface into `pass`, seen from `ground` (a viewpoint of
     /// `plain`'s terrain, aimed from the same camera as `aim`), in `plain`'s fog.
