@@ -1,9 +1,9 @@
-//! Every chapter in the registry, checked view by view: against its
-//! reference image, for purity (a live instance after every other view
-//! draws what a fresh one draws), and against its bench table. The tests
-//! are made from `snapshots::chapters()`, so a new chapter is tested as
-//! soon as it is registered, and a chapter crate left out of the registry
-//! fails `every_chapter_crate_is_registered`.
+//! Every chapter in the course's records (`course::chapters()`), checked
+//! view by view: against its reference image, for purity (a live instance
+//! after every other view draws what a fresh one draws), and against its
+//! bench table; then the checks on the records themselves: every chapter
+//! crate has one, no reference is left over, the README and the book's
+//! summary follow them, and no chapter uses another's `Chapter` type.
 
 use std::collections::BTreeSet;
 use std::path::Path;
@@ -43,7 +43,7 @@ fn every_chapter_crate_is_registered() -> Result<(), Failed> {
     if on_disk == registered {
         Ok(())
     } else {
-        Err(format!("chapters/ holds {on_disk:?} but snapshots::chapters() registers {registered:?}").into())
+        Err(format!("chapters/ holds {on_disk:?} but course::chapters() registers {registered:?}").into())
     }
 }
 
