@@ -420,7 +420,7 @@ fn test_chapter(browser: &Browser, base: &str, entry: &course::Record) -> anyhow
         };
     }
     // The still picture, through the --screenshot path, against the snapshot.
-    let view = entry.views.iter().find(|v| v.snapshot).context("no snapshot view")?.name;
+    let view = entry.first_snapshot_view().context("no snapshot view")?.name;
     let query = format!("?view={view}&time={}&size={WIDTH}x{HEIGHT}", entry.snapshot_time);
     let page = ChapterPage::open(browser, &page_url(base, entry.name, &query))?;
     let progress = page.wait_status("picture")?;
@@ -702,7 +702,7 @@ fn longest_task_ms(page: &ChapterPage) -> anyhow::Result<f64> {
 /// Whether the chapter's first view renders on WebGL2: "FLIP 0.0123"
 /// against the native snapshot, or "fails: <the page's error>".
 fn webgl2(browser: &Browser, base: &str, entry: &course::Record) -> String {
-    let view = entry.views.iter().find(|v| v.snapshot).map_or("default", |v| v.name);
+    let view = entry.first_snapshot_view().map_or("default", |v| v.name);
     match webgl2_picture(browser, base, entry, view) {
         Ok(comparison) => format!("FLIP {:.4}", comparison.mean),
         Err(error) => {

@@ -137,10 +137,10 @@ fn record<C: Chapter>(part: &'static str, figure: &'static str, techniques: &'st
 }
 
 impl Record {
-    /// The index of the first view that is a snapshot (the one the
-    /// browser test and the bench use).
-    pub fn first_snapshot_view(&self) -> usize {
-        self.views.iter().position(|v| v.snapshot).unwrap_or(0)
+    /// The first view that is a snapshot: the one the browser test and
+    /// `bench web` show.
+    pub fn first_snapshot_view(&self) -> Option<&'static View> {
+        self.views.iter().find(|v| v.snapshot)
     }
 }
 
