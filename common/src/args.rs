@@ -118,18 +118,25 @@ impl std::fmt::Display for UsageError {
 
 impl std::error::Error for UsageError {}
 
-/// Fails early, before any GPU work, if `path` cannot be written.
+/// Fails early, before any GPU work, if `path` cannot be written. A file
+/// made to find out is removed again: the picture is written only once it
+/// exists, and a run that fails on the way leaves nothing behind (an
+/// existing file is opened without changing it).
 pub fn check_writable(path: &Path) -> anyhow::Result<()> {
     if path.extension().is_none_or(|e| !e.eq_ignore_ascii_case("png")) {
         return Err(UsageError(format!("--screenshot {}: the file name must end in .png", path.display())).into());
     }
+    let existed = path.exists();
     std::fs::OpenOptions::new()
         .create(true)
         .truncate(false)
         .write(true)
         .open(path)
-        .map(drop)
-        .map_err(|e| UsageError(format!("--screenshot {}: cannot write there: {e}", path.display())).into())
+        .map_err(|e| UsageError(format!("--screenshot {}: cannot write there: {e}", path.display())))?;
+    if !existed {
+        let _ = std::fs::remove_file(path);
+    }
+    Ok(())
 }
 
 /// The device's largest texture side; a bigger `--size` is refused.
@@ -175,5 +182,17 @@ mod tests {
         assert!(error.to_string().starts_with("--screenshot /no/such/dir/out.png: cannot write there"), "{error}");
         let error = check_writable(Path::new("out.jpg")).unwrap_err();
         assert!(error.to_string().contains("must end in .png"), "{error}");
+    }
+
+    #[test]
+    fn checking_a_screenshot_path_leaves_no_file_behind() {
+        let path = std::env::temp_dir().join(format!("check-writable-{}.png", std::process::id()));
+        let _ = std::fs::remove_file(&path);
+        check_writable(&path).unwrap();
+        assert!(!path.exists(), "no empty file where none was");
+        std::fs::write(&path, b"an older picture").unwrap();
+        check_writable(&path).unwrap();
+        assert_eq!(std::fs::read(&path).unwrap(), b"an older picture", "an existing file is kept as it is");
+        std::fs::remove_file(&path).unwrap();
     }
 }

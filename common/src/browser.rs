@@ -123,14 +123,14 @@ async fn still_picture<C: Chapter>(args: &Args) -> anyhow::Result<()> {
     let gpu = Gpu::open(instance, Some(&surface), C::gpu_needs()).await?;
     note_backend(&gpu);
     check_size(&gpu, args.size)?;
-    prepare::<C>(&gpu).await;
+    let prepared = prepare::<C>(&gpu).await;
     let (config, scene_format, _) = crate::surface::surface_config(&gpu, &surface, width, height)?;
     surface.configure(&gpu.device, &config);
 
     let view = args.view_index::<C>();
     let time = args.time.unwrap_or(C::SNAPSHOT_TIME);
     let target = Target { format: scene_format, width, height };
-    let mut chapter = crate::chapter::create::<C>(&gpu, target, &args.chapter_flags)?;
+    let mut chapter = crate::chapter::create_prepared::<C>(&gpu, target, prepared, &args.chapter_flags)?;
     chapter.select_view(view);
     let frame = match surface.get_current_texture() {
         wgpu::CurrentSurfaceTexture::Success(frame) | wgpu::CurrentSurfaceTexture::Suboptimal(frame) => frame,

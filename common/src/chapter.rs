@@ -1,7 +1,7 @@
 //! The contract every chapter fulfils, so that one runner can open it in a
 //! window, render it headless to a PNG, benchmark it and snapshot-test it.
 
-use crate::{Camera, Gpu, GpuNeeds, Input, PassTimer, Preparation, ShaderError};
+use crate::{Camera, Gpu, GpuNeeds, Input, PassTimer, Preparation};
 
 // For existing imports (`use common::chapter::{uniform_entry, …}`): the
 // helpers live in `crate::pipeline` now.
@@ -217,18 +217,20 @@ pub trait Chapter: Sized + 'static {
         GpuNeeds::default()
     }
 
-    /// Long CPU work that [`Chapter::new`] needs done first (chapter 03's
-    /// height field), cut into steps that leave their results in
-    /// [`Gpu::cached`], where `new` finds them. A browser page runs one step
-    /// at a time and shows its progress between them, where one long call
-    /// would freeze the page; the desktop skips this, and `new` does the
-    /// work in one go. `None` when there is nothing (left) to do.
-    fn prepare(_gpu: &Gpu) -> Option<Preparation> {
-        None
-    }
+    /// What [`Chapter::prepare`] makes for [`Chapter::new`]: chapter 03's
+    /// terrain, for one. `()` for chapters with nothing to prepare.
+    type Prepared: 'static;
 
-    /// Builds buffers, textures and pipelines for `target`.
-    fn new(gpu: &Gpu, target: Target) -> anyhow::Result<Self>;
+    /// Long CPU work that [`Chapter::new`] needs done first, cut into
+    /// steps. A browser page runs one step at a time and shows its progress
+    /// between them, where one long call would freeze the page; the desktop
+    /// runs them in one go. Chapters with nothing to prepare return
+    /// `Preparation::ready(())`.
+    fn prepare(gpu: &Gpu) -> Preparation<Self::Prepared>;
+
+    /// Builds buffers, textures and pipelines for `target`, from what
+    /// `prepare` made.
+    fn new(gpu: &Gpu, target: Target, prepared: Self::Prepared) -> anyhow::Result<Self>;
 
     /// Takes the values of the chapter's own [`Chapter::FLAGS`], right after
     /// `new`. A value it cannot use is an [`crate::args::UsageError`] that
@@ -285,18 +287,23 @@ pub trait Chapter: Sized + 'static {
     fn stats(&mut self, _gpu: &Gpu) -> String {
         String::new()
     }
-
-    /// A WGSL file under `shaders/` changed on disk: rebuild pipelines from
-    /// it. On error keep the old pipelines; the runner shows the message.
-    fn reload_shaders(&mut self, _gpu: &Gpu) -> Result<(), ShaderError> {
-        Ok(())
-    }
 }
 
 /// Creates chapter `C` for `target` and gives it its flags: how every
-/// runner (window, screenshot, bench) makes one.
+/// runner (window, screenshot, bench) makes one. Runs `C::prepare` in one
+/// go first.
 pub fn create<C: Chapter>(gpu: &Gpu, target: Target, flags: &FlagValues) -> anyhow::Result<C> {
-    let mut chapter = C::new(gpu, target)?;
+    create_prepared(gpu, target, C::prepare(gpu).finish(gpu), flags)
+}
+
+/// [`create`], from what a preparation run step by step made (a browser page).
+pub fn create_prepared<C: Chapter>(
+    gpu: &Gpu,
+    target: Target,
+    prepared: C::Prepared,
+    flags: &FlagValues,
+) -> anyhow::Result<C> {
+    let mut chapter = C::new(gpu, target, prepared)?;
     chapter.apply_flags(gpu, flags)?;
     Ok(chapter)
 }

@@ -16,8 +16,8 @@ pub struct Gpu {
     pub queue: wgpu::Queue,
     /// See [`Gpu::cached`].
     cache: Mutex<Vec<Box<dyn Any + Send>>>,
-    /// See [`Gpu::read_shaders_from`].
-    shader_root: Mutex<Option<PathBuf>>,
+    /// Where shaders are read from, and what to rebuild when they change.
+    pub(crate) shaders: crate::reload::ShaderRegistry,
 }
 
 /// What a chapter needs beyond the WebGPU baseline. Optional features are
@@ -137,7 +137,7 @@ impl Gpu {
             .await
             .map_err(|e| NoAdapter { reason: format!("request_device failed: {e}") })?;
 
-        Ok(Self { instance, adapter, device, queue, cache: Mutex::default(), shader_root: Mutex::default() })
+        Ok(Self { instance, adapter, device, queue, cache: Mutex::default(), shaders: Default::default() })
     }
 
     /// Returns the value made for `key` on this device, making it first if
@@ -183,12 +183,12 @@ impl Gpu {
     /// this at the source tree it watches for edits (hot reload); a test
     /// points it at a scratch copy it breaks, on a device of its own.
     pub fn read_shaders_from(&self, root: Option<PathBuf>) {
-        *self.shader_root.lock().unwrap_or_else(|e| e.into_inner()) = root;
+        *self.shaders.root.lock().unwrap_or_else(|e| e.into_inner()) = root;
     }
 
     /// Where this device's shaders come from: see [`Gpu::read_shaders_from`].
     pub fn shader_root(&self) -> Option<PathBuf> {
-        self.shader_root.lock().unwrap_or_else(|e| e.into_inner()).clone()
+        self.shaders.root.lock().unwrap_or_else(|e| e.into_inner()).clone()
     }
 
     /// One line naming the adapter, for logs and bench tables.

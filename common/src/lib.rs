@@ -32,6 +32,7 @@ pub mod pipeline;
 pub mod preparation;
 pub mod primitives;
 mod probe;
+pub mod reload;
 pub mod rng;
 pub mod shader;
 pub mod sun;
@@ -49,6 +50,7 @@ pub use gpu::{Gpu, GpuNeeds, NoAdapter};
 pub use input::Input;
 pub use mesh::{Mesh, MeshData, Vertex};
 pub use preparation::Preparation;
+pub use reload::Reloadable;
 pub use shader::{ShaderError, ShaderFile};
 pub use timing::{PassTimer, Stats};
 

@@ -1,29 +1,65 @@
-//! Long work a chapter does before its first frame, cut into steps. On the
-//! desktop a chapter simply does it in one go. A browser page has one
-//! thread, and while Rust runs on it nothing repaints and no input is
-//! handled: the page runs one step, shows how far it has got, and gives the
-//! browser its thread back before the next (`common::web::prepare`).
+//! Long work a chapter does before its first frame, cut into steps, whose
+//! result [`crate::Chapter::new`] receives. On the desktop the steps simply
+//! run in one go. A browser page has one thread, and while Rust runs on it
+//! nothing repaints and no input is handled: the page runs one step, shows
+//! how far it has got, and gives the browser its thread back before the
+//! next (`common::web::prepare`).
 
 use crate::Gpu;
 
 // ANCHOR: preparation
-/// Work made of steps, each returning the fraction done so far.
-pub struct Preparation {
+/// Work that makes a `T`, in steps.
+pub struct Preparation<T> {
     /// What is being made, for the page's message: "generating the terrain".
     pub what: &'static str,
-    step: Box<dyn FnMut(&Gpu) -> f32>,
+    work: Work<T>,
 }
 
-impl Preparation {
-    /// `step` does the next slice of the work and returns the fraction of
-    /// the whole done so far; 1.0 or more means finished.
-    pub fn new(what: &'static str, step: impl FnMut(&Gpu) -> f32 + 'static) -> Self {
-        Self { what, step: Box::new(step) }
+/// What one step of a [`Preparation`] got to.
+pub enum Step<T> {
+    /// Not finished: the fraction of the whole done so far (0 to 1).
+    Progress(f32),
+    /// Finished: what was made.
+    Done(T),
+}
+
+/// The next step, each time it is called.
+type NextStep<T> = Box<dyn FnMut(&Gpu) -> Step<T>>;
+
+enum Work<T> {
+    /// Nothing (left) to do.
+    Ready(Option<T>),
+    Steps(NextStep<T>),
+}
+
+impl<T> Preparation<T> {
+    /// Nothing to do: `value` is already made (or there is nothing to make,
+    /// `Preparation::ready(())`).
+    pub fn ready(value: T) -> Self {
+        Self { what: "", work: Work::Ready(Some(value)) }
     }
 
-    /// Does one step; returns the fraction done so far.
-    pub fn step(&mut self, gpu: &Gpu) -> f32 {
-        (self.step)(gpu)
+    /// `step` does the next slice of the work each time it is called, and
+    /// returns [`Step::Done`] with the result after the last.
+    pub fn in_steps(what: &'static str, step: impl FnMut(&Gpu) -> Step<T> + 'static) -> Self {
+        Self { what, work: Work::Steps(Box::new(step)) }
+    }
+
+    /// Does one step. Call it until it returns [`Step::Done`], and not after.
+    pub fn step(&mut self, gpu: &Gpu) -> Step<T> {
+        match &mut self.work {
+            Work::Ready(value) => Step::Done(value.take().expect("a preparation is finished only once")),
+            Work::Steps(step) => step(gpu),
+        }
+    }
+
+    /// Does every step in one go (the desktop's way).
+    pub fn finish(mut self, gpu: &Gpu) -> T {
+        loop {
+            if let Step::Done(value) = self.step(gpu) {
+                return value;
+            }
+        }
     }
 }
 // ANCHOR_END: preparation

@@ -83,7 +83,10 @@ impl ShaderFile {
     /// and creates a shader module from it on `gpu`'s device. On a device
     /// with WebGPU's `clip_distances` feature, `CLIP_DISTANCES` is defined
     /// for `#ifdef`s in the WGSL (chapter 07 clips with it).
+    /// Inside [`crate::Reloadable::new`], the file and its imports are noted
+    /// as what to rebuild from when they change.
     pub fn module(&self, gpu: &crate::Gpu) -> Result<wgpu::ShaderModule, ShaderError> {
+        gpu.shaders.note(self);
         let root = gpu.shader_root();
         let mut imports = Vec::new();
         for import in self.imports {

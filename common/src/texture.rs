@@ -24,10 +24,24 @@ pub fn load_rgba(path: &Path) -> anyhow::Result<image::RgbaImage> {
 }
 
 /// Decodes `bytes`, reporting a failure as "`name` is not a readable PNG or
-/// JPEG" with the decoder's reason: how every asset error reads.
+/// JPEG" with the decoder's reason: how every asset error reads. On the
+/// desktop BMP and TGA are read too (older exporters' MTL files name them);
+/// TGA has no signature to be known by, so its name's extension says.
 pub fn decode_named(name: &str, bytes: &[u8]) -> anyhow::Result<image::RgbaImage> {
-    decode_rgba(bytes).with_context(|| format!("{name} is not a readable PNG or JPEG"))
+    let decoded = match (image::guess_format(bytes), image::ImageFormat::from_path(name)) {
+        (Err(_), Ok(format)) => {
+            image::load_from_memory_with_format(bytes, format).map(|i| i.to_rgba8()).map_err(anyhow::Error::from)
+        }
+        _ => decode_rgba(bytes),
+    };
+    decoded.with_context(|| format!("{name} is not a readable PNG or JPEG{READABLE_TOO}"))
 }
+
+/// The other formats `decode_named` reads, for its message.
+#[cfg(not(target_arch = "wasm32"))]
+const READABLE_TOO: &str = " (nor BMP or TGA)";
+#[cfg(target_arch = "wasm32")]
+const READABLE_TOO: &str = "";
 
 /// Decodes an encoded image already in memory (for assets embedded with
 /// `include_bytes!`).

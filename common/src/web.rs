@@ -10,6 +10,7 @@ use std::cell::RefCell;
 use anyhow::{Context as _, anyhow};
 use wasm_bindgen::JsCast as _;
 
+use crate::preparation::Step;
 use crate::{Chapter, Gpu};
 
 const WEBGL_ADVICE: &str = "\n\nThis browser offers no WebGPU, and this chapter needs more than WebGL2 \
@@ -135,25 +136,32 @@ pub fn show_error(message: &str) {
 }
 
 // ANCHOR: prepare
-/// Runs the chapter's [`Chapter::prepare`] a step at a time. Between steps
-/// the page gets its thread back: it paints the progress message, and
-/// handles input, resizes and the test's questions. `data-progress` says
-/// how far it got.
-pub async fn prepare<C: Chapter>(gpu: &Gpu) {
-    let Some(mut preparation) = C::prepare(gpu) else { return };
+/// Runs the chapter's [`Chapter::prepare`] a step at a time and returns
+/// what it made. Between steps the page gets its thread back: it paints the
+/// progress message, and handles input, resizes and the test's questions.
+/// `data-progress` says how far it got.
+pub async fn prepare<C: Chapter>(gpu: &Gpu) -> C::Prepared {
+    let mut preparation = C::prepare(gpu);
     let message = web_sys::window().and_then(|w| w.document()).and_then(|d| d.get_element_by_id("message"));
-    loop {
-        let done = preparation.step(gpu);
+    for steps in 0.. {
+        let done = match preparation.step(gpu) {
+            Step::Progress(done) => done,
+            // Nothing was to be done.
+            Step::Done(prepared) if steps == 0 => return prepared,
+            Step::Done(prepared) => {
+                set_state("progress", "1.000");
+                // Making the chapter is a task of its own.
+                next_task().await;
+                return prepared;
+            }
+        };
         set_state("progress", &format!("{done:.3}"));
         if let Some(message) = &message {
             message.set_text_content(Some(&format!("{}… {:.0} %", preparation.what, 100.0 * done.min(1.0))));
         }
-        // After the last step too: making the chapter is a task of its own.
         next_task().await;
-        if done >= 1.0 {
-            return;
-        }
     }
+    unreachable!("a preparation ends")
 }
 
 /// Resolves in a later task of the page's event loop, after the browser

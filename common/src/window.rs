@@ -100,7 +100,10 @@ struct Running<C: Chapter> {
     last_frame: Instant,
     history: FrameHistory,
     watcher: Option<shader::ShaderWatcher>,
-    shader_error: Option<String>,
+    /// The last reload's error, and the files it was reloading: they are
+    /// reloaded again with the next edit, so the error clears only once
+    /// every one of them builds.
+    shader_error: Option<(String, Vec<String>)>,
     show_help: bool,
     frames_left: Option<u32>,
     pointer_locked: bool,
@@ -289,10 +292,12 @@ impl Opening {
         crate::web::note_backend(&gpu);
         check_size(&gpu, args.size)?;
         log::info!("adapter: {}", gpu.describe());
-        // Long work in steps, so that the page shows progress (the desktop
-        // does it in `Chapter::new`, in one go).
+        // Long work in steps, so that the page shows progress; the desktop
+        // does it in one go.
         #[cfg(target_arch = "wasm32")]
-        crate::web::prepare::<C>(&gpu).await;
+        let prepared = crate::web::prepare::<C>(&gpu).await;
+        #[cfg(not(target_arch = "wasm32"))]
+        let prepared = C::prepare(&gpu).finish(&gpu);
 
         let size = window.inner_size();
         let (config, scene_format, overlay_format) = surface_config(&gpu, &surface, size.width, size.height)?;
@@ -300,7 +305,7 @@ impl Opening {
 
         let view = args.view_index::<C>();
         let target = Target { format: scene_format, width: config.width, height: config.height };
-        let mut chapter = crate::chapter::create::<C>(&gpu, target, &args.chapter_flags)?;
+        let mut chapter = crate::chapter::create_prepared::<C>(&gpu, target, prepared, &args.chapter_flags)?;
         chapter.select_view(view);
         let overlay = Overlay::new(&window, &gpu, overlay_format);
 
@@ -392,8 +397,18 @@ impl<C: Chapter> Running<C> {
         if changed.is_empty() {
             return;
         }
-        match self.chapter.reload_shaders(&self.gpu) {
-            Ok(()) => {
+        // Paths under `shaders/`, as `ShaderFile`s name them.
+        let mut files: Vec<String> = changed
+            .iter()
+            .filter_map(|path| path.strip_prefix(&watcher.dir).ok())
+            .map(|path| path.to_string_lossy().replace('\\', "/"))
+            .collect();
+        if let Some((_, failing)) = &self.shader_error {
+            files.extend(failing.iter().filter(|f| !files.contains(f)).cloned().collect::<Vec<_>>());
+        }
+        let names: Vec<&str> = files.iter().map(String::as_str).collect();
+        match self.gpu.reload_shaders(&names) {
+            Ok(_) => {
                 if self.shader_error.take().is_some() {
                     eprintln!("shaders fixed: reloaded");
                 }
@@ -402,7 +417,7 @@ impl<C: Chapter> Running<C> {
             Err(error) => {
                 // Keep drawing with the last pipelines that worked.
                 eprintln!("shader error, keeping the last good pipeline:\n{error}");
-                self.shader_error = Some(error.0);
+                self.shader_error = Some((error.0, files));
             }
         }
     }
@@ -522,7 +537,7 @@ impl<C: Chapter> Running<C> {
                 time: &mut self.time,
                 paused: &mut self.paused,
                 history: &self.history,
-                shader_error: self.shader_error.as_deref(),
+                shader_error: self.shader_error.as_ref().map(|(error, _)| error.as_str()),
                 show_help: &mut self.show_help,
                 status: &self.status,
                 adapter: gpu.adapter.get_info().name,

@@ -132,7 +132,10 @@ fn record<C: Chapter>(part: &'static str, figure: &'static str, techniques: &'st
         prepares_in_steps: C::PREPARES_IN_STEPS,
         needs: C::gpu_needs(),
         run: common::run::<C>,
-        open: |gpu, target| Ok(Box::new(Instance { chapter: C::new(gpu, target)?, target })),
+        open: |gpu, target| {
+            let chapter = common::chapter::create::<C>(gpu, target, &Default::default())?;
+            Ok(Box::new(Instance { chapter, target }))
+        },
     }
 }
 

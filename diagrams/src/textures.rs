@@ -54,10 +54,11 @@ struct LabFootprint {
     texels_per_metre: f32,
     /// The camera's height above the floor, metres.
     height: f32,
-    /// The angle one pixel row spans, radians.
+    /// The angle one pixel spans, radians, the same both ways (square
+    /// pixels): 2 tan(fov_y / 2) / 720, exact for a ray through the
+    /// picture's centre. The lab's camera looks 3.2° down, so the floor
+    /// 20 m out is 1.6° from that ray, and 10 m out 6.4°.
     per_pixel: f32,
-    /// tan(fov_x / 2).
-    tan_x: f32,
 }
 
 impl LabFootprint {
@@ -70,21 +71,21 @@ impl LabFootprint {
         Self {
             texels_per_metre: textures::materials::checkerboard().width() as f32 * repeats / (high.x - low.x),
             height: camera.position.y,
-            per_pixel: camera.fov_y / 720.0,
-            tan_x: (camera.fov_y / 2.0).tan() * 16.0 / 9.0,
+            per_pixel: 2.0 * (camera.fov_y / 2.0).tan() / 720.0,
         }
     }
 
-    /// Texels along the view at ground distance `d`: a pixel row covers
-    /// (d² + h²) / h × Δθ metres.
+    /// Texels along the view at ground distance `d`: a pixel row spans
+    /// slant range × Δθ metres square to the ray, which meets the floor at
+    /// sin α = h / slant range, so (d² + h²) / h × Δθ metres of floor.
     fn along(&self, d: f32) -> f32 {
         self.texels_per_metre * (d * d + self.height * self.height) / self.height * self.per_pixel
     }
 
     /// Texels across the view at ground distance `d`: a pixel column covers
-    /// the slant range × 2 tan(fov_x / 2) / 1280 metres.
+    /// slant range × Δθ metres, √(d² + h²) × Δθ.
     fn across(&self, d: f32) -> f32 {
-        self.texels_per_metre * (d * d + self.height * self.height).sqrt() * 2.0 * self.tan_x / 1280.0
+        self.texels_per_metre * (d * d + self.height * self.height).sqrt() * self.per_pixel
     }
 }
 

@@ -109,8 +109,9 @@ fn fs_gouraud(in: LitOutput) -> @location(0) vec4<f32> {
 
 // ANCHOR: flat
 // Flat shading: the mesh's vertices are split so each face has its own
-// normal (see `faceted` in lib.rs); the face's first vertex is lit, and
-// its colour is not interpolated: one colour per face.
+// normal (see `faceted` in city_meshes.rs); all three of a face's vertices
+// are lit, and the colour of its first, the provoking vertex, is kept for
+// the whole face, not interpolated: one colour per face.
 struct FlatOutput {
     @builtin(position) clip_position: vec4<f32>,
     @location(0) world: vec3<f32>,

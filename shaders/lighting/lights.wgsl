@@ -32,8 +32,8 @@ struct Frame {
 // frame for this chapter. See the book's chapter 08 pitfalls.
 @group(0) @binding(0) var<storage, read> frame: Frame;
 
-// 64 bytes, as GpuLight in lights.rs. A point light has cos_outer = −3:
-// every direction is inside its "cone".
+// 64 bytes, as GpuLight in lights.rs. A point light has cos_inner = −2
+// and cos_outer = −3: every direction is inside its "cone".
 struct Light {
     position: vec3<f32>,
     range: f32,

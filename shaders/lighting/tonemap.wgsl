@@ -1,6 +1,6 @@
 // Chapter 08: from the HDR picture to the screen. Adds the bloom, scales by
 // the exposure, and tone-maps with the ACES filmic curve as fitted by
-// Narkowicz (2015). The target is sRGB: the GPU encodes the linear result,
+// Narkowicz (2016). The target is sRGB: the GPU encodes the linear result,
 // so no gamma curve is applied here.
 #import common::fullscreen::{FullscreenOutput, fullscreen_triangle}
 

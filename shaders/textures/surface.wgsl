@@ -7,12 +7,14 @@
 // ANCHOR: vertex
 // A vertex of a model (mesh.rs: TexturedVertex) and the instance that
 // places it (ModelInstance): its model matrix by columns, and its normal
-// matrix. (Names ending in a digit would be renamed by the import.)
+// matrix. (Names ending in a digit would be renamed by the import.) The
+// vertex's colour is white unless the model's file gives one.
 struct Vertex {
     @location(0) position: vec3<f32>,
     @location(1) normal: vec3<f32>,
     @location(2) uv: vec2<f32>,
     @location(3) tangent: vec4<f32>,
+    @location(12) colour: vec3<f32>,
 };
 
 struct Instance {
@@ -48,7 +50,7 @@ fn place(vertex: Vertex, instance: Instance) -> Placed {
 
 // What a textured surface's vertex hands its fragments: where it is on
 // screen (through `view_proj`) and in the world, its frame, its texture
-// coordinates and its instance's glow.
+// coordinates, its instance's glow and its colour.
 struct Varyings {
     @builtin(position) clip_position: vec4<f32>,
     @location(0) world: vec3<f32>,
@@ -56,12 +58,13 @@ struct Varyings {
     @location(2) uv: vec2<f32>,
     @location(3) tangent: vec4<f32>,
     @location(4) glow: f32,
+    @location(5) colour: vec3<f32>,
 };
 
 fn vary(vertex: Vertex, instance: Instance, view_proj: mat4x4<f32>) -> Varyings {
     let placed = place(vertex, instance);
     let clip = view_proj * vec4<f32>(placed.world, 1.0);
-    return Varyings(clip, placed.world, placed.normal, vertex.uv, placed.tangent, instance.glow);
+    return Varyings(clip, placed.world, placed.normal, vertex.uv, placed.tangent, instance.glow, vertex.colour);
 }
 // ANCHOR_END: vertex
 
@@ -73,7 +76,8 @@ struct Material {
     emissive: vec3<f32>,
     shininess: f32,
     // x: has a normal map, y: has an albedo map (its alpha masks the
-    // emissive light), z: glows only at night.
+    // emissive light), z: glows only at night, w: the vertices' colours
+    // multiply the diffuse colour.
     flags: vec4<u32>,
 };
 @group(1) @binding(0) var albedo_map: texture_2d<f32>;

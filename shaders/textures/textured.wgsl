@@ -33,7 +33,11 @@ fn fragment_frame(in: Varyings) -> Frame3 {
 // ANCHOR: fragment
 // The light a surface with normal n sends to the eye, and its own glow.
 fn shade(in: Varyings, n: vec3<f32>, albedo_texel: vec4<f32>) -> vec4<f32> {
-    let albedo = material.diffuse * albedo_texel.rgb;
+    var albedo = material.diffuse * albedo_texel.rgb;
+    // Vertex colours (OBJ's `v x y z r g b`) tint it, where the model has them.
+    if material.flags.w == 1u {
+        albedo *= in.colour;
+    }
     let lit = light_surface(in.world, n, Surface(albedo, material.specular, material.shininess));
     // An albedo map's alpha says where the material glows (lit windows).
     let mask = select(1.0, albedo_texel.a, material.flags.y == 1u);

@@ -120,6 +120,10 @@ fn test() -> anyhow::Result<()> {
     step("prerequisites", &prerequisites::ensure_adapter)?;
     step("fmt", &|| cargo(&["fmt", "--all", "--", "--check"]))?;
     step("clippy", &|| cargo(&["clippy", "--workspace", "--all-targets", "--", "-D", "warnings"]))?;
+    // One build of everything the later steps run (libraries, the tests,
+    // every binary): one cargo invocation keeps both cores busy through
+    // the links that two invocations would each end with alone.
+    step("build", &|| cargo(&["build", "--workspace", "--all-targets"]))?;
     step("cargo test", &|| cargo(&["test", "--workspace"]))?;
     step("window", &|| window_test::run(&[]))?;
     step("shared builds", &chapters_reuse_the_test_build)?;

@@ -3,7 +3,10 @@
 //! two pipelines together into a frame.
 
 use common::wgpu::util::DeviceExt as _;
-use common::{Chapter, Frame, Gpu, ShaderError, Target, View, ViewRow, anyhow, egui, shader, views_of, wgpu};
+use common::{
+    Chapter, Frame, Gpu, Preparation, Reloadable, ShaderError, Target, View, ViewRow, anyhow, egui, shader, views_of,
+    wgpu,
+};
 
 use crate::pipeline::build_pipeline;
 use crate::vertex::{ColoredVertex, TRIANGLE};
@@ -41,9 +44,9 @@ pub struct Triangle {
     pub settings: Settings,
     vertices: wgpu::Buffer,
     corners: [ColoredVertex; 3],
-    smooth: wgpu::RenderPipeline,
-    flat: wgpu::RenderPipeline,
-    format: wgpu::TextureFormat,
+    /// The smooth and the flat pipeline, rebuilt whenever triangle.wgsl is
+    /// saved while the window is open (hot reload).
+    pipelines: Reloadable<[wgpu::RenderPipeline; 2]>,
 }
 
 impl Triangle {
@@ -64,16 +67,24 @@ impl Chapter for Triangle {
     const TITLE: &'static str = "01 · The first triangle";
     const VIEWS: &'static [View] = &views_of(&VIEW_TABLE);
 
+    /// Nothing takes long enough to prepare in steps.
+    type Prepared = ();
+
+    fn prepare(_gpu: &Gpu) -> Preparation<()> {
+        Preparation::ready(())
+    }
+
     // ANCHOR: new
-    fn new(gpu: &Gpu, target: Target) -> anyhow::Result<Self> {
+    fn new(gpu: &Gpu, target: Target, (): ()) -> anyhow::Result<Self> {
         let vertices = gpu.device.create_buffer_init(&wgpu::util::BufferInitDescriptor {
             label: Some("triangle vertices"),
             contents: bytemuck::cast_slice(&TRIANGLE),
             // COPY_DST so the colour pickers in the overlay can rewrite it.
             usage: wgpu::BufferUsages::VERTEX | wgpu::BufferUsages::COPY_DST,
         });
-        let [smooth, flat] = Self::pipelines(gpu, target.format)?;
-        Ok(Self { settings: Settings::DEFAULT, vertices, corners: TRIANGLE, smooth, flat, format: target.format })
+        let format = target.format;
+        let pipelines = Reloadable::new(gpu, move |gpu| Self::pipelines(gpu, format))?;
+        Ok(Self { settings: Settings::DEFAULT, vertices, corners: TRIANGLE, pipelines })
     }
     // ANCHOR_END: new
 
@@ -95,7 +106,8 @@ impl Chapter for Triangle {
             timestamp_writes: frame.timer.pass("triangle"),
             ..Default::default()
         });
-        pass.set_pipeline(if self.settings.interpolate { &self.smooth } else { &self.flat });
+        let [smooth, flat] = self.pipelines.get();
+        pass.set_pipeline(if self.settings.interpolate { &smooth } else { &flat });
         pass.set_vertex_buffer(0, self.vertices.slice(..));
         pass.draw(0..3, 0..1);
     }
@@ -111,10 +123,5 @@ impl Chapter for Triangle {
         if ui.button("reset").clicked() {
             self.corners = TRIANGLE;
         }
-    }
-
-    fn reload_shaders(&mut self, gpu: &Gpu) -> Result<(), ShaderError> {
-        [self.smooth, self.flat] = Self::pipelines(gpu, self.format)?;
-        Ok(())
     }
 }

@@ -6,8 +6,8 @@ use common::glam::{Mat4, Vec3};
 use common::texture::depth_view;
 use common::wgpu::util::DeviceExt as _;
 use common::{
-    Camera, Chapter, FlyController, Frame, Gpu, Input, Mesh, ShaderError, Target, View, ViewRow, anyhow, egui,
-    fullscreen, primitives, shader, views_of, wgpu,
+    Camera, Chapter, FlyController, Frame, Gpu, Input, Mesh, Preparation, Reloadable, ShaderError, Target, View,
+    ViewRow, anyhow, egui, fullscreen, primitives, shader, views_of, wgpu,
 };
 
 use crate::depth_display::{depth_group, depth_group_layout};
@@ -84,7 +84,9 @@ fn start_camera(aspect: f32) -> Camera {
 
 const SKY: wgpu::Color = wgpu::Color { r: 0.30, g: 0.42, b: 0.60, a: 1.0 };
 
-/// Pipelines rebuilt when the WGSL changes.
+/// The chapter's pipelines, kept in a `Reloadable`: rebuilt when their WGSL
+/// is saved (hot reload).
+#[derive(Clone)]
 struct Pipelines {
     shaded: wgpu::RenderPipeline,
     normals: wgpu::RenderPipeline,
@@ -108,8 +110,7 @@ pub struct CameraChapter {
     depth_params: wgpu::Buffer,
     depth_group_layout: wgpu::BindGroupLayout,
     depth_group: wgpu::BindGroup,
-    layouts: [wgpu::PipelineLayout; 2],
-    pipelines: Pipelines,
+    pipelines: Reloadable<Pipelines>,
     target: Target,
 }
 
@@ -174,7 +175,14 @@ impl Chapter for CameraChapter {
     const SNAPSHOT_TIME: f32 = 2.0;
     const KEYS: &'static [(&'static str, &'static str)] = FlyController::KEYS;
 
-    fn new(gpu: &Gpu, target: Target) -> anyhow::Result<Self> {
+    /// Nothing takes long enough to prepare in steps.
+    type Prepared = ();
+
+    fn prepare(_gpu: &Gpu) -> Preparation<()> {
+        Preparation::ready(())
+    }
+
+    fn new(gpu: &Gpu, target: Target, (): ()) -> anyhow::Result<Self> {
         let device = &gpu.device;
         let objects = scene();
         let meshes = Shape::ALL.iter().map(|s| s.mesh().upload(device, &format!("{s:?}"))).collect();
@@ -235,7 +243,8 @@ impl Chapter for CameraChapter {
                 immediate_size: 0,
             }),
         ];
-        let pipelines = Self::build_pipelines(gpu, &layouts, target.format)?;
+        let format = target.format;
+        let pipelines = Reloadable::new(gpu, move |gpu| Self::build_pipelines(gpu, &layouts, format))?;
 
         Ok(Self {
             settings: Settings::DEFAULT,
@@ -253,7 +262,6 @@ impl Chapter for CameraChapter {
             depth_params,
             depth_group_layout,
             depth_group,
-            layouts,
             pipelines,
             target,
         })
@@ -290,6 +298,7 @@ impl Chapter for CameraChapter {
     fn render(&mut self, gpu: &Gpu, frame: &mut Frame) {
         self.write_uniforms(gpu, frame.time);
         let display = self.settings.display;
+        let pipelines = self.pipelines.get();
         {
             let mut pass = frame.encoder.begin_render_pass(&wgpu::RenderPassDescriptor {
                 label: Some("scene"),
@@ -308,7 +317,7 @@ impl Chapter for CameraChapter {
                 timestamp_writes: frame.timer.pass("scene"),
                 ..Default::default()
             });
-            let pipeline = if display == Display::Normals { &self.pipelines.normals } else { &self.pipelines.shaded };
+            let pipeline = if display == Display::Normals { &pipelines.normals } else { &pipelines.shaded };
             pass.set_pipeline(pipeline);
             pass.set_bind_group(0, &self.camera_group, &[]);
             pass.set_bind_group(1, &self.object_group, &[0]);
@@ -321,7 +330,7 @@ impl Chapter for CameraChapter {
         }
         if matches!(display, Display::Depth | Display::DepthRaw) {
             let mut pass = fullscreen::pass(frame.encoder, frame.timer, "depth view", frame.target, None);
-            pass.set_pipeline(&self.pipelines.depth_view);
+            pass.set_pipeline(&pipelines.depth_view);
             pass.set_bind_group(0, &self.depth_group, &[]);
             pass.draw(0..3, 0..1);
         }
@@ -335,10 +344,5 @@ impl Chapter for CameraChapter {
         ui.add(egui::Slider::new(&mut self.camera.near, 0.01..=5.0).logarithmic(true).text("near plane (m)"));
         ui.add(egui::Slider::new(&mut self.camera.far, 10.0..=2000.0).logarithmic(true).text("far plane (m)"));
         ui.add(egui::Slider::new(&mut self.controller.speed, 1.0..=50.0).text("speed (m/s)"));
-    }
-
-    fn reload_shaders(&mut self, gpu: &Gpu) -> Result<(), ShaderError> {
-        self.pipelines = Self::build_pipelines(gpu, &self.layouts, self.target.format)?;
-        Ok(())
     }
 }

@@ -2,10 +2,12 @@
 //! cameras, the overlay's controls, and `impl Chapter`, which draws the
 //! terrain from the flying camera, or from high above for `chunks`.
 
+use std::sync::Arc;
+
 use common::texture::depth_view;
 use common::{
-    Camera, Chapter, FlyController, Frame, Gpu, Input, ShaderError, ShaderFile, Target, View, ViewRow, anyhow, egui,
-    shader, views_of, wgpu,
+    Camera, Chapter, FlyController, Frame, Gpu, Input, Preparation, Reloadable, ShaderFile, Target, View, ViewRow,
+    anyhow, egui, shader, views_of, wgpu,
 };
 
 use crate::cameras::{close_up_camera, overhead_camera, start_camera};
@@ -75,8 +77,8 @@ pub struct TerrainChapter {
     pub camera: Camera,
     pub controller: FlyController,
     viewpoint: Viewpoint,
-    layout: wgpu::PipelineLayout,
-    pipeline: wgpu::RenderPipeline,
+    /// Rebuilt when terrain.wgsl is saved (hot reload).
+    pipeline: Reloadable<wgpu::RenderPipeline>,
     depth: wgpu::TextureView,
     target: Target,
     /// Chunks drawn in the last frame.
@@ -101,26 +103,30 @@ impl Chapter for TerrainChapter {
         gpu_needs()
     }
 
-    /// The terrain is the long part of starting: in steps, so a page shows its progress.
-    fn prepare(gpu: &Gpu) -> Option<common::Preparation> {
+    /// The terrain, the long part of starting: made in steps, so that a
+    /// page shows its progress.
+    type Prepared = Arc<TerrainData>;
+
+    fn prepare(gpu: &Gpu) -> Preparation<Arc<TerrainData>> {
         TerrainData::prepare(gpu, TerrainSettings::default())
     }
 
-    fn new(gpu: &Gpu, target: Target) -> anyhow::Result<Self> {
-        let terrain = TerrainRenderer::new(gpu, TerrainSettings::default());
+    fn new(gpu: &Gpu, target: Target, terrain: Arc<TerrainData>) -> anyhow::Result<Self> {
+        let terrain = TerrainRenderer::new(gpu, terrain);
         let layout = gpu.device.create_pipeline_layout(&wgpu::PipelineLayoutDescriptor {
             label: Some("terrain"),
             bind_group_layouts: &[Some(&terrain.bind_group_layout)],
             immediate_size: 0,
         });
-        let pipeline = terrain.pipeline(gpu, &terrain_shader(), &layout, target.format)?;
+        let format = target.format;
+        let pipeline =
+            Reloadable::new(gpu, move |gpu| TerrainRenderer::pipeline(gpu, &terrain_shader(), &layout, format))?;
         Ok(Self {
             settings: Settings::DEFAULT,
             camera: start_camera(terrain.field(), target.aspect()),
             controller: FlyController { speed: 40.0, ..Default::default() },
             viewpoint: terrain.viewpoint(&gpu.device),
             terrain,
-            layout,
             pipeline,
             depth: depth_view(&gpu.device, target.width, target.height),
             target,
@@ -162,7 +168,7 @@ impl Chapter for TerrainChapter {
         }
         let shading = self.settings.shading;
         let mut pass = frame.scene_pass("terrain", SKY, &self.depth);
-        pass.set_pipeline(&self.pipeline);
+        pass.set_pipeline(&self.pipeline.get());
         if shading == Shading::Chunks {
             // Look from high above at what the flying camera culls: every
             // chunk is drawn (coarsely), coloured if the camera keeps it.
@@ -188,10 +194,5 @@ impl Chapter for TerrainChapter {
 
     fn stats(&mut self, _gpu: &Gpu) -> String {
         self.terrain.stats(self.drawn)
-    }
-
-    fn reload_shaders(&mut self, gpu: &Gpu) -> Result<(), ShaderError> {
-        self.pipeline = self.terrain.pipeline(gpu, &terrain_shader(), &self.layout, self.target.format)?;
-        Ok(())
     }
 }

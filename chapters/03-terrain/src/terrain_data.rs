@@ -4,6 +4,7 @@
 
 use std::sync::Arc;
 
+use common::preparation::{Preparation, Step};
 use common::timing::measure;
 use common::{Gpu, wgpu};
 
@@ -35,23 +36,22 @@ impl TerrainData {
     }
 
     /// [`TerrainData::get`] in steps, for [`Chapter::prepare`]: a browser
-    /// page shows its progress between them. `None` when the data is
-    /// already made.
-    pub fn prepare(gpu: &Gpu, settings: TerrainSettings) -> Option<common::Preparation> {
+    /// page shows its progress between them. Ready at once when the data
+    /// is already made.
+    ///
+    /// [`Chapter::prepare`]: common::Chapter::prepare
+    pub fn prepare(gpu: &Gpu, settings: TerrainSettings) -> Preparation<Arc<Self>> {
         if gpu.is_cached::<TerrainSettings, Self>(&settings) {
-            return None;
+            return Preparation::ready(Self::get(gpu, settings));
         }
         let mut build = Some(TerrainBuild::new(settings));
-        Some(common::Preparation::new("generating the terrain", move |gpu| {
-            let Some(unfinished) = build.take() else { return 1.0 };
+        Preparation::in_steps("generating the terrain", move |gpu| {
+            let unfinished = build.take().expect("no step after the last");
             match unfinished.step(&gpu.device) {
-                TerrainBuild::Done(data) => {
-                    gpu.cached(settings, || data);
-                    1.0
-                }
-                next => build.insert(next).progress(),
+                TerrainBuild::Done(data) => Step::Done(gpu.cached(settings, || data)),
+                next => Step::Progress(build.insert(next).progress()),
             }
-        }))
+        })
     }
 }
 

@@ -80,9 +80,10 @@ pub struct TerrainRenderer {
 }
 
 impl TerrainRenderer {
-    pub fn new(gpu: &Gpu, settings: TerrainSettings) -> Self {
+    /// The renderer of terrain `data` (what [`TerrainData::prepare`] made).
+    pub fn new(gpu: &Gpu, data: Arc<TerrainData>) -> Self {
         let device = &gpu.device;
-        let data = TerrainData::get(gpu, settings);
+        let settings = data.field.settings;
         let chunk_flags = device.create_buffer(&wgpu::BufferDescriptor {
             label: Some("chunk drawn flags"),
             size: u64::from(settings.chunks_per_side.pow(2).max(1)) * 4,
@@ -145,9 +146,9 @@ impl TerrainRenderer {
     }
 
     /// A pipeline that draws the terrain mesh with `shader`'s `vs_main` and
-    /// `fs_main`; `layout` starts with this renderer's bind group layout.
+    /// `fs_main`; `layout` starts with a renderer's bind group layout. It
+    /// takes no renderer, so that a `Reloadable` can call it again on hot reload.
     pub fn pipeline(
-        &self,
         gpu: &Gpu,
         shader: &ShaderFile,
         layout: &wgpu::PipelineLayout,

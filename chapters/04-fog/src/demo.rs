@@ -4,7 +4,7 @@
 
 use common::texture::depth_view;
 use common::{
-    Camera, Chapter, FlyController, Frame, Gpu, Input, ShaderError, Target, View, ViewRow, anyhow, egui, views_of, wgpu,
+    Camera, Chapter, FlyController, Frame, Gpu, Input, Reloadable, Target, View, ViewRow, anyhow, egui, views_of, wgpu,
 };
 use terrain::heightfield::{HeightField, TerrainSettings};
 use terrain::{KEEP_ALL, SKY, Shading, Sun, TerrainRenderer, Viewpoint, start_camera};
@@ -37,8 +37,8 @@ pub struct FogChapter {
     pub controller: FlyController,
     fog_binding: FogBinding,
     viewpoint: Viewpoint,
-    layout: wgpu::PipelineLayout,
-    pipeline: wgpu::RenderPipeline,
+    /// Rebuilt when fog.wgsl or terrain.wgsl is saved (hot reload).
+    pipeline: Reloadable<wgpu::RenderPipeline>,
     depth: wgpu::TextureView,
     target: Target,
     pub drawn: usize,
@@ -58,20 +58,24 @@ impl Chapter for FogChapter {
     }
 
     /// The terrain is the long part of starting: in steps, so a page shows its progress.
-    fn prepare(gpu: &Gpu) -> Option<common::Preparation> {
+    /// The terrain, made in steps: see chapter 03.
+    type Prepared = std::sync::Arc<terrain::TerrainData>;
+
+    fn prepare(gpu: &Gpu) -> common::Preparation<Self::Prepared> {
         terrain::TerrainData::prepare(gpu, TerrainSettings::default())
     }
 
-    fn new(gpu: &Gpu, target: Target) -> anyhow::Result<Self> {
+    fn new(gpu: &Gpu, target: Target, terrain: Self::Prepared) -> anyhow::Result<Self> {
         let device = &gpu.device;
-        let terrain = TerrainRenderer::new(gpu, TerrainSettings::default());
+        let terrain = TerrainRenderer::new(gpu, terrain);
         let fog_binding = FogBinding::new(device);
         let layout = device.create_pipeline_layout(&wgpu::PipelineLayoutDescriptor {
             label: Some("fog"),
             bind_group_layouts: &[Some(&terrain.bind_group_layout), Some(&fog_binding.layout)],
             immediate_size: 0,
         });
-        let pipeline = terrain.pipeline(gpu, &fog_shader(), &layout, target.format)?;
+        let format = target.format;
+        let pipeline = Reloadable::new(gpu, move |gpu| TerrainRenderer::pipeline(gpu, &fog_shader(), &layout, format))?;
         Ok(Self {
             camera: start_camera(terrain.field(), target.aspect()),
             controller: FlyController { speed: 40.0, ..Default::default() },
@@ -79,7 +83,6 @@ impl Chapter for FogChapter {
             viewpoint: terrain.viewpoint(device),
             terrain,
             fog_binding,
-            layout,
             pipeline,
             depth: depth_view(device, target.width, target.height),
             target,
@@ -127,7 +130,7 @@ impl Chapter for FogChapter {
         // Clear to the fog colour: where there is no ground, the fog's
         // "infinitely far" is what shows.
         let mut pass = frame.scene_pass("terrain", SKY, &self.depth);
-        pass.set_pipeline(&self.pipeline);
+        pass.set_pipeline(&self.pipeline.get());
         pass.set_bind_group(1, &self.fog_binding.group, &[]);
         self.drawn = self.terrain.draw(&mut pass, &self.viewpoint);
     }
@@ -151,10 +154,5 @@ impl Chapter for FogChapter {
 
     fn stats(&mut self, _gpu: &Gpu) -> String {
         format!("far plane {:.0} m; {}", self.camera.far, self.terrain.stats(self.drawn))
-    }
-
-    fn reload_shaders(&mut self, gpu: &Gpu) -> Result<(), ShaderError> {
-        self.pipeline = self.terrain.pipeline(gpu, &fog_shader(), &self.layout, self.target.format)?;
-        Ok(())
     }
 }

@@ -3,9 +3,7 @@
 //! camera standing on it.
 
 use common::texture::depth_view;
-use common::{
-    Camera, Chapter, FlyController, Frame, Gpu, Input, ShaderError, Target, View, ViewRow, anyhow, egui, views_of, wgpu,
-};
+use common::{Camera, Chapter, FlyController, Frame, Gpu, Input, Target, View, ViewRow, anyhow, egui, views_of, wgpu};
 use fog::FogSettings;
 use terrain::heightfield::{HeightField, TerrainSettings};
 use terrain::{KEEP_ALL, SKY, Sun, Viewpoint};
@@ -88,12 +86,15 @@ impl Chapter for InstancingChapter {
     }
 
     /// The terrain is the long part of starting: in steps, so a page shows its progress.
-    fn prepare(gpu: &Gpu) -> Option<common::Preparation> {
+    /// The terrain, made in steps: see chapter 03.
+    type Prepared = std::sync::Arc<terrain::TerrainData>;
+
+    fn prepare(gpu: &Gpu) -> common::Preparation<Self::Prepared> {
         terrain::TerrainData::prepare(gpu, TerrainSettings::default())
     }
 
-    fn new(gpu: &Gpu, target: Target) -> anyhow::Result<Self> {
-        let plain = MarsPlain::new(gpu, target.format)?;
+    fn new(gpu: &Gpu, target: Target, terrain: Self::Prepared) -> anyhow::Result<Self> {
+        let plain = MarsPlain::new(gpu, target.format, terrain)?;
         Ok(Self {
             camera: plain_camera(plain.terrain.field(), target.aspect()),
             controller: FlyController { speed: 20.0, ..Default::default() },
@@ -189,9 +190,5 @@ impl Chapter for InstancingChapter {
             rock_mesh(SEED).vertices.len(),
             std::mem::size_of::<RockInstance>()
         )
-    }
-
-    fn reload_shaders(&mut self, gpu: &Gpu) -> Result<(), ShaderError> {
-        self.plain.reload_shaders(gpu)
     }
 }

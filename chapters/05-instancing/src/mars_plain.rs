@@ -6,10 +6,10 @@ use std::sync::Arc;
 
 use common::glam::{Vec3, Vec4};
 use common::texture::depth_test;
-use common::{Camera, Gpu, ShaderError, ShaderFile, Vertex, anyhow, shader, wgpu};
+use common::{Camera, Gpu, Reloadable, ShaderError, ShaderFile, Vertex, anyhow, shader, wgpu};
 use fog::{FogBinding, FogSettings, fog_shader};
-use terrain::heightfield::{HeightField, TerrainSettings};
-use terrain::{Shading, Sun, TerrainRenderer, Viewpoint};
+use terrain::heightfield::HeightField;
+use terrain::{Shading, Sun, TerrainData, TerrainRenderer, Viewpoint};
 
 use crate::rock_field::{MAX_ONE_PER_DRAW, RockField, RockInstance};
 
@@ -54,7 +54,10 @@ fn rocks_shader() -> ShaderFile {
     shader!("instancing/rocks.wgsl", imports: ["terrain/terrain.wgsl", "fog/fog.wgsl"])
 }
 
-struct RockPipelines {
+/// The plain's pipelines: the terrain in fog, and the rocks drawn three ways.
+#[derive(Clone)]
+struct Pipelines {
+    terrain: wgpu::RenderPipeline,
     instanced: wgpu::RenderPipeline,
     one_per_draw: wgpu::RenderPipeline,
     flat: wgpu::RenderPipeline,
@@ -119,18 +122,17 @@ pub struct MarsPlain {
     /// The fog's uniform (group 1), the same for every picture of a frame.
     pub fog: FogBinding,
     singles_group: wgpu::BindGroup,
-    layouts: [wgpu::PipelineLayout; 2],
-    terrain_pipeline: wgpu::RenderPipeline,
-    rock_pipelines: RockPipelines,
-    format: wgpu::TextureFormat,
+    /// Rebuilt when fog.wgsl, rocks.wgsl or terrain.wgsl is saved (hot reload).
+    pipelines: Reloadable<Pipelines>,
 }
 // ANCHOR_END: mars_plain
 
 impl MarsPlain {
-    /// The plain for targets of `format`.
-    pub fn new(gpu: &Gpu, format: wgpu::TextureFormat) -> anyhow::Result<Self> {
+    /// The plain of `terrain` (what `TerrainData::prepare` made), for
+    /// targets of `format`.
+    pub fn new(gpu: &Gpu, format: wgpu::TextureFormat, terrain: Arc<TerrainData>) -> anyhow::Result<Self> {
         let device = &gpu.device;
-        let terrain = TerrainRenderer::new(gpu, TerrainSettings::default());
+        let terrain = TerrainRenderer::new(gpu, terrain);
         let rocks = RockField::get(gpu, terrain.field());
         let fog = FogBinding::new(device);
         let single_layout = device.create_bind_group_layout(&wgpu::BindGroupLayoutDescriptor {
@@ -156,19 +158,20 @@ impl MarsPlain {
         let shared = [Some(&terrain.bind_group_layout), Some(&fog.layout)];
         let layouts =
             [layout("rocks", &shared), layout("one rock per draw", &[shared[0], shared[1], Some(&single_layout)])];
-        let terrain_pipeline = terrain.pipeline(gpu, &fog_shader(), &layouts[0], format)?;
-        let rock_pipelines = Self::build_rock_pipelines(gpu, &layouts, format)?;
+        let pipelines = Reloadable::new(gpu, move |gpu| Self::pipelines(gpu, &layouts, format))?;
         let singles_group = Self::singles_group(device, &single_layout, &rocks);
-        Ok(Self { terrain, rocks, fog, singles_group, layouts, terrain_pipeline, rock_pipelines, format })
+        Ok(Self { terrain, rocks, fog, singles_group, pipelines })
     }
 
-    fn build_rock_pipelines(
+    fn pipelines(
         gpu: &Gpu,
         layouts: &[wgpu::PipelineLayout; 2],
         format: wgpu::TextureFormat,
-    ) -> Result<RockPipelines, ShaderError> {
+    ) -> Result<Pipelines, ShaderError> {
+        let terrain = TerrainRenderer::pipeline(gpu, &fog_shader(), &layouts[0], format)?;
         let module = rocks_shader().module(gpu)?;
-        gpu.catch_validation(|| RockPipelines {
+        gpu.catch_validation(|| Pipelines {
+            terrain,
             instanced: rock_pipeline(gpu, &module, &layouts[0], format, "vs_instanced", "fs_main"),
             one_per_draw: rock_pipeline(gpu, &module, &layouts[1], format, "vs_single", "fs_main"),
             flat: rock_pipeline(gpu, &module, &layouts[0], format, "vs_instanced", "fs_flat"),
@@ -200,7 +203,7 @@ impl MarsPlain {
     pub fn regenerate(&mut self, gpu: &Gpu) {
         self.terrain.regenerate(gpu);
         self.rocks = RockField::get(gpu, self.terrain.field());
-        let layout = self.rock_pipelines.one_per_draw.get_bind_group_layout(2);
+        let layout = self.pipelines.get().one_per_draw.get_bind_group_layout(2);
         self.singles_group = Self::singles_group(&gpu.device, &layout, &self.rocks);
     }
 
@@ -224,7 +227,7 @@ impl MarsPlain {
         self.terrain.bind(pass, viewpoint);
         let mut calls = DrawCalls::default();
         if setup.terrain {
-            pass.set_pipeline(&self.terrain_pipeline);
+            pass.set_pipeline(&self.pipelines.get().terrain);
             calls.terrain = self.terrain.draw(pass, viewpoint) as u32;
         }
         calls.rocks = self.draw_rocks(pass, setup);
@@ -238,20 +241,19 @@ impl MarsPlain {
         let Setup { mode, .. } = setup;
         let rocks = setup.rocks.min(self.rocks.placed);
         let mesh = &self.rocks.mesh;
+        let pipelines = self.pipelines.get();
         pass.set_vertex_buffer(0, mesh.vertex_buffer.slice(..));
         pass.set_index_buffer(mesh.index_buffer.slice(..), wgpu::IndexFormat::Uint32);
         match mode {
             Mode::Instanced | Mode::Flat => {
-                let pipeline =
-                    if mode == Mode::Flat { &self.rock_pipelines.flat } else { &self.rock_pipelines.instanced };
-                pass.set_pipeline(pipeline);
+                pass.set_pipeline(if mode == Mode::Flat { &pipelines.flat } else { &pipelines.instanced });
                 pass.set_vertex_buffer(1, self.rocks.instances.slice(..));
                 // Every rock, one call: the GPU loops over the instances itself.
                 pass.draw_indexed(0..mesh.index_count, 0, 0..rocks);
                 1
             }
             Mode::OnePerDraw => {
-                pass.set_pipeline(&self.rock_pipelines.one_per_draw);
+                pass.set_pipeline(&pipelines.one_per_draw);
                 let rocks = rocks.min(MAX_ONE_PER_DRAW);
                 for i in 0..rocks {
                     // A bind group change and a draw per rock, validated and
@@ -264,12 +266,4 @@ impl MarsPlain {
         }
     }
     // ANCHOR_END: draw_rocks
-
-    /// Rebuilds the terrain and rock pipelines from the WGSL on disk.
-    pub fn reload_shaders(&mut self, gpu: &Gpu) -> Result<(), ShaderError> {
-        let terrain = self.terrain.pipeline(gpu, &fog_shader(), &self.layouts[0], self.format)?;
-        self.rock_pipelines = Self::build_rock_pipelines(gpu, &self.layouts, self.format)?;
-        self.terrain_pipeline = terrain;
-        Ok(())
-    }
 }

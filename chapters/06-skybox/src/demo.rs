@@ -3,9 +3,7 @@
 //! chapter 05's plain lit by the sun and then the sky in the same pass.
 
 use common::texture::depth_view;
-use common::{
-    Camera, Chapter, FlyController, Frame, Gpu, Input, ShaderError, Target, View, ViewRow, anyhow, egui, views_of, wgpu,
-};
+use common::{Camera, Chapter, FlyController, Frame, Gpu, Input, Target, View, ViewRow, anyhow, egui, views_of, wgpu};
 use fog::FogSettings;
 use instancing::{DrawCalls, MarsPlain, Setup, plain_camera};
 use terrain::heightfield::HeightField;
@@ -104,12 +102,15 @@ impl Chapter for SkyboxChapter {
     }
 
     /// The terrain is the long part of starting: in steps, so a page shows its progress.
-    fn prepare(gpu: &Gpu) -> Option<common::Preparation> {
+    /// The terrain, made in steps: see chapter 03.
+    type Prepared = std::sync::Arc<terrain::TerrainData>;
+
+    fn prepare(gpu: &Gpu) -> common::Preparation<Self::Prepared> {
         terrain::TerrainData::prepare(gpu, terrain::heightfield::TerrainSettings::default())
     }
 
-    fn new(gpu: &Gpu, target: Target) -> anyhow::Result<Self> {
-        let plain = MarsPlain::new(gpu, target.format)?;
+    fn new(gpu: &Gpu, target: Target, terrain: Self::Prepared) -> anyhow::Result<Self> {
+        let plain = MarsPlain::new(gpu, target.format, terrain)?;
         let sky = Sky::new(gpu, target.format)?;
         Ok(Self {
             camera: plain_camera(plain.terrain.field(), target.aspect()),
@@ -191,10 +192,5 @@ impl Chapter for SkyboxChapter {
             calls.terrain,
             calls.rocks
         )
-    }
-
-    fn reload_shaders(&mut self, gpu: &Gpu) -> Result<(), ShaderError> {
-        self.plain.reload_shaders(gpu)?;
-        self.sky.reload_shaders(gpu)
     }
 }

@@ -9,7 +9,7 @@ use common::chapter::uniform_entry;
 use common::glam::{Mat4, Quat, Vec3};
 use common::texture::{ColorSpace, Texture, cubemap_from_images, decode_faces};
 use common::wgpu::util::DeviceExt as _;
-use common::{Camera, Gpu, ShaderError, ShaderFile, anyhow, fullscreen, image, shader, wgpu};
+use common::{Camera, Gpu, Reloadable, ShaderError, ShaderFile, anyhow, fullscreen, image, shader, wgpu};
 
 use crate::sun_path::{celestial_turn, day_blend, sun_at};
 
@@ -130,9 +130,8 @@ pub struct Sky {
     /// Day and night horizon colours, measured from the cube maps.
     horizons: [[f32; 3]; 2],
     bind_group_layout: wgpu::BindGroupLayout,
-    layout: wgpu::PipelineLayout,
-    pipeline: wgpu::RenderPipeline,
-    format: wgpu::TextureFormat,
+    /// Rebuilt when sky.wgsl is saved (hot reload).
+    pipeline: Reloadable<wgpu::RenderPipeline>,
 }
 // ANCHOR_END: sky
 
@@ -173,8 +172,8 @@ impl Sky {
             bind_group_layouts: &[Some(&bind_group_layout)],
             immediate_size: 0,
         });
-        let pipeline = sky_pipeline(gpu, &layout, format)?;
-        Ok(Self { day, night, horizons, bind_group_layout, layout, pipeline, format })
+        let pipeline = Reloadable::new(gpu, move |gpu| sky_pipeline(gpu, &layout, format))?;
+        Ok(Self { day, night, horizons, bind_group_layout, pipeline })
     }
 
     pub fn viewpoint(&self, device: &wgpu::Device) -> SkyViewpoint {
@@ -222,14 +221,9 @@ impl Sky {
     /// Draws the sky wherever the depth buffer still holds 1: call it after
     /// everything else in the pass.
     pub fn draw(&self, pass: &mut wgpu::RenderPass<'_>, viewpoint: &SkyViewpoint) {
-        pass.set_pipeline(&self.pipeline);
+        pass.set_pipeline(&self.pipeline.get());
         pass.set_bind_group(0, &viewpoint.bind_group, &[]);
         pass.draw(0..3, 0..1);
-    }
-
-    pub fn reload_shaders(&mut self, gpu: &Gpu) -> Result<(), ShaderError> {
-        self.pipeline = sky_pipeline(gpu, &self.layout, self.format)?;
-        Ok(())
     }
 }
 

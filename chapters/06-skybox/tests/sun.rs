@@ -10,7 +10,7 @@ use skybox::{SkyboxChapter, sun_at};
 fn the_sun_is_drawn_where_the_light_comes_from() {
     let gpu = Gpu::headless(GpuNeeds::default()).expect("an adapter (lavapipe will do)");
     let target = Target { format: OFFSCREEN_FORMAT, width: 240, height: 136 };
-    let mut chapter = SkyboxChapter::new(&gpu, target).unwrap();
+    let mut chapter: SkyboxChapter = common::chapter::create(&gpu, target, &Default::default()).unwrap();
     chapter.select_view(0);
     for phase in [0.30, 0.42, 0.55, 0.70] {
         chapter.settings.start_phase = phase;

@@ -7,8 +7,7 @@ use common::chapter::scene_pass;
 use common::glam::{Vec2, Vec4};
 use common::texture::depth_view;
 use common::{
-    Camera, Chapter, FlyController, Frame, Gpu, Input, PassTimer, ShaderError, Target, View, ViewRow, anyhow, egui,
-    views_of, wgpu,
+    Camera, Chapter, FlyController, Frame, Gpu, Input, PassTimer, Target, View, ViewRow, anyhow, egui, views_of, wgpu,
 };
 use fog::FogSettings;
 use instancing::{MarsPlain, Mode, Setup, plain_camera};
@@ -170,13 +169,16 @@ impl Chapter for WaterChapter {
     }
 
     /// The terrain is the long part of starting: in steps, so a page shows its progress.
-    fn prepare(gpu: &Gpu) -> Option<common::Preparation> {
+    /// The terrain, made in steps: see chapter 03.
+    type Prepared = std::sync::Arc<terrain::TerrainData>;
+
+    fn prepare(gpu: &Gpu) -> common::Preparation<Self::Prepared> {
         terrain::TerrainData::prepare(gpu, terrain::heightfield::TerrainSettings::default())
     }
 
-    fn new(gpu: &Gpu, target: Target) -> anyhow::Result<Self> {
+    fn new(gpu: &Gpu, target: Target, terrain: Self::Prepared) -> anyhow::Result<Self> {
         let device = &gpu.device;
-        let plain = MarsPlain::new(gpu, target.format)?;
+        let plain = MarsPlain::new(gpu, target.format, terrain)?;
         let sky = Sky::new(gpu, target.format)?;
         let field = plain.terrain.field();
         let (centre, size, level) = find_lake(field, &plain_camera(field, target.aspect()));
@@ -328,11 +330,5 @@ impl Chapter for WaterChapter {
     fn stats(&mut self, _gpu: &Gpu) -> String {
         let (width, height) = self.water.pictures_size();
         format!("pictures {width}×{height}; {} rocks in each picture", self.rocks.rocks.min(self.plain.rocks_placed()))
-    }
-
-    fn reload_shaders(&mut self, gpu: &Gpu) -> Result<(), ShaderError> {
-        self.plain.reload_shaders(gpu)?;
-        self.sky.reload_shaders(gpu)?;
-        self.water.reload_shaders(gpu)
     }
 }

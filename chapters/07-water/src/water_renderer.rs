@@ -8,7 +8,8 @@ use common::glam::Vec2;
 use common::texture::{ColorSpace, Texture, depth_test, depth_view};
 use common::wgpu::util::DeviceExt as _;
 use common::{
-    Camera, Frame, Gpu, Mesh, MeshData, ShaderError, ShaderFile, Target, anyhow, fullscreen, primitives, shader, wgpu,
+    Camera, Frame, Gpu, Mesh, MeshData, Reloadable, ShaderError, ShaderFile, Target, anyhow, fullscreen, primitives,
+    shader, wgpu,
 };
 use instancing::MarsPlain;
 use terrain::{SKY, Viewpoint};
@@ -99,13 +100,11 @@ pub struct WaterRenderer {
     uniform: wgpu::Buffer,
     water_layout: wgpu::BindGroupLayout,
     water_group: wgpu::BindGroup,
-    pipeline_layout: wgpu::PipelineLayout,
-    pipeline: wgpu::RenderPipeline,
     show_layout: wgpu::BindGroupLayout,
     show_groups: [wgpu::BindGroup; 2],
-    show_pipeline_layout: wgpu::PipelineLayout,
-    show_pipeline: wgpu::RenderPipeline,
-    format: wgpu::TextureFormat,
+    /// The surface's pipeline and the one that shows a picture, rebuilt
+    /// when water.wgsl, show.wgsl or a module they import is saved (hot reload).
+    pipelines: Reloadable<(wgpu::RenderPipeline, wgpu::RenderPipeline)>,
 }
 
 impl WaterRenderer {
@@ -170,7 +169,9 @@ impl WaterRenderer {
             bind_group_layouts: &[Some(&show_layout)],
             immediate_size: 0,
         });
-        let (pipeline, show_pipeline) = build_pipelines(gpu, &pipeline_layout, &show_pipeline_layout, target.format)?;
+        let format = target.format;
+        let pipelines =
+            Reloadable::new(gpu, move |gpu| build_pipelines(gpu, &pipeline_layout, &show_pipeline_layout, format))?;
         let pictures_size = picture_size(target, resolution);
         let reflection = Picture::new(device, target.format, pictures_size);
         let refraction = Picture::new(device, target.format, pictures_size);
@@ -188,13 +189,9 @@ impl WaterRenderer {
             uniform,
             water_layout,
             water_group,
-            pipeline_layout,
-            pipeline,
             show_layout,
             show_groups,
-            show_pipeline_layout,
-            show_pipeline,
-            format: target.format,
+            pipelines,
         })
     }
 
@@ -229,7 +226,7 @@ impl WaterRenderer {
     /// Draws picture `which` (0 reflection, 1 refraction) over the whole frame.
     pub fn show(&self, frame: &mut Frame, which: usize) {
         let mut pass = fullscreen::pass(frame.encoder, frame.timer, "show picture", frame.target, Some(SKY));
-        pass.set_pipeline(&self.show_pipeline);
+        pass.set_pipeline(&self.pipelines.get().1);
         pass.set_bind_group(0, &self.show_groups[which], &[]);
         pass.draw(0..3, 0..1);
     }
@@ -255,18 +252,11 @@ impl WaterRenderer {
     /// Draws the surface into `pass`, seen from `ground` (a viewpoint of
     /// `plain`'s terrain, aimed from the same camera as `aim`), in `plain`'s fog.
     pub fn draw(&self, pass: &mut wgpu::RenderPass<'_>, plain: &MarsPlain, ground: &Viewpoint) {
-        pass.set_pipeline(&self.pipeline);
+        pass.set_pipeline(&self.pipelines.get().0);
         plain.terrain.bind(pass, ground);
         pass.set_bind_group(1, &plain.fog.group, &[]);
         pass.set_bind_group(2, &self.water_group, &[]);
         self.grid.draw(pass, 0..1);
-    }
-
-    /// Rebuilds the surface and show pipelines from the WGSL on disk.
-    pub fn reload_shaders(&mut self, gpu: &Gpu) -> Result<(), ShaderError> {
-        (self.pipeline, self.show_pipeline) =
-            build_pipelines(gpu, &self.pipeline_layout, &self.show_pipeline_layout, self.format)?;
-        Ok(())
     }
 }
 

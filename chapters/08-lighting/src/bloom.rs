@@ -10,7 +10,7 @@
 
 use common::chapter::{FILTERABLE, sampler_entry, texture_entry, uniform_entry};
 use common::wgpu::util::DeviceExt as _;
-use common::{Gpu, PassTimer, ShaderError, ShaderFile, fullscreen, shader, wgpu};
+use common::{Gpu, PassTimer, Reloadable, ShaderError, ShaderFile, fullscreen, shader, wgpu};
 
 /// What the overlay changes.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -104,9 +104,8 @@ pub struct Bloom {
     params: [wgpu::Buffer; 2],
     layout: wgpu::BindGroupLayout,
     sampler: wgpu::Sampler,
-    pipeline_layout: wgpu::PipelineLayout,
-    downsample: wgpu::RenderPipeline,
-    upsample: wgpu::RenderPipeline,
+    /// Downsample and upsample, made again when bloom.wgsl is saved (hot reload).
+    pipelines: Reloadable<(wgpu::RenderPipeline, wgpu::RenderPipeline)>,
 }
 // ANCHOR_END: piece
 
@@ -147,9 +146,8 @@ impl Bloom {
             bind_group_layouts: &[Some(&layout)],
             immediate_size: 0,
         });
-        let (downsample, upsample) = Self::pipelines(gpu, &pipeline_layout, format)?;
-        let mut bloom =
-            Self { format, levels: Vec::new(), params, layout, sampler, pipeline_layout, downsample, upsample };
+        let pipelines = Reloadable::new(gpu, move |gpu| Self::pipelines(gpu, &pipeline_layout, format))?;
+        let mut bloom = Self { format, levels: Vec::new(), params, layout, sampler, pipelines };
         bloom.resize(device, width, height);
         Ok(bloom)
     }
@@ -178,11 +176,6 @@ impl Bloom {
             )
         })
         .map_err(ShaderError)
-    }
-
-    pub fn reload_shaders(&mut self, gpu: &Gpu) -> Result<(), ShaderError> {
-        (self.downsample, self.upsample) = Self::pipelines(gpu, &self.pipeline_layout, self.format)?;
-        Ok(())
     }
 
     /// Makes the chain's textures for pictures of `width` × `height`.
@@ -249,13 +242,14 @@ impl Bloom {
         let params = Params { threshold: settings.threshold, knee: settings.knee.max(1e-4), prefilter: 1, _padding: 0 };
         gpu.queue.write_buffer(&self.params[1], 0, bytemuck::bytes_of(&params));
         let first = self.read_group(&gpu.device, source, 1);
+        let (downsample, upsample) = self.pipelines.get();
         let passes = 2 * self.levels.len() - 1;
         let mut index = 0;
         // Down: source → level 0 (taking out the bright part), level i → level i + 1.
         for (i, level) in self.levels.iter().enumerate() {
             let input = if i == 0 { &first } else { &self.levels[i - 1].read };
             let mut pass = self.pass(encoder, timer, &level.view, index, passes, true);
-            pass.set_pipeline(&self.downsample);
+            pass.set_pipeline(&downsample);
             pass.set_bind_group(0, input, &[]);
             pass.draw(0..3, 0..1);
             index += 1;
@@ -263,7 +257,7 @@ impl Bloom {
         // Up: level i + 1 → blended into level i, from the smallest.
         for i in (0..self.levels.len() - 1).rev() {
             let mut pass = self.pass(encoder, timer, &self.levels[i].view, index, passes, false);
-            pass.set_pipeline(&self.upsample);
+            pass.set_pipeline(&upsample);
             pass.set_blend_constant(wgpu::Color {
                 r: f64::from(settings.spread),
                 g: f64::from(settings.spread),

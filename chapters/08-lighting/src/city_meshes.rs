@@ -108,6 +108,8 @@ fn city_shader() -> ShaderFile {
     shader!("lighting/city.wgsl", imports: ["lighting/lights.wgsl"])
 }
 
+/// The city's three shadings. Clone (handles): a `Reloadable` hands out copies.
+#[derive(Clone)]
 pub(crate) struct Pipelines {
     pub(crate) flat: wgpu::RenderPipeline,
     pub(crate) gouraud: wgpu::RenderPipeline,

@@ -5,7 +5,7 @@
 
 use common::chapter::uniform_entry;
 use common::glam::{Mat4, Vec3};
-use common::{Camera, Gpu, ShaderError, fullscreen, shader, wgpu};
+use common::{Camera, Gpu, Reloadable, ShaderError, fullscreen, shader, wgpu};
 
 use crate::lights::Daylight;
 use crate::post::HDR_FORMAT;
@@ -27,8 +27,8 @@ struct SkyUniform {
 pub struct CitySky {
     uniform: wgpu::Buffer,
     group: wgpu::BindGroup,
-    layout: wgpu::PipelineLayout,
-    pipeline: wgpu::RenderPipeline,
+    /// Made again when sky.wgsl or the lights' module is saved (hot reload).
+    pipeline: Reloadable<wgpu::RenderPipeline>,
 }
 
 impl CitySky {
@@ -55,8 +55,8 @@ impl CitySky {
             bind_group_layouts: &[Some(&lights.layout), Some(&group_layout)],
             immediate_size: 0,
         });
-        let pipeline = Self::pipeline(gpu, &layout)?;
-        Ok(Self { uniform, group, layout, pipeline })
+        let pipeline = Reloadable::new(gpu, move |gpu| Self::pipeline(gpu, &layout))?;
+        Ok(Self { uniform, group, pipeline })
     }
 
     fn pipeline(gpu: &Gpu, layout: &wgpu::PipelineLayout) -> Result<wgpu::RenderPipeline, ShaderError> {
@@ -76,11 +76,6 @@ impl CitySky {
         .map_err(ShaderError)
     }
 
-    pub fn reload_shaders(&mut self, gpu: &Gpu) -> Result<(), ShaderError> {
-        self.pipeline = Self::pipeline(gpu, &self.layout)?;
-        Ok(())
-    }
-
     /// The sky as `camera` sees it at this time of day.
     pub fn write(&self, gpu: &Gpu, camera: &Camera, day: &Daylight) {
         let turn_only = Mat4::look_to_rh(Vec3::ZERO, camera.forward(), Vec3::Y);
@@ -93,7 +88,7 @@ impl CitySky {
     }
 
     pub fn draw(&self, pass: &mut wgpu::RenderPass<'_>) {
-        pass.set_pipeline(&self.pipeline);
+        pass.set_pipeline(&self.pipeline.get());
         pass.set_bind_group(1, &self.group, &[]);
         pass.draw(0..3, 0..1);
     }

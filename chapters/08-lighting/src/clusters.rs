@@ -9,9 +9,10 @@ use common::glam::{Mat4, Vec3, Vec4Swizzles};
 use crate::lights::{Light, LightKind};
 
 // ANCHOR: grid
-/// Clusters across, down, and deep: tiles of 40 × 40 pixels at 1280 × 720;
-/// depth slices that grow with distance, so that every cluster is about as
-/// deep as it is wide.
+/// Clusters across, down, and deep: tiles of 20 × 20 pixels at 1280 × 720;
+/// depth slices that grow with distance (each about 17 % deeper than the
+/// one before), so that every cluster has the same proportions near and
+/// far: about five times as deep as it is wide.
 pub const GRID: [u32; 3] = [64, 36, 48];
 pub const CLUSTERS: usize = (GRID[0] * GRID[1] * GRID[2]) as usize;
 

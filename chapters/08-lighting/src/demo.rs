@@ -7,8 +7,8 @@ use common::chapter::storage_entry;
 use common::glam::Vec3;
 use common::wgpu::util::DeviceExt as _;
 use common::{
-    Camera, Chapter, FlyController, Frame, Gpu, Input, ShaderError, Target, View, ViewRow, anyhow, egui, views_of,
-    wgpu, winit::keyboard::KeyCode,
+    Camera, Chapter, FlyController, Frame, Gpu, Input, Preparation, Reloadable, Target, View, ViewRow, anyhow, egui,
+    views_of, wgpu, winit::keyboard::KeyCode,
 };
 
 use crate::bloom::BloomSettings;
@@ -259,8 +259,8 @@ pub struct LightingChapter {
     materials: wgpu::Buffer,
     sky: CitySky,
     city_group: wgpu::BindGroup,
-    layout: wgpu::PipelineLayout,
-    pipelines: Pipelines,
+    /// Made again when city.wgsl or the lights' module is saved (hot reload).
+    pipelines: Reloadable<Pipelines>,
     /// The HDR picture, its bloom and its tone map.
     pub post: PostChain,
     target: Target,
@@ -290,7 +290,14 @@ impl Chapter for LightingChapter {
         common::GpuNeeds { required: wgpu::Features::empty(), optional: PostChain::OPTIONAL_FEATURES }
     }
 
-    fn new(gpu: &Gpu, target: Target) -> anyhow::Result<Self> {
+    /// Nothing takes long enough to prepare in steps.
+    type Prepared = ();
+
+    fn prepare(_gpu: &Gpu) -> Preparation<()> {
+        Preparation::ready(())
+    }
+
+    fn new(gpu: &Gpu, target: Target, (): ()) -> anyhow::Result<Self> {
         let device = &gpu.device;
         let city = City::new();
         let scene_lights = SceneLights::new(device);
@@ -313,7 +320,7 @@ impl Chapter for LightingChapter {
             bind_group_layouts: &[Some(&scene_lights.layout), Some(&city_layout)],
             immediate_size: 0,
         });
-        let pipelines = build_pipelines(gpu, &layout)?;
+        let pipelines = Reloadable::new(gpu, move |gpu| build_pipelines(gpu, &layout))?;
         let sky = CitySky::new(gpu, &scene_lights)?;
         let post = PostChain::new(gpu, target)?;
         Ok(Self {
@@ -330,7 +337,6 @@ impl Chapter for LightingChapter {
             materials,
             sky,
             city_group,
-            layout,
             pipelines,
             post,
             target,
@@ -420,10 +426,11 @@ impl Chapter for LightingChapter {
             );
             pass.set_bind_group(0, &self.scene_lights.group, &[]);
             pass.set_bind_group(1, &self.city_group, &[]);
+            let pipelines = self.pipelines.get();
             pass.set_pipeline(match s.shading {
-                Shading::Flat => &self.pipelines.flat,
-                Shading::Gouraud => &self.pipelines.gouraud,
-                Shading::Phong => &self.pipelines.phong,
+                Shading::Flat => &pipelines.flat,
+                Shading::Gouraud => &pipelines.gouraud,
+                Shading::Phong => &pipelines.phong,
             });
             self.meshes.draw(&mut pass, s.shading == Shading::Flat);
             self.sky.draw(&mut pass);
@@ -531,14 +538,6 @@ impl Chapter for LightingChapter {
             per_pixel.map_or("n/a".into(), |v| format!("{v:.2}")),
             self.post.bloom().format
         )
-    }
-
-    fn reload_shaders(&mut self, gpu: &Gpu) -> Result<(), ShaderError> {
-        let pipelines = build_pipelines(gpu, &self.layout)?;
-        self.sky.reload_shaders(gpu)?;
-        self.post.reload_shaders(gpu)?;
-        self.pipelines = pipelines;
-        Ok(())
     }
 }
 

@@ -57,7 +57,8 @@ pub enum LightKind {
 }
 
 /// `Light` in lights.wgsl: 64 bytes, the same for point and spot lights
-/// (a point light has a cone of cos = −1: everything).
+/// (a point light has cos_inner = −2 and cos_outer = −3, below any cosine,
+/// so that its cone lets everything through).
 #[repr(C)]
 #[derive(Clone, Copy, Debug, PartialEq, bytemuck::Pod, bytemuck::Zeroable)]
 pub struct GpuLight {

@@ -8,7 +8,7 @@
 //! Chapters 08 to 11 finish their frames with it.
 
 use common::chapter::{FILTERABLE, sampler_entry, texture_entry, uniform_entry};
-use common::{Frame, Gpu, ShaderError, Target, fullscreen, shader, wgpu};
+use common::{Frame, Gpu, Reloadable, ShaderError, Target, fullscreen, shader, wgpu};
 
 use crate::bloom::{Bloom, BloomSettings};
 
@@ -135,11 +135,6 @@ impl PostChain {
         let strength = bloom.map_or(0.0, |b| b.strength);
         self.tone_map.draw(gpu, frame, settings.exposure, strength, settings.output);
     }
-
-    pub fn reload_shaders(&mut self, gpu: &Gpu) -> Result<(), ShaderError> {
-        self.bloom.reload_shaders(gpu)?;
-        self.tone_map.reload_shaders(gpu)
-    }
 }
 // ANCHOR_END: post
 
@@ -160,12 +155,11 @@ struct CompositeUniform {
 /// show; output: the target it draws into. The last step of [`PostChain`].
 pub struct ToneMap {
     layout: wgpu::BindGroupLayout,
-    pipeline_layout: wgpu::PipelineLayout,
-    pipeline: wgpu::RenderPipeline,
+    /// Made again when tonemap.wgsl is saved (hot reload).
+    pipeline: Reloadable<wgpu::RenderPipeline>,
     uniform: wgpu::Buffer,
     sampler: wgpu::Sampler,
     group: wgpu::BindGroup,
-    format: wgpu::TextureFormat,
 }
 
 impl ToneMap {
@@ -191,7 +185,7 @@ impl ToneMap {
             bind_group_layouts: &[Some(&layout)],
             immediate_size: 0,
         });
-        let pipeline = Self::pipeline(gpu, &pipeline_layout, format)?;
+        let pipeline = Reloadable::new(gpu, move |gpu| Self::pipeline(gpu, &pipeline_layout, format))?;
         let uniform = device.create_buffer(&wgpu::BufferDescriptor {
             label: Some("composite"),
             size: std::mem::size_of::<CompositeUniform>() as u64,
@@ -205,7 +199,7 @@ impl ToneMap {
             ..Default::default()
         });
         let group = Self::group(device, &layout, &sampler, &uniform, hdr, bloom);
-        Ok(Self { layout, pipeline_layout, pipeline, uniform, sampler, group, format })
+        Ok(Self { layout, pipeline, uniform, sampler, group })
     }
 
     fn pipeline(
@@ -240,11 +234,6 @@ impl ToneMap {
         })
     }
 
-    pub fn reload_shaders(&mut self, gpu: &Gpu) -> Result<(), ShaderError> {
-        self.pipeline = Self::pipeline(gpu, &self.pipeline_layout, self.format)?;
-        Ok(())
-    }
-
     /// Points the tone map at new inputs (the pictures made again after a resize).
     pub fn set_inputs(&mut self, device: &wgpu::Device, hdr: &wgpu::TextureView, bloom: &wgpu::TextureView) {
         self.group = Self::group(device, &self.layout, &self.sampler, &self.uniform, hdr, bloom);
@@ -256,7 +245,7 @@ impl ToneMap {
         let uniform = CompositeUniform { exposure, bloom_strength, mode: output.shader_mode(), _padding: 0 };
         gpu.queue.write_buffer(&self.uniform, 0, bytemuck::bytes_of(&uniform));
         let mut pass = fullscreen::pass(frame.encoder, frame.timer, "tone map", frame.target, None);
-        pass.set_pipeline(&self.pipeline);
+        pass.set_pipeline(&self.pipeline.get());
         pass.set_bind_group(0, &self.group, &[]);
         pass.draw(0..3, 0..1);
     }

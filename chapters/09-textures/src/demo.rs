@@ -9,7 +9,7 @@ use std::sync::Arc;
 use common::args::UsageError;
 use common::glam::{Mat4, Quat, Vec3};
 use common::{
-    Camera, Chapter, ChapterFlag, FlagValues, FlyController, Frame, Gpu, Input, ShaderError, Target, View, ViewRow,
+    Camera, Chapter, ChapterFlag, FlagValues, FlyController, Frame, Gpu, Input, Preparation, Target, View, ViewRow,
     anyhow, egui, views_of, wgpu, winit::keyboard::KeyCode,
 };
 use lighting::bloom::BloomSettings;
@@ -230,12 +230,34 @@ pub struct Featured {
     pub model: GpuModel,
     pub placement: Mat4,
     pub triangles: usize,
+    pub vertices: usize,
     pub objects: usize,
+    /// Its materials: `model.first_material` onwards, this many.
+    pub materials: usize,
+    /// Whether its vertices carry colours.
+    pub vertex_colours: bool,
+    /// The model's own warnings (the chapter's `warnings` hold them too).
+    pub warnings: Vec<String>,
     /// Scale applied to fit the stage, and the load time and memory (for
     /// a learner's model).
     pub scale: f32,
     pub load_ms: Option<f64>,
     pub peak_memory: Option<u64>,
+}
+
+impl Featured {
+    /// The model's facts, as the overlay's model panel gives them.
+    pub fn facts(&self) -> String {
+        format!(
+            "model: {}: {} triangles, {} vertices, {} objects, scaled ×{:.3} to fit{}",
+            self.name,
+            self.triangles,
+            self.vertices,
+            self.objects,
+            self.scale,
+            if self.vertex_colours { "; it has vertex colours" } else { "" }
+        )
+    }
 }
 
 /// Everything drawable, on the GPU.
@@ -322,6 +344,55 @@ impl TexturesChapter {
         push(Which::Car, cars);
         (lights, draws)
     }
+
+    /// What the featured model is made of: counts, materials and where
+    /// their textures were found, and what loading it warned about.
+    fn model_panel(&self, ui: &mut egui::Ui) {
+        let f = &self.featured;
+        ui.label(f.facts());
+        let first = f.model.first_material;
+        let materials = self.materials.list.get(first..first + f.materials).unwrap_or_default();
+        egui::CollapsingHeader::new(format!("its {} materials and their textures", materials.len()))
+            .id_salt("model materials")
+            .show(ui, |ui| {
+                for material in materials {
+                    let d = &material.desc;
+                    ui.label(format!(
+                        "{}: colour {:.2} {:.2} {:.2}{}",
+                        d.name,
+                        d.diffuse.x,
+                        d.diffuse.y,
+                        d.diffuse.z,
+                        if material.maps.is_empty() { ", no textures" } else { "" }
+                    ));
+                    for (what, source) in &material.maps {
+                        ui.small(format!("    {what}: {source}"));
+                    }
+                }
+                for warning in &f.warnings {
+                    ui.colored_label(egui::Color32::from_rgb(230, 180, 60), warning);
+                }
+            });
+    }
+}
+
+/// Refuses a model whose buffers this GPU cannot hold, before trying to
+/// make them (which would end the program).
+fn check_fits(gpu: &Gpu, path: &Path, model: &ModelData) -> Result<(), UsageError> {
+    let limit = gpu.device.limits().max_buffer_size;
+    let vertex_bytes = (model.vertices.len() * std::mem::size_of::<crate::mesh::TexturedVertex>()) as u64;
+    let index_bytes = (model.indices.len() * 4) as u64;
+    if vertex_bytes.max(index_bytes) > limit {
+        return Err(UsageError(format!(
+            "--model: {}: {} vertices and {} triangles need {} MiB, more than the {} MiB this GPU allows in one buffer",
+            path.display(),
+            model.vertices.len(),
+            model.triangle_count(),
+            vertex_bytes.max(index_bytes) >> 20,
+            limit >> 20
+        )));
+    }
+    Ok(())
 }
 
 /// Which model a draw uses.
@@ -363,7 +434,14 @@ impl Chapter for TexturesChapter {
         common::GpuNeeds { required: wgpu::Features::empty(), optional: PostChain::OPTIONAL_FEATURES }
     }
 
-    fn new(gpu: &Gpu, target: Target) -> anyhow::Result<Self> {
+    /// Nothing takes long enough to prepare in steps.
+    type Prepared = ();
+
+    fn prepare(_gpu: &Gpu) -> Preparation<()> {
+        Preparation::ready(())
+    }
+
+    fn new(gpu: &Gpu, target: Target, (): ()) -> anyhow::Result<Self> {
         let device = &gpu.device;
         let builtin: Arc<anyhow::Result<BuiltinModels>> = gpu.cached((), BuiltinModels::load);
         let builtin = match builtin.as_ref() {
@@ -412,7 +490,11 @@ impl Chapter for TexturesChapter {
             model: GpuModel::upload(device, &builtin.car.model, models.car.first_material, "featured"),
             placement,
             triangles: builtin.car.model.triangle_count(),
+            vertices: builtin.car.model.vertices.len(),
             objects: builtin.car.objects,
+            materials: builtin.car.model.materials.len(),
+            vertex_colours: builtin.car.vertex_colours,
+            warnings: builtin.car.warnings.clone(),
             scale,
             load_ms: None,
             peak_memory: None,
@@ -452,6 +534,7 @@ impl Chapter for TexturesChapter {
         let read: ReadFile = &|p: &Path| common::files::read(p);
         let (loaded, load_ms) = common::timing::measure(|| obj::load(&path, read));
         let loaded = loaded.map_err(|e| UsageError(format!("--model: {e}")))?;
+        check_fits(gpu, &path, &loaded.model)?;
         let mut up = Uploader::new(gpu, &mut self.mips, read);
         let model = upload_model(&mut up, &mut self.materials, &loaded.model, "model");
         up.finish();
@@ -461,13 +544,17 @@ impl Chapter for TexturesChapter {
         for warning in &warnings {
             eprintln!("warning: {warning}");
         }
-        self.warnings.extend(warnings);
+        self.warnings.extend(warnings.iter().cloned());
         self.featured = Featured {
             name: path.display().to_string(),
             model,
             placement,
             triangles: loaded.model.triangle_count(),
+            vertices: loaded.model.vertices.len(),
             objects: loaded.objects,
+            materials: loaded.model.materials.len(),
+            vertex_colours: loaded.vertex_colours,
+            warnings,
             scale,
             load_ms: Some(load_ms),
             peak_memory: common::memory::peak_process_bytes(),
@@ -630,12 +717,9 @@ impl Chapter for TexturesChapter {
         ui.checkbox(&mut s.show_frame, "show the tangent frame (T | B | N)");
         ui.checkbox(&mut s.bloom, "bloom");
         ui.add(egui::Slider::new(&mut s.exposure, 0.1..=4.0).logarithmic(true).text("exposure"));
-        let f = &self.featured;
-        ui.label(format!(
-            "model: {}: {} triangles, {} objects, scaled ×{:.3} to fit",
-            f.name, f.triangles, f.objects, f.scale
-        ));
-        for warning in &self.warnings {
+        self.model_panel(ui);
+        // The model's own warnings are in its panel.
+        for warning in self.warnings.iter().filter(|w| !self.featured.warnings.contains(w)) {
             ui.colored_label(egui::Color32::from_rgb(230, 180, 60), warning);
         }
     }
@@ -656,12 +740,5 @@ impl Chapter for TexturesChapter {
             self.last_lights,
             if self.renderer.anisotropy { "available" } else { "not available" },
         )
-    }
-
-    fn reload_shaders(&mut self, gpu: &Gpu) -> Result<(), ShaderError> {
-        self.renderer.reload_shaders(gpu)?;
-        self.sky.reload_shaders(gpu)?;
-        self.post.reload_shaders(gpu)?;
-        Ok(())
     }
 }

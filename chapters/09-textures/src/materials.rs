@@ -15,7 +15,7 @@ use common::{Gpu, texture::ColorSpace, wgpu};
 
 use crate::mesh::MaterialDesc;
 use crate::mipmaps::{Averaging, MipMaker, level_count};
-use crate::obj::ReadFile;
+use crate::obj::{self, Found, ReadFile};
 
 // ANCHOR: samplers
 /// The ways of reading a texture this chapter compares.
@@ -170,23 +170,49 @@ struct MaterialUniform {
     emissive: [f32; 3],
     shininess: f32,
     /// x: has a normal map, y: has an albedo map (its alpha masks the
-    /// emissive light), z: emits only at night, w: unused.
+    /// emissive light), z: emits only at night, w: vertex colours multiply
+    /// the diffuse colour.
     flags: [u32; 4],
 }
 
 /// One material's bind groups: as it should be, and with its textures read
-/// in the wrong colour spaces.
+/// in the wrong colour spaces; and where its maps came from.
 pub struct GpuMaterial {
     pub desc: MaterialDesc,
     pub group: wgpu::BindGroup,
     pub swapped_group: wgpu::BindGroup,
+    /// "albedo" or "normal map", and where it was found.
+    pub maps: Vec<(&'static str, TextureSource)>,
+}
+
+/// Where a material's map came from, for the model panel.
+#[derive(Clone, Debug, PartialEq)]
+pub enum TextureSource {
+    /// The file the MTL names.
+    AsWritten(PathBuf),
+    /// Not where the MTL says: a file of the same name in another folder.
+    Elsewhere { written: PathBuf, found: PathBuf },
+    /// Shown as a checker: why, in a line.
+    Missing(String),
+}
+
+impl std::fmt::Display for TextureSource {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        match self {
+            Self::AsWritten(path) => write!(f, "{}", path.display()),
+            Self::Elsewhere { written, found } => {
+                write!(f, "{} (the MTL says {})", found.display(), written.display())
+            }
+            Self::Missing(why) => write!(f, "a checker: {why}"),
+        }
+    }
 }
 
 /// Every material of every model, and the textures they share.
 pub struct Materials {
     pub layout: wgpu::BindGroupLayout,
     pub list: Vec<GpuMaterial>,
-    textures: HashMap<(PathBuf, bool), Rc<GpuTexture>>,
+    textures: HashMap<(PathBuf, bool), (Rc<GpuTexture>, TextureSource)>,
     white: Rc<GpuTexture>,
     flat_normal: Rc<GpuTexture>,
     missing: Rc<GpuTexture>,
@@ -228,42 +254,86 @@ impl Materials {
     pub fn insert_image(&mut self, up: &mut Uploader, name: &Path, image: &RgbaImage) {
         self.texels += u64::from(image.width()) * u64::from(image.height());
         let texture = upload(up, image, ColorSpace::Srgb, &name.display().to_string());
-        self.textures.insert((name.to_path_buf(), true), Rc::new(texture));
+        let source = TextureSource::AsWritten(name.to_path_buf());
+        self.textures.insert((name.to_path_buf(), true), (Rc::new(texture), source));
     }
 
     /// The texture at `path`, read and uploaded once however many materials
-    /// use it; a checker, with a warning naming the file, if it cannot be
-    /// read or decoded.
-    fn texture(&mut self, up: &mut Uploader, path: &Path, colour: bool, material: &str) -> Rc<GpuTexture> {
+    /// use it. Where `path` does not lead to a file, one of the same name
+    /// is looked for in `folders` (see [`obj::find_file`]). A checker, with
+    /// a warning naming the file, if none can be read or decoded.
+    fn texture(
+        &mut self,
+        up: &mut Uploader,
+        path: &Path,
+        colour: bool,
+        desc: &MaterialDesc,
+    ) -> (Rc<GpuTexture>, TextureSource) {
         if let Some(texture) = self.textures.get(&(path.to_path_buf(), colour)) {
             return texture.clone();
         }
-        let decoded = (up.read)(path).map_err(|e| e.to_string()).and_then(|bytes| {
-            common::texture::decode_named(&path.display().to_string(), &bytes).map_err(|e| format!("{e:#}"))
+        let folders: Vec<&Path> = desc.texture_folders.iter().map(PathBuf::as_path).collect();
+        let material = &desc.name;
+        let (bytes, source) = match obj::find_file(path, Path::new(""), &folders, up.read) {
+            Found::AsWritten(found, bytes) => (Ok(bytes), TextureSource::AsWritten(found)),
+            Found::Elsewhere { written, path: found, bytes } => {
+                self.warnings.push(format!(
+                    "material {material}: {} not found; using {}, of the same name",
+                    written.display(),
+                    found.display()
+                ));
+                (Ok(bytes), TextureSource::Elsewhere { written, found })
+            }
+            Found::Nowhere { error, tried } => {
+                let why = format!("{error}{}", obj::also_tried(&tried[1..]));
+                (Err(why.clone()), TextureSource::Missing(why))
+            }
+        };
+        let max = up.gpu.device.limits().max_texture_dimension_2d;
+        let decoded = bytes.and_then(|bytes| {
+            let name = path.display().to_string();
+            let image = common::texture::decode_named(&name, &bytes).map_err(|e| format!("{e:#}"))?;
+            if image.width() > max || image.height() > max {
+                return Err(format!(
+                    "{name} is {}×{}, more than this GPU's {max} texels a side",
+                    image.width(),
+                    image.height()
+                ));
+            }
+            Ok(image)
         });
-        let texture = match decoded {
+        let entry = match decoded {
             Ok(image) => {
                 self.texels += u64::from(image.width()) * u64::from(image.height());
                 let space = if colour { ColorSpace::Srgb } else { ColorSpace::Linear };
-                Rc::new(upload(up, &image, space, &path.display().to_string()))
+                (Rc::new(upload(up, &image, space, &path.display().to_string())), source)
             }
             Err(reason) => {
                 self.warnings.push(format!("material {material}: {reason}; showing a checker instead"));
-                self.missing.clone()
+                (self.missing.clone(), TextureSource::Missing(reason))
             }
         };
-        self.textures.insert((path.to_path_buf(), colour), texture.clone());
-        texture
+        self.textures.insert((path.to_path_buf(), colour), entry.clone());
+        entry
     }
 
     /// Adds a material and returns its index.
     pub fn add(&mut self, up: &mut Uploader, desc: &MaterialDesc) -> usize {
+        let mut maps = Vec::new();
         let albedo = match &desc.albedo_map {
-            Some(path) => self.texture(up, path, true, &desc.name),
+            Some(path) => {
+                let (texture, source) = self.texture(up, path, true, desc);
+                maps.push(("albedo", source));
+                texture
+            }
             None => self.white.clone(),
         };
         let normal = match &desc.normal_map {
-            Some(path) => self.texture(up, path, false, &desc.name),
+            Some(path) => {
+                let (texture, source) = self.texture(up, path, false, desc);
+                maps.push(("normal map", source));
+                texture
+            }
             None => self.flat_normal.clone(),
         };
         let uniform = MaterialUniform {
@@ -275,7 +345,7 @@ impl Materials {
                 u32::from(desc.normal_map.is_some()),
                 u32::from(desc.albedo_map.is_some()),
                 u32::from(desc.at_night),
-                0,
+                u32::from(desc.vertex_colours),
             ],
         };
         let gpu = up.gpu;
@@ -299,6 +369,7 @@ impl Materials {
             desc: desc.clone(),
             group: group(&albedo.view, &normal.view),
             swapped_group: group(&albedo.swapped_view, &normal.swapped_view),
+            maps,
         };
         self.list.push(material);
         self.list.len() - 1

@@ -13,7 +13,9 @@ use crate::tangents::{face_tangents, vertex_tangents};
 
 // ANCHOR: vertex
 /// A point on a textured surface: chapter 02's vertex plus a tangent
-/// (xyz, at right angles to the normal) and its handedness (w = ±1). 48 bytes.
+/// (xyz, at right angles to the normal) and its handedness (w = ±1), and
+/// a colour of its own (linear RGB, white unless an OBJ gives one), which
+/// multiplies the material's where the material says so. 60 bytes.
 #[repr(C)]
 #[derive(Clone, Copy, Debug, PartialEq, bytemuck::Pod, bytemuck::Zeroable)]
 pub struct TexturedVertex {
@@ -21,12 +23,15 @@ pub struct TexturedVertex {
     pub normal: [f32; 3],
     pub uv: [f32; 2],
     pub tangent: [f32; 4],
+    pub colour: [f32; 3],
 }
 // ANCHOR_END: vertex
 
 impl TexturedVertex {
-    const ATTRIBUTES: [wgpu::VertexAttribute; 4] =
-        wgpu::vertex_attr_array![0 => Float32x3, 1 => Float32x3, 2 => Float32x2, 3 => Float32x4];
+    // The colour comes after the instance's locations (4 to 11).
+    const ATTRIBUTES: [wgpu::VertexAttribute; 5] = wgpu::vertex_attr_array![
+        0 => Float32x3, 1 => Float32x3, 2 => Float32x2, 3 => Float32x4, 12 => Float32x3
+    ];
 
     pub const LAYOUT: wgpu::VertexBufferLayout<'static> = wgpu::VertexBufferLayout {
         array_stride: std::mem::size_of::<TexturedVertex>() as wgpu::BufferAddress,
@@ -49,10 +54,15 @@ pub struct MaterialDesc {
     pub emissive: Vec3,
     /// Whether the emissive light comes on only at night (lamps, windows).
     pub at_night: bool,
+    /// Whether the vertices' colours multiply `diffuse` (OBJ's `v x y z r g b`).
+    pub vertex_colours: bool,
     /// map_Kd, decoded as sRGB.
     pub albedo_map: Option<PathBuf>,
     /// map_Bump, bump or norm: a tangent-space normal map, read as data.
     pub normal_map: Option<PathBuf>,
+    /// Where else to look for a map by its file name alone, in order, when
+    /// its path does not lead to it (a file made on another machine).
+    pub texture_folders: Vec<PathBuf>,
 }
 
 impl MaterialDesc {
@@ -65,8 +75,10 @@ impl MaterialDesc {
             shininess,
             emissive: Vec3::ZERO,
             at_night: false,
+            vertex_colours: false,
             albedo_map: None,
             normal_map: None,
+            texture_folders: Vec::new(),
         }
     }
 }
@@ -104,6 +116,19 @@ impl ModelData {
     /// may rescale the texture coordinates. Tangents are computed after
     /// placing, from the final positions and texture coordinates.
     pub fn append(&mut self, mesh: &MeshData, material: usize, transform: Mat4, uv_of: impl Fn(Vec2, usize) -> Vec2) {
+        self.append_coloured(mesh, None, material, transform, uv_of);
+    }
+
+    /// [`append`](Self::append), with a colour for each vertex of `mesh`
+    /// (white without).
+    pub fn append_coloured(
+        &mut self,
+        mesh: &MeshData,
+        colours: Option<&[Vec3]>,
+        material: usize,
+        transform: Mat4,
+        uv_of: impl Fn(Vec2, usize) -> Vec2,
+    ) {
         let normal_matrix = Mat3::from_mat4(transform).inverse().transpose();
         let positions: Vec<Vec3> =
             mesh.vertices.iter().map(|v| transform.transform_point3(v.position.into())).collect();
@@ -117,6 +142,7 @@ impl ModelData {
             normal: normals[i].into(),
             uv: uvs[i].into(),
             tangent: tangents[i].into(),
+            colour: colours.map_or([1.0; 3], |c| c[i].into()),
         }));
         let start = self.indices.len() as u32;
         self.indices.extend(mesh.indices.iter().map(|i| i + base));
@@ -228,7 +254,8 @@ impl GpuModel {
             device.create_buffer_init(&wgpu::util::BufferInitDescriptor { label: Some(label), contents, usage })
         };
         // An empty buffer cannot be bound; keep one zero vertex and index.
-        let vertices: &[u8] = if model.vertices.is_empty() { &[0; 48] } else { bytemuck::cast_slice(&model.vertices) };
+        let zero = [0; std::mem::size_of::<TexturedVertex>()];
+        let vertices: &[u8] = if model.vertices.is_empty() { &zero } else { bytemuck::cast_slice(&model.vertices) };
         let indices: &[u8] = if model.indices.is_empty() { &[0; 4] } else { bytemuck::cast_slice(&model.indices) };
         Self {
             vertices: buffer(vertices, wgpu::BufferUsages::VERTEX | wgpu::BufferUsages::COPY_DST),

@@ -6,9 +6,10 @@
 //! happens in linear light, as it must.
 
 use std::collections::HashMap;
+use std::sync::{Arc, Mutex};
 
 use common::chapter::{FILTERABLE, sampler_entry, texture_entry};
-use common::{Gpu, ShaderError, fullscreen, shader, wgpu};
+use common::{Gpu, Reloadable, ShaderError, fullscreen, shader, wgpu};
 
 /// Levels in a full chain for a `width × height` texture, down to 1 × 1.
 pub fn level_count(width: u32, height: u32) -> u32 {
@@ -28,17 +29,50 @@ pub enum Averaging {
 /// Builds the mip chains of textures: one small pipeline per format and
 /// kind of averaging, made when first needed.
 pub struct MipMaker {
-    module: wgpu::ShaderModule,
     layout: wgpu::BindGroupLayout,
-    pipeline_layout: wgpu::PipelineLayout,
     sampler: wgpu::Sampler,
-    pipelines: HashMap<(wgpu::TextureFormat, Averaging), wgpu::RenderPipeline>,
+    /// Made again, with none of its pipelines yet, when mipmap.wgsl is
+    /// saved (hot reload).
+    pipelines: Reloadable<Arc<MipPipelines>>,
+}
+
+/// mipmap.wgsl's module and the pipelines made from it so far.
+struct MipPipelines {
+    module: wgpu::ShaderModule,
+    layout: wgpu::PipelineLayout,
+    made: Mutex<HashMap<(wgpu::TextureFormat, Averaging), wgpu::RenderPipeline>>,
+}
+
+impl MipPipelines {
+    fn new(gpu: &Gpu, layout: &wgpu::PipelineLayout) -> Result<Arc<Self>, ShaderError> {
+        let module = shader!("textures/mipmap.wgsl", imports: ["common/fullscreen.wgsl"]).module(gpu)?;
+        let pipelines = Self { module, layout: layout.clone(), made: Mutex::default() };
+        // The two that textures in sRGB and normal maps need, made now: an
+        // edit that breaks them is an error here, not a panic later.
+        gpu.catch_validation(|| {
+            pipelines.get(&gpu.device, wgpu::TextureFormat::Rgba8UnormSrgb, Averaging::Colour);
+            pipelines.get(&gpu.device, wgpu::TextureFormat::Rgba8Unorm, Averaging::Normals);
+        })
+        .map_err(ShaderError)?;
+        Ok(Arc::new(pipelines))
+    }
+
+    fn get(&self, device: &wgpu::Device, format: wgpu::TextureFormat, averaging: Averaging) -> wgpu::RenderPipeline {
+        let mut made = self.made.lock().unwrap_or_else(|e| e.into_inner());
+        let pipeline = made.entry((format, averaging)).or_insert_with(|| {
+            let entry = match averaging {
+                Averaging::Colour => "fs_colour",
+                Averaging::Normals => "fs_normal",
+            };
+            fullscreen::pipeline(device, "mip level", &self.layout, &self.module, entry, format.into(), None)
+        });
+        pipeline.clone()
+    }
 }
 
 impl MipMaker {
     pub fn new(gpu: &Gpu) -> Result<Self, ShaderError> {
         let device = &gpu.device;
-        let module = shader!("textures/mipmap.wgsl", imports: ["common/fullscreen.wgsl"]).module(gpu)?;
         let layout = device.create_bind_group_layout(&wgpu::BindGroupLayoutDescriptor {
             label: Some("mip level above"),
             entries: &[texture_entry(0, FILTERABLE), sampler_entry(1)],
@@ -54,26 +88,20 @@ impl MipMaker {
             min_filter: wgpu::FilterMode::Linear,
             ..Default::default()
         });
-        Ok(Self { module, layout, pipeline_layout, sampler, pipelines: HashMap::new() })
+        let pipelines = Reloadable::new(gpu, move |gpu| MipPipelines::new(gpu, &pipeline_layout))?;
+        Ok(Self { layout, sampler, pipelines })
     }
 
     /// Records the passes that fill levels 1.. of `texture` from level 0.
     /// The texture needs `RENDER_ATTACHMENT` and `TEXTURE_BINDING` usage.
     pub fn generate(
-        &mut self,
+        &self,
         device: &wgpu::Device,
         encoder: &mut wgpu::CommandEncoder,
         texture: &wgpu::Texture,
         averaging: Averaging,
     ) {
-        let format = texture.format();
-        let pipeline = self.pipelines.entry((format, averaging)).or_insert_with(|| {
-            let entry = match averaging {
-                Averaging::Colour => "fs_colour",
-                Averaging::Normals => "fs_normal",
-            };
-            fullscreen::pipeline(device, "mip level", &self.pipeline_layout, &self.module, entry, format.into(), None)
-        });
+        let pipeline = self.pipelines.get().get(device, texture.format(), averaging);
         let level_view = |level| {
             texture.create_view(&wgpu::TextureViewDescriptor {
                 base_mip_level: level,
@@ -105,7 +133,7 @@ impl MipMaker {
                 })],
                 ..Default::default()
             });
-            pass.set_pipeline(pipeline);
+            pass.set_pipeline(&pipeline);
             pass.set_bind_group(0, &group, &[]);
             pass.draw(0..3, 0..1);
         }

@@ -88,8 +88,10 @@ pub fn city_materials() -> Vec<MaterialDesc> {
                     // Facades: the albedo's alpha marks the lit windows.
                     emissive: if m == Material::Facade { Vec3::new(1.5, 1.1, 0.65) } else { Vec3::ZERO },
                     at_night: s.at_night,
+                    vertex_colours: false,
                     albedo_map: Some(texture(texture_name, "albedo")),
                     normal_map: Some(texture(texture_name, "normal")),
+                    texture_folders: Vec::new(),
                 },
                 None => MaterialDesc {
                     emissive: s.emissive,

@@ -5,7 +5,7 @@
 //! [`upload_model`], which puts a model and its materials on the GPU.
 
 use common::chapter::{mesh_pipeline, sampler_entry, storage_entry};
-use common::{Gpu, ShaderError, shader, wgpu};
+use common::{Gpu, Reloadable, ShaderError, shader, wgpu};
 use lighting::{HDR_FORMAT, SceneLights};
 
 use crate::demo::Settings;
@@ -27,10 +27,10 @@ struct ViewOptions {
 /// Draws textured models lit by chapter 08's lights: one pipeline, group 0
 /// the [`SceneLights`], group 1 a material, group 2 the sampler and view
 /// options. A piece with explicit inputs: the models, their instances and
-/// the materials; chapter 11 draws its boat with it.
+/// the materials. Only this chapter draws with it: 10 and 11 use chapter 10's `ShadowedRenderer`.
 pub struct TexturedRenderer {
-    pipeline_layout: wgpu::PipelineLayout,
-    pipelines: Pipelines,
+    /// Made again when textured.wgsl or a module it imports is saved (hot reload).
+    pipelines: Reloadable<Pipelines>,
     options: wgpu::Buffer,
     /// One group per sampler mode, in `SamplerMode::ALL`'s order.
     sampler_groups: Vec<wgpu::BindGroup>,
@@ -40,6 +40,7 @@ pub struct TexturedRenderer {
 
 /// The fragment shaders: with normal maps, without (no normal map read at
 /// all, so the bench sees what they cost), and the tangent frame view.
+#[derive(Clone)]
 struct Pipelines {
     normal_mapped: wgpu::RenderPipeline,
     plain: wgpu::RenderPipeline,
@@ -121,8 +122,8 @@ impl TexturedRenderer {
             bind_group_layouts: &[Some(&lights.layout), Some(&materials.layout), Some(&layout)],
             immediate_size: 0,
         });
-        let pipelines = Self::pipelines(gpu, &pipeline_layout)?;
-        Ok(Self { pipeline_layout, pipelines, options, sampler_groups, anisotropy })
+        let pipelines = Reloadable::new(gpu, move |gpu| Self::pipelines(gpu, &pipeline_layout))?;
+        Ok(Self { pipelines, options, sampler_groups, anisotropy })
     }
 
     fn pipelines(gpu: &Gpu, layout: &wgpu::PipelineLayout) -> Result<Pipelines, ShaderError> {
@@ -137,11 +138,6 @@ impl TexturedRenderer {
             frame: pipeline("fs_frame"),
         })
         .map_err(ShaderError)
-    }
-
-    pub fn reload_shaders(&mut self, gpu: &Gpu) -> Result<(), ShaderError> {
-        self.pipelines = Self::pipelines(gpu, &self.pipeline_layout)?;
-        Ok(())
     }
 
     // ANCHOR: draw
@@ -162,10 +158,11 @@ impl TexturedRenderer {
         };
         gpu.queue.write_buffer(&self.options, 0, bytemuck::bytes_of(&options));
         let mode = SamplerMode::ALL.iter().position(|m| *m == settings.sampler).unwrap_or(0);
+        let pipelines = self.pipelines.get();
         pass.set_pipeline(match (settings.show_frame, settings.normal_maps) {
-            (true, _) => &self.pipelines.frame,
-            (false, true) => &self.pipelines.normal_mapped,
-            (false, false) => &self.pipelines.plain,
+            (true, _) => &pipelines.frame,
+            (false, true) => &pipelines.normal_mapped,
+            (false, false) => &pipelines.plain,
         });
         pass.set_bind_group(2, &self.sampler_groups[mode], &[]);
         list.draw(pass, settings.swapped_colour_spaces);

@@ -8,7 +8,7 @@ use std::path::Path;
 use common::args::UsageError;
 use common::glam::{Mat4, Vec2, Vec3, Vec4};
 use common::{
-    Camera, Chapter, ChapterFlag, FlagValues, Frame, Gpu, Input, ShaderError, Target, View, ViewRow, anyhow, egui,
+    Camera, Chapter, ChapterFlag, FlagValues, Frame, Gpu, Input, Preparation, Target, View, ViewRow, anyhow, egui,
     views_of, wgpu, winit::keyboard::KeyCode,
 };
 use lighting::bloom::BloomSettings;
@@ -341,7 +341,14 @@ impl Chapter for ShadowsChapter {
         common::GpuNeeds { required: wgpu::Features::empty(), optional: PostChain::OPTIONAL_FEATURES }
     }
 
-    fn new(gpu: &Gpu, target: Target) -> anyhow::Result<Self> {
+    /// Nothing takes long enough to prepare in steps.
+    type Prepared = ();
+
+    fn prepare(_gpu: &Gpu) -> Preparation<()> {
+        Preparation::ready(())
+    }
+
+    fn new(gpu: &Gpu, target: Target, (): ()) -> anyhow::Result<Self> {
         let device = &gpu.device;
         let level = game::level();
         let read: obj::ReadFile = &scene::read;
@@ -611,16 +618,5 @@ impl Chapter for ShadowsChapter {
             self.shadow_map.size,
             self.settings.shadow.filter.label()
         )
-    }
-
-    fn reload_shaders(&mut self, gpu: &Gpu) -> Result<(), ShaderError> {
-        self.renderer.reload_shaders(gpu)?;
-        self.shadow_map.reload_shaders(gpu)?;
-        self.map_view.reload_shaders(gpu)?;
-        self.parallax.reload_shaders(gpu)?;
-        self.lines.reload_shaders(gpu)?;
-        self.sky.reload_shaders(gpu)?;
-        self.post.reload_shaders(gpu)?;
-        Ok(())
     }
 }

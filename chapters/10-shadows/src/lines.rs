@@ -3,7 +3,7 @@
 
 use common::chapter::uniform_entry;
 use common::glam::{Mat4, Vec3, Vec4};
-use common::{Gpu, ShaderError, shader, wgpu};
+use common::{Gpu, Reloadable, ShaderError, shader, wgpu};
 
 /// A corner of a line.
 #[repr(C)]
@@ -46,9 +46,8 @@ impl LineList {
 
 /// Draws a [`LineList`] into a target of the given format.
 pub struct Lines {
-    format: wgpu::TextureFormat,
-    pipeline_layout: wgpu::PipelineLayout,
-    pipeline: wgpu::RenderPipeline,
+    /// Made again when lines.wgsl is saved (hot reload).
+    pipeline: Reloadable<wgpu::RenderPipeline>,
     uniform: wgpu::Buffer,
     group: wgpu::BindGroup,
     vertices: wgpu::Buffer,
@@ -77,9 +76,9 @@ impl Lines {
             bind_group_layouts: &[Some(&layout)],
             immediate_size: 0,
         });
-        let pipeline = Self::pipeline(gpu, &pipeline_layout, format)?;
+        let pipeline = Reloadable::new(gpu, move |gpu| Self::pipeline(gpu, &pipeline_layout, format))?;
         let vertices = Self::buffer(device, 256);
-        Ok(Self { format, pipeline_layout, pipeline, uniform, group, vertices })
+        Ok(Self { pipeline, uniform, group, vertices })
     }
 
     fn buffer(device: &wgpu::Device, count: u64) -> wgpu::Buffer {
@@ -131,11 +130,6 @@ impl Lines {
         .map_err(ShaderError)
     }
 
-    pub fn reload_shaders(&mut self, gpu: &Gpu) -> Result<(), ShaderError> {
-        self.pipeline = Self::pipeline(gpu, &self.pipeline_layout, self.format)?;
-        Ok(())
-    }
-
     /// Draws `list` over `target`, seen through `view_proj`.
     pub fn draw(
         &mut self,
@@ -156,7 +150,7 @@ impl Lines {
         gpu.queue.write_buffer(&self.uniform, 0, bytemuck::bytes_of(&view_proj.to_cols_array_2d()));
         gpu.queue.write_buffer(&self.vertices, 0, bytemuck::cast_slice(&list.0));
         let mut pass = common::fullscreen::pass(encoder, timer, "lines", target, None);
-        pass.set_pipeline(&self.pipeline);
+        pass.set_pipeline(&self.pipeline.get());
         pass.set_bind_group(0, &self.group, &[]);
         pass.set_vertex_buffer(0, self.vertices.slice(..));
         pass.draw(0..list.0.len() as u32, 0..1);

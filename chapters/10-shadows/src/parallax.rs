@@ -9,7 +9,7 @@ use std::path::Path;
 use common::chapter::{FILTERABLE, sampler_entry, texture_entry, uniform_entry};
 use common::glam::Vec3;
 use common::texture::ColorSpace;
-use common::{Gpu, ShaderError, anyhow, shader, wgpu};
+use common::{Gpu, Reloadable, ShaderError, anyhow, shader, wgpu};
 use lighting::{HDR_FORMAT, SceneLights};
 use textures::materials::{Uploader, upload};
 
@@ -60,8 +60,8 @@ struct LayersUniform {
 /// planes must be), the scene's lights (for the camera and the light
 /// they are tinted by), the sky's horizon colour.
 pub struct Parallax {
-    pipeline_layout: wgpu::PipelineLayout,
-    pipeline: wgpu::RenderPipeline,
+    /// Made again when layers.wgsl or the lights' module is saved (hot reload).
+    pipeline: Reloadable<wgpu::RenderPipeline>,
     groups: Vec<wgpu::BindGroup>,
     uniform: wgpu::Buffer,
     vertices: wgpu::Buffer,
@@ -123,8 +123,8 @@ impl Parallax {
             bind_group_layouts: &[Some(&lights.layout), Some(&layout)],
             immediate_size: 0,
         });
-        let pipeline = Self::pipeline(gpu, &pipeline_layout)?;
-        Ok(Self { pipeline_layout, pipeline, groups, uniform, vertices })
+        let pipeline = Reloadable::new(gpu, move |gpu| Self::pipeline(gpu, &pipeline_layout))?;
+        Ok(Self { pipeline, groups, uniform, vertices })
     }
 
     // ANCHOR: planes
@@ -176,11 +176,6 @@ impl Parallax {
         .map_err(ShaderError)
     }
 
-    pub fn reload_shaders(&mut self, gpu: &Gpu) -> Result<(), ShaderError> {
-        self.pipeline = Self::pipeline(gpu, &self.pipeline_layout)?;
-        Ok(())
-    }
-
     /// Draws the layers; group 0 of `pass` must be the scene's lights.
     pub fn draw(&self, gpu: &Gpu, pass: &mut wgpu::RenderPass<'_>, horizon: Vec3, tint_by_depth: bool) {
         let uniform = LayersUniform {
@@ -190,7 +185,7 @@ impl Parallax {
             _padding: [0.0; 4],
         };
         gpu.queue.write_buffer(&self.uniform, 0, bytemuck::bytes_of(&uniform));
-        pass.set_pipeline(&self.pipeline);
+        pass.set_pipeline(&self.pipeline.get());
         pass.set_vertex_buffer(0, self.vertices.slice(..));
         for (index, group) in self.groups.iter().enumerate() {
             pass.set_bind_group(1, group, &[]);

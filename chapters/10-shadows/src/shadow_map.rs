@@ -6,7 +6,7 @@
 
 use common::chapter::{storage_entry, texture_entry, uniform_entry};
 use common::glam::{Mat4, Vec3};
-use common::{Gpu, PassTimer, ShaderError, shader, wgpu};
+use common::{Gpu, PassTimer, Reloadable, ShaderError, shader, wgpu};
 use textures::DrawList;
 use textures::mesh::{ModelInstance, TexturedVertex};
 
@@ -225,9 +225,17 @@ pub struct ShadowMap {
     pub group: wgpu::BindGroup,
     caster_layout: wgpu::PipelineLayout,
     caster_group: wgpu::BindGroup,
-    /// The shadow pass's pipeline, for the bias and culling it was made with.
-    caster: Option<(Bias, Cull, wgpu::RenderPipeline)>,
-    module: wgpu::ShaderModule,
+    /// The shadow pass's pipeline, with the bias and culling it was made
+    /// with: made again when they change (the old one is dropped) and when
+    /// caster.wgsl is saved (hot reload).
+    caster: (Bias, Cull, Reloadable<wgpu::RenderPipeline>),
+}
+
+/// What the shadow pass's pipeline is made for: the depth bias and the
+/// culling. The normal offset is the lookups' business: changing it makes
+/// no new pipeline.
+fn caster_key(settings: &ShadowSettings) -> (Bias, Cull) {
+    (Bias { normal_offset: 0.0, ..settings.bias }, settings.cull)
 }
 
 /// A comparison sampler read by fragment shaders.
@@ -298,7 +306,8 @@ impl ShadowMap {
             bind_group_layouts: &[Some(&caster_group_layout)],
             immediate_size: 0,
         });
-        let module = Self::module(gpu)?;
+        let (bias, cull) = caster_key(&ShadowSettings::DEFAULT);
+        let caster = (bias, cull, Self::caster(gpu, &caster_layout, bias, cull)?);
         let view = Self::texture(device, size);
         let group = Self::group(device, &layout, &view, [&compare_nearest, &compare_linear], &uniform);
         Ok(Self {
@@ -312,13 +321,8 @@ impl ShadowMap {
             group,
             caster_layout,
             caster_group,
-            caster: None,
-            module,
+            caster,
         })
-    }
-
-    fn module(gpu: &Gpu) -> Result<wgpu::ShaderModule, ShaderError> {
-        shader!("shadows/caster.wgsl", imports: ["textures/surface.wgsl"]).module(gpu)
     }
 
     // ANCHOR: texture
@@ -372,56 +376,62 @@ impl ShadowMap {
             Self::group(device, &self.layout, &self.view, [&self.compare_nearest, &self.compare_linear], &self.uniform);
     }
 
-    /// A broken edit (one that validates but has no `vs_caster`, say)
-    /// leaves the old module and pipeline drawing.
-    pub fn reload_shaders(&mut self, gpu: &Gpu) -> Result<(), ShaderError> {
-        let old = std::mem::replace(&mut self.module, Self::module(gpu)?);
-        let (bias, cull) = self.caster.as_ref().map_or((Bias::DEFAULT, Cull::Back), |(b, c, _)| (*b, *c));
-        match gpu.catch_validation(|| self.caster_pipeline(&gpu.device, bias, cull)) {
-            Ok(pipeline) => {
-                self.caster = Some((bias, cull, pipeline));
-                Ok(())
-            }
-            Err(message) => {
-                self.module = old;
-                Err(ShaderError(message))
-            }
-        }
+    /// The shadow pass's pipeline for `bias` and `cull`, kept up to date
+    /// with caster.wgsl.
+    fn caster(
+        gpu: &Gpu,
+        layout: &wgpu::PipelineLayout,
+        bias: Bias,
+        cull: Cull,
+    ) -> Result<Reloadable<wgpu::RenderPipeline>, ShaderError> {
+        let layout = layout.clone();
+        Reloadable::new(gpu, move |gpu| Self::caster_pipeline(gpu, &layout, bias, cull))
     }
 
     // ANCHOR: caster_pipeline
     /// The shadow pass's pipeline: vertices only, into the depth format,
     /// with the bias in its depth-stencil state.
-    fn caster_pipeline(&self, device: &wgpu::Device, bias: Bias, cull: Cull) -> wgpu::RenderPipeline {
-        device.create_render_pipeline(&wgpu::RenderPipelineDescriptor {
-            label: Some("shadow caster"),
-            layout: Some(&self.caster_layout),
-            vertex: wgpu::VertexState {
-                module: &self.module,
-                entry_point: Some("vs_caster"),
-                buffers: &[Some(TexturedVertex::LAYOUT), Some(ModelInstance::LAYOUT)],
-                compilation_options: Default::default(),
-            },
-            primitive: wgpu::PrimitiveState {
-                cull_mode: match cull {
-                    Cull::Back => Some(wgpu::Face::Back),
-                    Cull::Front => Some(wgpu::Face::Front),
-                    Cull::None => None,
+    fn caster_pipeline(
+        gpu: &Gpu,
+        layout: &wgpu::PipelineLayout,
+        bias: Bias,
+        cull: Cull,
+    ) -> Result<wgpu::RenderPipeline, ShaderError> {
+        let module = shader!("shadows/caster.wgsl", imports: ["textures/surface.wgsl"]).module(gpu)?;
+        // An edit that validates but has no `vs_caster`, say, is an error,
+        // not a panic: the last good pipeline keeps drawing.
+        gpu.catch_validation(|| {
+            gpu.device.create_render_pipeline(&wgpu::RenderPipelineDescriptor {
+                label: Some("shadow caster"),
+                layout: Some(layout),
+                vertex: wgpu::VertexState {
+                    module: &module,
+                    entry_point: Some("vs_caster"),
+                    buffers: &[Some(TexturedVertex::LAYOUT), Some(ModelInstance::LAYOUT)],
+                    compilation_options: Default::default(),
                 },
-                ..Default::default()
-            },
-            depth_stencil: Some(wgpu::DepthStencilState {
-                format: SHADOW_FORMAT,
-                depth_write_enabled: Some(true),
-                depth_compare: Some(wgpu::CompareFunction::Less),
-                stencil: Default::default(),
-                bias: wgpu::DepthBiasState { constant: bias.constant, slope_scale: bias.slope_scale, clamp: 0.0 },
-            }),
-            multisample: Default::default(),
-            fragment: None,
-            multiview_mask: None,
-            cache: None,
+                primitive: wgpu::PrimitiveState {
+                    cull_mode: match cull {
+                        Cull::Back => Some(wgpu::Face::Back),
+                        Cull::Front => Some(wgpu::Face::Front),
+                        Cull::None => None,
+                    },
+                    ..Default::default()
+                },
+                depth_stencil: Some(wgpu::DepthStencilState {
+                    format: SHADOW_FORMAT,
+                    depth_write_enabled: Some(true),
+                    depth_compare: Some(wgpu::CompareFunction::Less),
+                    stencil: Default::default(),
+                    bias: wgpu::DepthBiasState { constant: bias.constant, slope_scale: bias.slope_scale, clamp: 0.0 },
+                }),
+                multisample: Default::default(),
+                fragment: None,
+                multiview_mask: None,
+                cache: None,
+            })
         })
+        .map_err(ShaderError)
     }
     // ANCHOR_END: caster_pipeline
 
@@ -448,11 +458,15 @@ impl ShadowMap {
         settings: &ShadowSettings,
         casters: &DrawList,
     ) {
-        let (bias, cull) = (settings.bias, settings.cull);
-        if !matches!(&self.caster, Some((b, c, _)) if *b == bias && *c == cull) {
-            self.caster = Some((bias, cull, self.caster_pipeline(&gpu.device, bias, cull)));
+        let (bias, cull) = caster_key(settings);
+        if (self.caster.0, self.caster.1) != (bias, cull) {
+            // While caster.wgsl is broken on disk (the window says why), the
+            // last good pipeline keeps drawing and the next frame tries again.
+            if let Ok(pipeline) = Self::caster(gpu, &self.caster_layout, bias, cull) {
+                self.caster = (bias, cull, pipeline);
+            }
         }
-        let Some((_, _, pipeline)) = &self.caster else { return };
+        let pipeline = self.caster.2.get();
         let mut pass = encoder.begin_render_pass(&wgpu::RenderPassDescriptor {
             label: Some("shadow map"),
             color_attachments: &[],
@@ -464,7 +478,7 @@ impl ShadowMap {
             timestamp_writes: timer.pass("shadow map"),
             ..Default::default()
         });
-        pass.set_pipeline(pipeline);
+        pass.set_pipeline(&pipeline);
         pass.set_bind_group(0, &self.caster_group, &[]);
         pass.set_vertex_buffer(1, casters.instances.slice(..));
         for draw in casters.draws.iter().filter(|d| !d.instances.is_empty()) {
@@ -481,10 +495,9 @@ impl ShadowMap {
 /// The `shadow-map` view: the map drawn full screen, its depths stretched
 /// over a range so that the level's shapes stand out.
 pub struct MapView {
-    format: wgpu::TextureFormat,
     layout: wgpu::BindGroupLayout,
-    pipeline_layout: wgpu::PipelineLayout,
-    pipeline: wgpu::RenderPipeline,
+    /// Made again when show_depth.wgsl is saved (hot reload).
+    pipeline: Reloadable<wgpu::RenderPipeline>,
     uniform: wgpu::Buffer,
 }
 
@@ -509,8 +522,8 @@ impl MapView {
             usage: wgpu::BufferUsages::UNIFORM | wgpu::BufferUsages::COPY_DST,
             mapped_at_creation: false,
         });
-        let pipeline = Self::pipeline(gpu, &pipeline_layout, format)?;
-        Ok(Self { format, layout, pipeline_layout, pipeline, uniform })
+        let pipeline = Reloadable::new(gpu, move |gpu| Self::pipeline(gpu, &pipeline_layout, format))?;
+        Ok(Self { layout, pipeline, uniform })
     }
 
     fn pipeline(
@@ -533,11 +546,6 @@ impl MapView {
         .map_err(ShaderError)
     }
 
-    pub fn reload_shaders(&mut self, gpu: &Gpu) -> Result<(), ShaderError> {
-        self.pipeline = Self::pipeline(gpu, &self.pipeline_layout, self.format)?;
-        Ok(())
-    }
-
     /// Draws `map` over the frame's target, depths `range.0` black to
     /// `range.1` white, for a target `aspect` wide per unit of height.
     pub fn draw(&self, gpu: &Gpu, frame: &mut common::Frame, map: &ShadowMap, range: (f32, f32), aspect: f32) {
@@ -557,7 +565,7 @@ impl MapView {
             frame.target,
             Some(wgpu::Color::BLACK),
         );
-        pass.set_pipeline(&self.pipeline);
+        pass.set_pipeline(&self.pipeline.get());
         pass.set_bind_group(0, &group, &[]);
         pass.draw(0..3, 0..1);
     }

@@ -4,7 +4,7 @@
 //! map; out: the draws in an HDR pass. Chapter 11 draws its boat with it.
 
 use common::chapter::{mesh_pipeline, sampler_entry};
-use common::{Gpu, ShaderError, shader, wgpu};
+use common::{Gpu, Reloadable, ShaderError, shader, wgpu};
 use lighting::{HDR_FORMAT, SceneLights};
 use textures::DrawList;
 use textures::materials::{Materials, SamplerMode};
@@ -19,9 +19,9 @@ use crate::shadow_map::ShadowMap;
 /// sampler, group 3 the [`ShadowMap`]. Inputs: a draw list of chapter
 /// 09's models and a shadow map already rendered for this frame.
 pub struct ShadowedRenderer {
-    pipeline_layout: wgpu::PipelineLayout,
-    lit: wgpu::RenderPipeline,
-    sunlit: wgpu::RenderPipeline,
+    /// The picture's pipeline and the tests' sunlit-only one, made again
+    /// when scene.wgsl or a module it imports is saved (hot reload).
+    pipelines: Reloadable<(wgpu::RenderPipeline, wgpu::RenderPipeline)>,
     sampler_group: wgpu::BindGroup,
 }
 // ANCHOR_END: renderer
@@ -51,8 +51,8 @@ impl ShadowedRenderer {
             bind_group_layouts: &[Some(&lights.layout), Some(&materials.layout), Some(&layout), Some(&shadow.layout)],
             immediate_size: 0,
         });
-        let (lit, sunlit) = Self::pipelines(gpu, &pipeline_layout)?;
-        Ok(Self { pipeline_layout, lit, sunlit, sampler_group })
+        let pipelines = Reloadable::new(gpu, move |gpu| Self::pipelines(gpu, &pipeline_layout))?;
+        Ok(Self { pipelines, sampler_group })
     }
 
     fn pipelines(
@@ -70,16 +70,12 @@ impl ShadowedRenderer {
         gpu.catch_validation(|| (pipeline("fs_main"), pipeline("fs_sunlit"))).map_err(ShaderError)
     }
 
-    pub fn reload_shaders(&mut self, gpu: &Gpu) -> Result<(), ShaderError> {
-        (self.lit, self.sunlit) = Self::pipelines(gpu, &self.pipeline_layout)?;
-        Ok(())
-    }
-
     // ANCHOR: draw
     /// Draws `list` into `pass`, whose group 0 must be the scene's lights.
     /// `sunlit_only` draws what the tests count instead of the picture.
     pub fn draw(&self, pass: &mut wgpu::RenderPass<'_>, shadow: &ShadowMap, list: &DrawList, sunlit_only: bool) {
-        pass.set_pipeline(if sunlit_only { &self.sunlit } else { &self.lit });
+        let (lit, sunlit) = self.pipelines.get();
+        pass.set_pipeline(if sunlit_only { &sunlit } else { &lit });
         pass.set_bind_group(2, &self.sampler_group, &[]);
         pass.set_bind_group(3, &shadow.group, &[]);
         list.draw(pass, false);

@@ -9,7 +9,7 @@ use common::chapter::{FILTERABLE, sampler_entry, texture_entry, uniform_entry};
 use common::glam::{Mat4, Vec3};
 use common::image::RgbaImage;
 use common::texture::ColorSpace;
-use common::{Camera, Gpu, ShaderError, anyhow, fullscreen, shader, wgpu};
+use common::{Camera, Gpu, Reloadable, ShaderError, anyhow, fullscreen, shader, wgpu};
 use lighting::lights::Daylight;
 
 /// The gradients, embedded so the binary runs from anywhere.
@@ -196,8 +196,8 @@ impl Atmosphere {
 // ANCHOR: sky
 /// The sky, drawn first into the scene pass, under everything.
 pub struct Sky {
-    layout: wgpu::PipelineLayout,
-    pipeline: wgpu::RenderPipeline,
+    /// Made again when sky.wgsl or the atmosphere's module is saved (hot reload).
+    pipeline: Reloadable<wgpu::RenderPipeline>,
 }
 // ANCHOR_END: sky
 
@@ -208,8 +208,8 @@ impl Sky {
             bind_group_layouts: &[Some(lights), Some(&atmosphere.layout)],
             immediate_size: 0,
         });
-        let pipeline = Self::pipeline(gpu, &layout)?;
-        Ok(Self { layout, pipeline })
+        let pipeline = Reloadable::new(gpu, move |gpu| Self::pipeline(gpu, &layout))?;
+        Ok(Self { pipeline })
     }
 
     fn pipeline(gpu: &Gpu, layout: &wgpu::PipelineLayout) -> Result<wgpu::RenderPipeline, ShaderError> {
@@ -238,13 +238,8 @@ impl Sky {
         .map_err(ShaderError)
     }
 
-    pub fn reload_shaders(&mut self, gpu: &Gpu) -> Result<(), ShaderError> {
-        self.pipeline = Self::pipeline(gpu, &self.layout)?;
-        Ok(())
-    }
-
     pub fn draw(&self, pass: &mut wgpu::RenderPass<'_>, atmosphere: &Atmosphere) {
-        pass.set_pipeline(&self.pipeline);
+        pass.set_pipeline(&self.pipeline.get());
         pass.set_bind_group(1, &atmosphere.group, &[]);
         pass.draw(0..3, 0..1);
     }

@@ -6,7 +6,7 @@
 
 use common::glam::{Vec2, Vec3};
 use common::{
-    Camera, Chapter, Frame, Gpu, Input, ShaderError, Target, View, ViewRow, anyhow, egui, views_of, wgpu,
+    Camera, Chapter, Frame, Gpu, Input, Preparation, Target, View, ViewRow, anyhow, egui, views_of, wgpu,
     winit::keyboard::KeyCode,
 };
 use lighting::bloom::BloomSettings;
@@ -386,7 +386,14 @@ impl Chapter for VoronoiWaterChapter {
         common::GpuNeeds { required: wgpu::Features::empty(), optional: PostChain::OPTIONAL_FEATURES }
     }
 
-    fn new(gpu: &Gpu, target: Target) -> anyhow::Result<Self> {
+    /// Nothing takes long enough to prepare in steps.
+    type Prepared = ();
+
+    fn prepare(_gpu: &Gpu) -> Preparation<()> {
+        Preparation::ready(())
+    }
+
+    fn new(gpu: &Gpu, target: Target, (): ()) -> anyhow::Result<Self> {
         let device = &gpu.device;
         let settings = Settings::SUNSET;
         let voronoi = Voronoi::new(gpu, settings.texture_size, settings.texture_size)?;
@@ -634,19 +641,5 @@ impl Chapter for VoronoiWaterChapter {
             self.settings.voronoi.method.label(),
             self.voronoi.cone_radius
         )
-    }
-
-    fn reload_shaders(&mut self, gpu: &Gpu) -> Result<(), ShaderError> {
-        self.voronoi.reload_shaders(gpu)?;
-        self.water.reload_shaders(gpu)?;
-        self.show.reload_shaders(gpu)?;
-        self.sea.reload_shaders(gpu)?;
-        self.islands.reload_shaders(gpu)?;
-        self.sky.reload_shaders(gpu)?;
-        self.shadow_map.reload_shaders(gpu)?;
-        self.map_view.reload_shaders(gpu)?;
-        self.boat_renderer.reload_shaders(gpu)?;
-        self.post.reload_shaders(gpu)?;
-        Ok(())
     }
 }

@@ -5,7 +5,7 @@
 
 use common::glam::{Vec2, Vec3};
 use common::noise::Fbm;
-use common::{Gpu, ShaderError, shader, wgpu};
+use common::{Gpu, Reloadable, ShaderError, shader, wgpu};
 use lighting::{HDR_FORMAT, SceneLights};
 
 use crate::atmosphere::Atmosphere;
@@ -100,8 +100,8 @@ pub struct IslandRenderer {
     /// Each island's first index and index count.
     ranges: Vec<std::ops::Range<u32>>,
     offsets: wgpu::Buffer,
-    layout: wgpu::PipelineLayout,
-    pipeline: wgpu::RenderPipeline,
+    /// Made again when islands.wgsl or a module it imports is saved (hot reload).
+    pipeline: Reloadable<wgpu::RenderPipeline>,
 }
 // ANCHOR_END: piece
 
@@ -136,8 +136,8 @@ impl IslandRenderer {
             bind_group_layouts: &[Some(&lights.layout), Some(&atmosphere.layout)],
             immediate_size: 0,
         });
-        let pipeline = Self::pipeline(gpu, &layout)?;
-        Ok(Self { vertices, indices, ranges, offsets, layout, pipeline })
+        let pipeline = Reloadable::new(gpu, move |gpu| Self::pipeline(gpu, &layout))?;
+        Ok(Self { vertices, indices, ranges, offsets, pipeline })
     }
 
     fn pipeline(gpu: &Gpu, layout: &wgpu::PipelineLayout) -> Result<wgpu::RenderPipeline, ShaderError> {
@@ -171,11 +171,6 @@ impl IslandRenderer {
         .map_err(ShaderError)
     }
 
-    pub fn reload_shaders(&mut self, gpu: &Gpu) -> Result<(), ShaderError> {
-        self.pipeline = Self::pipeline(gpu, &self.layout)?;
-        Ok(())
-    }
-
     /// Places each island's copy nearest `boat`.
     pub fn write(&self, gpu: &Gpu, boat: Vec2) {
         let offsets: Vec<[f32; 3]> = ISLANDS
@@ -189,7 +184,7 @@ impl IslandRenderer {
     }
 
     pub fn draw(&self, pass: &mut wgpu::RenderPass<'_>, atmosphere: &Atmosphere) {
-        pass.set_pipeline(&self.pipeline);
+        pass.set_pipeline(&self.pipeline.get());
         pass.set_bind_group(1, &atmosphere.group, &[]);
         pass.set_vertex_buffer(0, self.vertices.slice(..));
         pass.set_vertex_buffer(1, self.offsets.slice(..));

@@ -4,7 +4,7 @@
 
 use common::chapter::{FILTERABLE, mesh_pipeline, sampler_entry, texture_entry, uniform_entry};
 use common::glam::Vec2;
-use common::{Gpu, ShaderError, shader, wgpu};
+use common::{Gpu, Reloadable, ShaderError, shader, wgpu};
 use lighting::{HDR_FORMAT, SceneLights};
 use shadows::shadow_map::ShadowMap;
 use water::waves::Wave;
@@ -146,10 +146,9 @@ pub struct SeaRenderer {
     group_layout: wgpu::BindGroupLayout,
     group: Option<wgpu::BindGroup>,
     sampler: wgpu::Sampler,
-    layout: wgpu::PipelineLayout,
-    lit: wgpu::RenderPipeline,
-    wire: wgpu::RenderPipeline,
-    probe: wgpu::RenderPipeline,
+    /// The lit sea, its edges and the tests' probe, made again when
+    /// sea.wgsl or a module it imports is saved (hot reload).
+    pipelines: Reloadable<[wgpu::RenderPipeline; 3]>,
     whole: (wgpu::Buffer, u32),
     small: (wgpu::Buffer, u32),
     lines: (wgpu::Buffer, u32),
@@ -210,17 +209,14 @@ impl SeaRenderer {
             (buffer, data.len() as u32)
         };
         let middle = GRID_VERTICES / 2 - 1 - SMALL_GRID_CELLS / 2;
-        let [lit, wire, probe] = Self::pipelines(gpu, &layout)?;
+        let pipelines = Reloadable::new(gpu, move |gpu| Self::pipelines(gpu, &layout))?;
         Ok(Self {
             waves,
             uniform,
             group_layout,
             group: None,
             sampler,
-            layout,
-            lit,
-            wire,
-            probe,
+            pipelines,
             whole: indices("sea", triangles(0, GRID_VERTICES)),
             small: indices("small sea", triangles(middle, SMALL_GRID_CELLS + 1)),
             lines: indices("sea edges", edges()),
@@ -295,11 +291,6 @@ impl SeaRenderer {
         gpu.catch_validation(|| [lit(), wire(), probe()]).map_err(ShaderError)
     }
 
-    pub fn reload_shaders(&mut self, gpu: &Gpu) -> Result<(), ShaderError> {
-        [self.lit, self.wire, self.probe] = Self::pipelines(gpu, &self.layout)?;
-        Ok(())
-    }
-
     pub fn waves(&self) -> &[Wave; 8] {
         &self.waves
     }
@@ -335,11 +326,12 @@ impl SeaRenderer {
     pub fn draw(&self, pass: &mut wgpu::RenderPass<'_>, small: bool, wires: bool) {
         pass.set_bind_group(2, self.group.as_ref(), &[]);
         let (indices, count) = if small { &self.small } else { &self.whole };
-        pass.set_pipeline(&self.lit);
+        let [lit, wire, _] = self.pipelines.get();
+        pass.set_pipeline(&lit);
         pass.set_index_buffer(indices.slice(..), wgpu::IndexFormat::Uint32);
         pass.draw_indexed(0..*count, 0, 0..1);
         if wires {
-            pass.set_pipeline(&self.wire);
+            pass.set_pipeline(&wire);
             pass.set_index_buffer(self.lines.0.slice(..), wgpu::IndexFormat::Uint32);
             pass.draw_indexed(0..self.lines.1, 0, 0..1);
         }
@@ -376,7 +368,7 @@ impl SeaRenderer {
                 &view,
                 Some(wgpu::Color::TRANSPARENT),
             );
-            pass.set_pipeline(&self.probe);
+            pass.set_pipeline(&self.pipelines.get()[2]);
             pass.set_bind_group(0, &lights.group, &[]);
             pass.set_bind_group(1, &atmosphere.group, &[]);
             pass.set_bind_group(2, self.group.as_ref(), &[]);

@@ -5,7 +5,7 @@
 
 use common::chapter::uniform_entry;
 use common::glam::Vec2;
-use common::{Gpu, PassTimer, ShaderError, shader, wgpu};
+use common::{Gpu, PassTimer, Reloadable, ShaderError, shader, wgpu};
 
 use crate::sites;
 
@@ -109,12 +109,9 @@ pub struct Voronoi {
     sites_layout: wgpu::BindGroupLayout,
     sites_group: wgpu::BindGroup,
     step_layout: wgpu::BindGroupLayout,
-    cones_layout: wgpu::PipelineLayout,
-    flood_layout: wgpu::PipelineLayout,
-    cones: wgpu::RenderPipeline,
-    exact_cones: wgpu::RenderPipeline,
-    seeds: wgpu::RenderPipeline,
-    step: wgpu::RenderPipeline,
+    /// Cones, exact cones, jump flooding's seeds and its step, made again
+    /// when cones.wgsl or jump_flood.wgsl is saved (hot reload).
+    pipelines: Reloadable<[wgpu::RenderPipeline; 4]>,
     targets: Targets,
     /// Which of the two textures holds the last diagram.
     result: usize,
@@ -169,7 +166,7 @@ impl Voronoi {
             bind_group_layouts: &[Some(&sites_layout), Some(&step_layout)],
             immediate_size: 0,
         });
-        let [cones, exact_cones, seeds, step] = Self::pipelines(gpu, &cones_layout, &flood_layout)?;
+        let pipelines = Reloadable::new(gpu, move |gpu| Self::pipelines(gpu, &cones_layout, &flood_layout))?;
         let targets = Self::targets(device, &step_layout, width, height, false);
         Ok(Self {
             sites,
@@ -178,12 +175,7 @@ impl Voronoi {
             sites_layout,
             sites_group,
             step_layout,
-            cones_layout,
-            flood_layout,
-            cones,
-            exact_cones,
-            seeds,
-            step,
+            pipelines,
             targets,
             result: 0,
             cone_radius: 0.0,
@@ -265,12 +257,6 @@ impl Voronoi {
             ]
         })
         .map_err(ShaderError)
-    }
-
-    pub fn reload_shaders(&mut self, gpu: &Gpu) -> Result<(), ShaderError> {
-        [self.cones, self.exact_cones, self.seeds, self.step] =
-            Self::pipelines(gpu, &self.cones_layout, &self.flood_layout)?;
-        Ok(())
     }
 
     fn targets(
@@ -422,8 +408,9 @@ impl Voronoi {
             timestamp_writes: timer.pass("voronoi cones"),
             ..Default::default()
         });
+        let [cones, exact_cones, ..] = self.pipelines.get();
         let exact = settings.method == Method::ExactCones;
-        pass.set_pipeline(if exact { &self.exact_cones } else { &self.cones });
+        pass.set_pipeline(if exact { &exact_cones } else { &cones });
         pass.set_bind_group(0, &self.sites_group, &[]);
         pass.draw(0..3 * segments, 0..sites.len() as u32 * copies);
         self.result = 0;
@@ -434,18 +421,19 @@ impl Voronoi {
     fn flood(&mut self, encoder: &mut wgpu::CommandEncoder, timer: &PassTimer, count: u32, steps: usize) {
         let passes = steps + 1;
         let timing = |index| timer.chain("jump flooding", index, passes);
+        let [.., seeds, step] = self.pipelines.get();
         // The sites into texture 0, everything else "no site yet".
         {
             let load = wgpu::LoadOp::Clear(none_colour());
             let mut pass = id_pass(encoder, &self.targets.views[0], load, timing(0));
-            pass.set_pipeline(&self.seeds);
+            pass.set_pipeline(&seeds);
             pass.set_bind_group(0, &self.sites_group, &[]);
             pass.draw(0..count, 0..1);
         }
         // Each step reads one texture and writes the other.
         for i in 0..steps {
             let mut pass = id_pass(encoder, &self.targets.views[(i + 1) % 2], wgpu::LoadOp::Load, timing(i + 1));
-            pass.set_pipeline(&self.step);
+            pass.set_pipeline(&step);
             pass.set_bind_group(0, &self.sites_group, &[]);
             pass.set_bind_group(1, &self.targets.step_groups[i], &[]);
             pass.draw(0..3, 0..1);

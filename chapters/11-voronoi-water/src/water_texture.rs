@@ -4,7 +4,7 @@
 //! switched off, and every picture on the way shown full screen.
 
 use common::chapter::{sampler_entry, texture_entry, uniform_entry};
-use common::{Gpu, PassTimer, ShaderError, fullscreen, shader, wgpu};
+use common::{Gpu, PassTimer, Reloadable, ShaderError, fullscreen, shader, wgpu};
 use textures::mipmaps::{Averaging, MipMaker, level_count};
 
 /// The pictures' format: sRGB, so they are stored as they are seen and
@@ -82,12 +82,9 @@ pub struct WaterTexture {
     uniform: wgpu::Buffer,
     ids_layout: wgpu::BindGroupLayout,
     picture_layout: wgpu::BindGroupLayout,
-    layout: wgpu::PipelineLayout,
-    colour: wgpu::RenderPipeline,
-    blur_across: wgpu::RenderPipeline,
-    blur_down: wgpu::RenderPipeline,
-    edges: wgpu::RenderPipeline,
-    water: wgpu::RenderPipeline,
+    /// Colour, blur across, blur down, edges and water, made again when
+    /// process.wgsl is saved (hot reload).
+    pipelines: Reloadable<[wgpu::RenderPipeline; 5]>,
     ids_group: Option<wgpu::BindGroup>,
     size: u32,
     /// Colours, the two halves of a blur, edges, and the water.
@@ -129,18 +126,13 @@ impl WaterTexture {
             usage: wgpu::BufferUsages::UNIFORM | wgpu::BufferUsages::COPY_DST,
             mapped_at_creation: false,
         });
-        let [colour, blur_across, blur_down, edges, water] = Self::pipelines(gpu, &layout)?;
+        let pipelines = Reloadable::new(gpu, move |gpu| Self::pipelines(gpu, &layout))?;
         let stages = Self::stages(device, &picture_layout, size);
         Ok(Self {
             uniform,
             ids_layout,
             picture_layout,
-            layout,
-            colour,
-            blur_across,
-            blur_down,
-            edges,
-            water,
+            pipelines,
             ids_group: None,
             size,
             stages,
@@ -163,11 +155,6 @@ impl WaterTexture {
             ]
         })
         .map_err(ShaderError)
-    }
-
-    pub fn reload_shaders(&mut self, gpu: &Gpu) -> Result<(), ShaderError> {
-        [self.colour, self.blur_across, self.blur_down, self.edges, self.water] = Self::pipelines(gpu, &self.layout)?;
-        Ok(())
     }
 
     fn stages(device: &wgpu::Device, layout: &wgpu::BindGroupLayout, size: u32) -> [Stage; 5] {
@@ -252,11 +239,12 @@ impl WaterTexture {
         };
         gpu.queue.write_buffer(&self.uniform, 0, bytemuck::bytes_of(&uniform));
 
-        self.run(encoder, timer, "colour cells", &self.colour, None, COLOURS);
+        let [colour, blur_across, blur_down, edges, water] = self.pipelines.get();
+        self.run(encoder, timer, "colour cells", &colour, None, COLOURS);
         // Box blur across then down, twice: four passes, timed as one.
         self.blurred = COLOURS;
         if settings.blur_radius > 0 {
-            let passes = [(&self.blur_across, COLOURS, BLUR_A), (&self.blur_down, BLUR_A, BLUR_B)];
+            let passes = [(&blur_across, COLOURS, BLUR_A), (&blur_down, BLUR_A, BLUR_B)];
             for round in 0..2 {
                 for (i, (pipeline, from, to)) in passes.iter().enumerate() {
                     let from = if round == 1 && *from == COLOURS { BLUR_B } else { *from };
@@ -266,8 +254,8 @@ impl WaterTexture {
             }
             self.blurred = BLUR_B;
         }
-        self.run(encoder, timer, "edges", &self.edges, Some(self.blurred), EDGES);
-        self.run(encoder, timer, "water", &self.water, Some(self.blurred), WATER);
+        self.run(encoder, timer, "edges", &edges, Some(self.blurred), EDGES);
+        self.run(encoder, timer, "water", &water, Some(self.blurred), WATER);
         self.mips.generate(device, encoder, &self.stages[WATER].texture, Averaging::Colour);
     }
     // ANCHOR_END: render
@@ -316,9 +304,8 @@ impl WaterTexture {
 pub struct Show {
     uniform: wgpu::Buffer,
     group: wgpu::BindGroup,
-    layout: wgpu::PipelineLayout,
-    picture: wgpu::RenderPipeline,
-    cells: wgpu::RenderPipeline,
+    /// A picture and the cells, made again when process.wgsl is saved (hot reload).
+    pipelines: Reloadable<(wgpu::RenderPipeline, wgpu::RenderPipeline)>,
     format: wgpu::TextureFormat,
 }
 // ANCHOR_END: show
@@ -360,8 +347,8 @@ impl Show {
                 wgpu::BindGroupEntry { binding: 1, resource: wgpu::BindingResource::Sampler(&sampler) },
             ],
         });
-        let (picture, cells) = Self::pipelines(gpu, &layout, format)?;
-        Ok(Self { uniform, group, layout, picture, cells, format })
+        let pipelines = Reloadable::new(gpu, move |gpu| Self::pipelines(gpu, &layout, format))?;
+        Ok(Self { uniform, group, pipelines, format })
     }
 
     fn pipelines(
@@ -372,11 +359,6 @@ impl Show {
         let module = shader!("voronoi-water/process.wgsl", imports: ["common/fullscreen.wgsl"]).module(gpu)?;
         let pipeline = |entry| fullscreen::pipeline(&gpu.device, entry, layout, &module, entry, format.into(), None);
         gpu.catch_validation(|| (pipeline("fs_show"), pipeline("fs_show_cells"))).map_err(ShaderError)
-    }
-
-    pub fn reload_shaders(&mut self, gpu: &Gpu) -> Result<(), ShaderError> {
-        (self.picture, self.cells) = Self::pipelines(gpu, &self.layout, self.format)?;
-        Ok(())
     }
 
     /// Draws `picture` over `target`, tiled at square texels, `tiles` down
@@ -392,7 +374,7 @@ impl Show {
     ) {
         self.write(gpu, true, aspect, tiles);
         let mut pass = fullscreen::pass(frame.encoder, frame.timer, "show picture", frame.target, None);
-        pass.set_pipeline(&self.picture);
+        pass.set_pipeline(&self.pipelines.get().0);
         pass.set_bind_group(0, water.ids_group.as_ref(), &[]);
         pass.set_bind_group(1, water.group_of(picture), &[]);
         pass.set_bind_group(2, &self.group, &[]);
@@ -412,7 +394,7 @@ impl Show {
             ],
         });
         let mut pass = fullscreen::pass(frame.encoder, frame.timer, "show cells", frame.target, None);
-        pass.set_pipeline(&self.cells);
+        pass.set_pipeline(&self.pipelines.get().1);
         pass.set_bind_group(0, &ids_group, &[]);
         pass.set_bind_group(1, &water.stages[EDGES].group, &[]);
         pass.set_bind_group(2, &self.group, &[]);

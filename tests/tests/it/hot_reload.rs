@@ -17,24 +17,24 @@ fn a_broken_edit_keeps_the_last_good_pipeline() {
     let gpu = Gpu::headless(GpuNeeds::default()).unwrap();
     gpu.read_shaders_from(Some(root.clone()));
     let target = Target { format: OFFSCREEN_FORMAT, width: 96, height: 64 };
-    let mut chapter = Triangle::new(&gpu, target).unwrap();
+    let mut chapter = Triangle::new(&gpu, target, ()).unwrap();
     let good = capture(&gpu, &mut chapter, target, 0.0, 0).unwrap();
 
     // A type error: naga rejects it, with the file and line.
     std::fs::write(&file, original.replace("return vec4<f32>(in.color, 1.0);", "return vec4<f32>(in.color);")).unwrap();
-    let error = chapter.reload_shaders(&gpu).unwrap_err();
+    let error = gpu.reload_shaders(&["triangle/triangle.wgsl"]).unwrap_err();
     assert!(error.0.contains("triangle/triangle.wgsl:"), "{error}");
     assert_eq!(capture(&gpu, &mut chapter, target, 0.0, 0).unwrap(), good, "the last good pipeline must keep drawing");
 
     // Valid WGSL that no longer fits the pipeline: wgpu's validation error is caught, not a panic.
     std::fs::write(&file, original.replace("fn fs_main(", "fn fs_renamed(")).unwrap();
-    let error = chapter.reload_shaders(&gpu).unwrap_err();
+    let error = gpu.reload_shaders(&["triangle/triangle.wgsl"]).unwrap_err();
     assert!(error.0.contains("fs_main"), "{error}");
     assert_eq!(capture(&gpu, &mut chapter, target, 0.0, 0).unwrap(), good);
 
     // The fix (here: everything white) reloads and shows.
     std::fs::write(&file, original.replace("return vec4<f32>(in.color, 1.0);", "return vec4<f32>(1.0);")).unwrap();
-    chapter.reload_shaders(&gpu).unwrap();
+    gpu.reload_shaders(&["triangle/triangle.wgsl"]).unwrap();
     let edited = capture(&gpu, &mut chapter, target, 0.0, 0).unwrap();
     assert_eq!(edited.get_pixel(48, 32).0, [255, 255, 255, 255]);
     std::fs::remove_dir_all(root).unwrap();

@@ -11,7 +11,7 @@ use lighting::{Display, LightCount, LightingChapter, MAX_LIGHTS, Settings, Shadi
 /// validation error scope, and checks the bloom for NaNs.
 fn draw(gpu: &Gpu, (width, height): (u32, u32), settings: Settings, case: &str) {
     let target = Target { format: OFFSCREEN_FORMAT, width, height };
-    let mut chapter = LightingChapter::new(gpu, target).unwrap();
+    let mut chapter = LightingChapter::new(gpu, target, ()).unwrap();
     chapter.select_view(view_index::<LightingChapter>("night").unwrap());
     chapter.settings = settings;
     let offscreen = Offscreen::new(&gpu.device, target);

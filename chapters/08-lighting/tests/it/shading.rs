@@ -49,7 +49,7 @@ fn luminance(p: &image::Rgba<u8>) -> f32 {
 fn phong_peaks_higher_than_gouraud_and_their_diffuse_light_agrees() {
     let gpu = Gpu::headless(LightingChapter::gpu_needs()).expect("an adapter (lavapipe will do)");
     let target = Target { format: OFFSCREEN_FORMAT, width: SIZE.0, height: SIZE.1 };
-    let mut chapter = LightingChapter::new(&gpu, target).unwrap();
+    let mut chapter = LightingChapter::new(&gpu, target, ()).unwrap();
 
     // The highlight is tens of times brighter than white in HDR: at the usual
     // exposure both peaks clip to 255. At 1/200 of it neither does.

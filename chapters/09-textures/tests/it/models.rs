@@ -12,11 +12,19 @@ use textures::{TexturesChapter, builtin, obj};
 
 /// A fresh folder holding `files` (name, contents).
 fn folder(case: &str, files: &[(&str, &str)]) -> PathBuf {
+    let files: Vec<(&str, &[u8])> = files.iter().map(|(name, text)| (*name, text.as_bytes())).collect();
+    folder_of_bytes(case, &files)
+}
+
+/// A fresh folder holding `files` (name, which may have folders in it, and bytes).
+fn folder_of_bytes(case: &str, files: &[(&str, &[u8])]) -> PathBuf {
     let dir = std::env::temp_dir().join(format!("textures-{case}-{}", std::process::id()));
     let _ = std::fs::remove_dir_all(&dir);
     std::fs::create_dir_all(&dir).unwrap();
-    for (name, text) in files {
-        std::fs::write(dir.join(name), text).unwrap();
+    for (name, bytes) in files {
+        let path = dir.join(name);
+        std::fs::create_dir_all(path.parent().unwrap()).unwrap();
+        std::fs::write(path, bytes).unwrap();
     }
     dir
 }
@@ -103,11 +111,14 @@ fn a_missing_mtl_is_one_warning_and_a_default_material() {
 fn broken_files_name_the_file_and_the_line() {
     let cases = [
         ("position", "v 0 0 0\nv 1 0 0\nv 1 oops 0\nf 1 2 3\n", "line 3: position parse error"),
-        ("face", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 9\n", "line 4:"),
+        // Positions out of range stay an error (texture coordinates and
+        // normals are left out: see `out_of_range_texture_coordinates_and_normals_are_left_out`).
+        ("face", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 9\n", "line 4: index out of range: position 9, the file has 3"),
         ("normal", "v 0 0 0\nvn 0 1\nf 1 1 1\n", "line 2: normal parse error"),
         // Indices tobj would turn into huge numbers and overflow on.
         ("huge", "v 0 0 0\nf -9223372036854775808 1 1\n", "line 2: index out of range"),
-        ("huge-normal", "v 0 0 0\nvn 0 1 0\nf 1//9000000000000000000 1//1 1//1\n", "line 3: index out of range"),
+        ("bare-face", "v 0 0 0\nf\n", "line 2: a face without corners"),
+        ("not-a-corner", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2/x 3\n", "line 4: `2/x` is not a corner"),
         ("zero", "v 0 0 0\nv 1 0 0\nv 0 1 0\nvt 0 0\nf 1/1 2/0 3/1\n", "line 5: index 0"),
         (
             "before-first",
@@ -133,13 +144,14 @@ fn broken_files_name_the_file_and_the_line() {
 }
 
 /// The chapter binary with `--model`: a broken model is a one-line error
-/// and exit code 2, never a panic.
+/// and exit code 2, never a panic; and the `--screenshot` file that was
+/// not there before is not left behind empty (one that was is kept).
 #[test]
 fn the_binary_exits_2_on_a_broken_or_missing_model() {
-    let dir = folder("binary", &[("broken.obj", "v 0 0 0\nv 1 x 0\n")]);
-    for model in [dir.join("broken.obj"), dir.join("absent.obj")] {
+    let dir = folder("binary", &[("broken.obj", "v 0 0 0\nv 1 x 0\n"), ("kept.png", "an older picture")]);
+    for (model, picture) in [(dir.join("broken.obj"), "out.png"), (dir.join("absent.obj"), "kept.png")] {
         let out = Command::new(env!("CARGO_BIN_EXE_textures"))
-            .args(["--screenshot", dir.join("out.png").to_str().unwrap(), "--size", "64x36", "--model"])
+            .args(["--screenshot", dir.join(picture).to_str().unwrap(), "--size", "64x36", "--model"])
             .arg(&model)
             .output()
             .unwrap();
@@ -153,6 +165,8 @@ fn the_binary_exits_2_on_a_broken_or_missing_model() {
         );
         assert!(!stderr.contains("panicked"), "{stderr}");
     }
+    assert!(!dir.join("out.png").exists(), "a failed run leaves no empty screenshot behind");
+    assert_eq!(std::fs::read_to_string(dir.join("kept.png")).unwrap(), "an older picture");
 }
 
 fn gpu() -> Gpu {
@@ -166,19 +180,27 @@ fn chapter_with_model(gpu: &Gpu, path: &Path, size: (u32, u32)) -> TexturesChapt
 }
 
 /// A texture the MTL names but the folder lacks: one warning naming it,
-/// a magenta checker where it would be, and the model still drawn.
+/// a magenta checker where it would be, and the model still drawn. One
+/// named by another machine's path is found by its name, with a warning
+/// that says where (issue 25, kind 4), and the model's panel lists both.
 #[test]
 fn a_missing_texture_is_one_warning_and_a_visible_checker() {
-    let dir = folder(
+    let png = picture([90, 160, 220, 255], 2, common::image::ImageFormat::Png);
+    let dir = folder_of_bytes(
         "no-texture",
         &[
             (
                 "panel.obj",
                 // Facing −z, the side the stage turns towards its camera.
-                "mtllib panel.mtl\nv 1 0 0\nv -1 0 0\nv -1 2 0\nv 1 2 0\nvt 0 0\nvt 1 0\nvt 1 1\nvt 0 1\nvn 0 0 -1\n\
+                b"mtllib panel.mtl\nv 1 0 0\nv -1 0 0\nv -1 2 0\nv 1 2 0\nvt 0 0\nvt 1 0\nvt 1 1\nvt 0 1\nvn 0 0 -1\n\
                  usemtl a\nf 1/1/1 2/2/1 3/3/1\nusemtl b\nf 1/1/1 3/3/1 4/4/1\n",
             ),
-            ("panel.mtl", "newmtl a\nKd 1 1 1\nmap_Kd gone.png\nnewmtl b\nKd 1 1 1\nmap_Kd gone.png\n"),
+            (
+                "panel.mtl",
+                b"newmtl a\nKd 1 1 1\nmap_Kd gone.png\nnewmtl b\nKd 1 1 1\nmap_Kd gone.png\n\
+                  newmtl c\nmap_Kd C:\\\\Users\\\\Ann\\\\here.png\n",
+            ),
+            ("here.png", &png),
         ],
     );
     let gpu = gpu();
@@ -186,6 +208,10 @@ fn a_missing_texture_is_one_warning_and_a_visible_checker() {
     let about: Vec<&String> = chapter.warnings.iter().filter(|w| w.contains("gone.png")).collect();
     assert_eq!(about.len(), 1, "one warning for the file, however many materials use it: {:?}", chapter.warnings);
     assert!(about[0].contains("checker"), "{}", about[0]);
+    let elsewhere: Vec<&String> = chapter.warnings.iter().filter(|w| w.contains("here.png")).collect();
+    assert_eq!(elsewhere.len(), 1, "{:?}", chapter.warnings);
+    assert!(elsewhere[0].contains("material c: ") && elsewhere[0].contains("not found; using"), "{}", elsewhere[0]);
+    assert_eq!(chapter.featured.materials, 3);
     let view = common::chapter::view_index::<TexturesChapter>("car").unwrap();
     chapter.select_view(view);
     let target = Target { format: OFFSCREEN_FORMAT, width: 320, height: 180 };
@@ -262,4 +288,304 @@ fn faces_with_and_without_normals_in_one_mesh_load() {
     for w in ["without normals", "without texture coordinates"] {
         assert!(loaded.warnings.iter().any(|x| x.contains(w)), "no warning '{w}': {:?}", loaded.warnings);
     }
+}
+
+/// The bytes of a picture `size` texels square, all `colour`, in `format`.
+fn picture(colour: [u8; 4], size: u32, format: common::image::ImageFormat) -> Vec<u8> {
+    let image = common::image::RgbaImage::from_pixel(size, size, common::image::Rgba(colour));
+    let mut bytes = std::io::Cursor::new(Vec::new());
+    common::image::DynamicImage::ImageRgba8(image).write_to(&mut bytes, format).unwrap();
+    bytes.into_inner()
+}
+
+/// The material of the model's first part.
+fn first_material(loaded: &obj::LoadedModel) -> &textures::mesh::MaterialDesc {
+    &loaded.model.materials[loaded.model.parts[0].material]
+}
+
+// Issue 25, kind 1: text as Windows writes it.
+#[test]
+fn utf16_latin1_crlf_and_names_with_trailing_spaces_load() {
+    let utf16 = |text: &str, big_endian: bool| -> Vec<u8> {
+        let bom: [u8; 2] = if big_endian { [0xFE, 0xFF] } else { [0xFF, 0xFE] };
+        let units = text.encode_utf16().flat_map(|u| if big_endian { u.to_be_bytes() } else { u.to_le_bytes() });
+        bom.into_iter().chain(units).collect()
+    };
+    // UTF-16 little-endian with CRLF; its MTL big-endian, names padded.
+    let obj = "# exported\r\nmtllib wide.mtl\r\nv 0 0 0\r\nv 1 0 0\r\nv 0 1 0\r\nvt 0 0\r\nvn 0 0 1\r\n\
+               usemtl red \t\r\nf 1/1/1 2/1/1 3/1/1\r\n";
+    let mtl = "newmtl red   \r\nKd 1 0 0\r\n";
+    let dir = folder_of_bytes("utf16", &[("wide.obj", &utf16(obj, false)), ("wide.mtl", &utf16(mtl, true))]);
+    let loaded = load(&dir.join("wide.obj")).unwrap();
+    assert!(loaded.warnings.is_empty(), "{:?}", loaded.warnings);
+    assert_eq!(first_material(&loaded).name, "red");
+    assert_eq!(first_material(&loaded).diffuse, Vec3::new(1.0, 0.0, 0.0));
+
+    // Latin-1 (3ds Max on a French Windows) in a comment and in names.
+    let obj = b"# mod\xe8le\nmtllib mat.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nvt 0 0\nusemtl Mat\xe9riau 01\nf 1/1 2/1 3/1\n";
+    let mtl = b"newmtl Mat\xe9riau 01  \nKd 0 1 0\n";
+    let dir = folder_of_bytes("latin1", &[("old.obj", obj), ("mat.mtl", mtl)]);
+    let loaded = load(&dir.join("old.obj")).unwrap();
+    assert_eq!(first_material(&loaded).name, "Matériau 01");
+    assert_eq!(first_material(&loaded).diffuse, Vec3::new(0.0, 1.0, 0.0));
+    let latin1: Vec<&String> = loaded.warnings.iter().filter(|w| w.contains("Latin-1")).collect();
+    assert_eq!(latin1.len(), 2, "one warning per file: {:?}", loaded.warnings);
+    assert!(latin1[0].contains("old.obj: line 1 and 1 more"), "{}", latin1[0]);
+    assert!(latin1[1].contains("mat.mtl: line 1 is not UTF-8"), "{}", latin1[1]);
+
+    // What cannot be read at all says where and why, never just "read error".
+    let long_line = format!("v 0 0 0\n# {}\n", "x".repeat(2000));
+    let limits = obj::Limits { line_bytes: 1000, ..obj::Limits::DEFAULT };
+    for (case, bytes, expected) in [
+        ("binary", &b"v 0 0 0\nv 1\x00 0 0\n"[..], "binary.obj: line 2: a zero byte"),
+        ("long", long_line.as_bytes(), "long.obj: line 2: 2002 bytes on one line"),
+    ] {
+        let dir = folder_of_bytes(case, &[(&format!("{case}.obj"), bytes)]);
+        let path = dir.join(format!("{case}.obj"));
+        let error = obj::load_within(&path, &|p: &Path| common::files::read(p), limits).unwrap_err().to_string();
+        assert!(error.contains(expected) && !error.contains("read error"), "{error}");
+    }
+}
+
+// Issue 25, kind 2: vertex colours, read in linear light.
+#[test]
+fn vertex_colours_are_read_in_linear_light() {
+    let text = "v 0 0 0 1 0 0\nv 1 0 0 0 1 0\nv 0 1 0 0.5 0.5 0.5\nv 1 1 0\nf 1 2 3\nf 2 4 3\n";
+    let dir = folder("colours", &[("coloured.obj", text), ("plain.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n")]);
+    let loaded = load(&dir.join("coloured.obj")).unwrap();
+    assert!(loaded.vertex_colours);
+    assert!(loaded.model.materials.iter().all(|m| m.vertex_colours));
+    let colour_at = |position: [f32; 3]| loaded.model.vertices.iter().find(|v| v.position == position).unwrap().colour;
+    assert_eq!(colour_at([0.0, 0.0, 0.0]), [1.0, 0.0, 0.0]);
+    assert_eq!(colour_at([1.0, 0.0, 0.0]), [0.0, 1.0, 0.0]);
+    // sRGB 0.5 is 21 % of the light of white.
+    assert!((colour_at([0.0, 1.0, 0.0])[0] - 0.2140).abs() < 1e-3, "{:?}", colour_at([0.0, 1.0, 0.0]));
+    // A vertex without a colour, in a file with colours, is white.
+    assert_eq!(colour_at([1.0, 1.0, 0.0]), [1.0; 3]);
+    let plain = load(&dir.join("plain.obj")).unwrap();
+    assert!(!plain.vertex_colours && plain.model.materials.iter().all(|m| !m.vertex_colours));
+    assert!(plain.model.vertices.iter().all(|v| v.colour == [1.0; 3]));
+}
+
+/// A cube whose corners are all `colour` (an OBJ colour, 0 to 1).
+fn coloured_cube(colour: &str) -> String {
+    let mut text = String::new();
+    for corner in 0..8 {
+        let [x, y, z] = [corner & 1, (corner >> 1) & 1, (corner >> 2) & 1];
+        text += &format!("v {x} {y} {z} {colour}\n");
+    }
+    text + "f 1 3 4 2\nf 5 6 8 7\nf 1 2 6 5\nf 3 7 8 4\nf 1 5 7 3\nf 2 4 8 6\n"
+}
+
+// Issue 25, kind 2: vertex colours are drawn, and the model's facts say so.
+#[test]
+fn vertex_colours_are_drawn() {
+    let dir = folder("colours-drawn", &[("red.obj", &coloured_cube("1 0 0")), ("white.obj", &coloured_cube("1 1 1"))]);
+    let gpu = gpu();
+    let view = common::chapter::view_index::<TexturesChapter>("car").unwrap();
+    let target = Target { format: OFFSCREEN_FORMAT, width: 64, height: 64 };
+    let mut reddish = Vec::new();
+    for name in ["red.obj", "white.obj"] {
+        let mut chapter = chapter_with_model(&gpu, &dir.join(name), (64, 64));
+        let facts = chapter.featured.facts();
+        assert!(facts.contains("it has vertex colours"), "{name}: the model's facts say so: {facts}");
+        chapter.select_view(view);
+        let picture = capture(&gpu, &mut chapter, target, TexturesChapter::SNAPSHOT_TIME, view).unwrap();
+        reddish.push(picture.pixels().filter(|p| i32::from(p[0]) > 2 * i32::from(p[1]) + 20).count());
+    }
+    assert!(reddish[0] > reddish[1] + 100, "the red cube is red: {reddish:?} reddish pixels (red, white)");
+}
+
+// Issue 25, kind 3: BMP and TGA textures on the desktop.
+#[test]
+fn bmp_and_tga_textures_are_read() {
+    use common::image::ImageFormat;
+    for (name, format) in [("wood.bmp", ImageFormat::Bmp), ("wood.tga", ImageFormat::Tga)] {
+        let bytes = picture([200, 120, 40, 255], 4, format);
+        let image = common::texture::decode_named(name, &bytes).unwrap_or_else(|e| panic!("{name}: {e:#}"));
+        assert_eq!((image.width(), image.get_pixel(3, 3).0), (4, [200, 120, 40, 255]), "{name}");
+    }
+    let error = common::texture::decode_named("wood.tga", b"not a picture").unwrap_err();
+    assert!(format!("{error:#}").contains("wood.tga is not a readable"), "{error:#}");
+}
+
+// Issue 25, kind 4: texture paths written on another machine.
+#[test]
+fn texture_paths_from_other_machines_are_found_by_their_name() {
+    let png = picture([255; 4], 2, common::image::ImageFormat::Png);
+    let mtl = "newmtl wood\nmap_Kd C:\\\\Users\\\\Ann Lee\\\\My Textures\\\\dungeon_texture.png\n\
+               newmtl stone\nmap_Kd /home/bob/textures/stone.png\n\
+               newmtl lost\nmap_Kd D:\\\\lost\\\\nowhere.png\n";
+    let obj = "mtllib materials/scene.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nvt 0 0\nusemtl wood\nf 1/1 2/1 3/1\n";
+    let dir = folder_of_bytes(
+        "elsewhere",
+        &[
+            ("scene.obj", obj.as_bytes()),
+            ("materials/scene.mtl", mtl.as_bytes()),
+            ("materials/dungeon_texture.png", &png),
+            ("stone.png", &png),
+        ],
+    );
+    let loaded = load(&dir.join("scene.obj")).unwrap();
+    let read = |p: &Path| common::files::read(p);
+    let found = |name: &str| {
+        let material = loaded.model.materials.iter().find(|m| m.name == name).unwrap();
+        assert_eq!(material.texture_folders, [dir.join("materials"), dir.clone()], "beside the MTL, then the OBJ");
+        let folders: Vec<&Path> = material.texture_folders.iter().map(PathBuf::as_path).collect();
+        obj::find_file(material.albedo_map.as_ref().unwrap(), Path::new(""), &folders, &read)
+    };
+    match found("wood") {
+        obj::Found::Elsewhere { path, .. } => assert_eq!(path, dir.join("materials/dungeon_texture.png")),
+        _ => panic!("the wood texture is beside the MTL"),
+    }
+    match found("stone") {
+        obj::Found::Elsewhere { path, .. } => assert_eq!(path, dir.join("stone.png")),
+        _ => panic!("the stone texture is beside the OBJ"),
+    }
+    match found("lost") {
+        obj::Found::Nowhere { error, tried } => {
+            assert!(error.to_string().contains("no such file"), "{error}");
+            let expected =
+                [dir.join("materials/D:/lost/nowhere.png"), dir.join("materials/nowhere.png"), dir.join("nowhere.png")];
+            assert_eq!(tried, expected, "every place tried");
+        }
+        _ => panic!("the lost texture is nowhere"),
+    }
+}
+
+// Issue 25, kind 5: `mtllib` with several files, or one with spaces.
+#[test]
+fn mtllib_may_name_several_files_or_one_whose_name_has_spaces() {
+    let faces =
+        "v 0 0 0\nv 1 0 0\nv 0 1 0\nvt 0 0\nvn 0 0 1\nusemtl a\nf 1/1/1 2/1/1 3/1/1\nusemtl b\nf 3/1/1 2/1/1 1/1/1\n";
+    let dir = folder(
+        "mtllib",
+        &[
+            ("list.obj", &format!("mtllib first.mtl missing.mtl second.mtl\n{faces}")),
+            ("spaces.obj", &format!("mtllib my materials.mtl\n{faces}")),
+            ("windows.obj", &format!("mtllib C:\\\\Work\\\\first.mtl\n{faces}")),
+            ("first.mtl", "newmtl a\nKd 1 0 0\n"),
+            ("second.mtl", "newmtl b\nKd 0 0 1\n"),
+            ("my materials.mtl", "newmtl a\nKd 1 0 0\nnewmtl b\nKd 0 0 1\n"),
+        ],
+    );
+    let names = |loaded: &obj::LoadedModel| -> Vec<String> {
+        loaded.model.parts.iter().map(|p| loaded.model.materials[p.material].name.clone()).collect()
+    };
+    let list = load(&dir.join("list.obj")).unwrap();
+    assert_eq!(names(&list), ["a", "b"]);
+    assert_eq!(list.material_files, [dir.join("first.mtl"), dir.join("second.mtl")]);
+    assert_eq!(list.warnings.len(), 1, "{:?}", list.warnings);
+    assert!(list.warnings[0].contains("missing.mtl: no such file"), "{}", list.warnings[0]);
+    let spaces = load(&dir.join("spaces.obj")).unwrap();
+    assert_eq!((names(&spaces), spaces.warnings.len()), (vec!["a".to_string(), "b".to_string()], 0));
+    let windows = load(&dir.join("windows.obj")).unwrap();
+    assert_eq!(windows.material_files, [dir.join("first.mtl")]);
+    assert!(windows.warnings.iter().any(|w| w.contains("not found as written; using")), "{:?}", windows.warnings);
+}
+
+// Issue 25, kind 6: texture coordinate and normal indices past the end.
+#[test]
+fn out_of_range_texture_coordinates_and_normals_are_left_out() {
+    let text = "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 1 1 0\nvt 0 0\nvt 1 0\nvt 0 1\nvn 0 0 1\n\
+                f 1/1/1 2/2/1 3/9/1\n\
+                f 2/2/7 4/3/1 3/3/1\n\
+                f 2/2/1 4/3/9000000000000000000 3/3/1\n";
+    let dir = folder("out-of-range", &[("range.obj", text)]);
+    let loaded = load(&dir.join("range.obj")).unwrap();
+    assert_eq!(loaded.model.triangle_count(), 3);
+    let says = |words: &[&str]| loaded.warnings.iter().filter(|w| words.iter().all(|x| w.contains(x))).count();
+    assert_eq!(says(&["range.obj: line 9: texture coordinate index", "(1 in all)"]), 1, "{:?}", loaded.warnings);
+    assert_eq!(says(&["range.obj: line 10: normal index", "(2 in all)"]), 1, "{:?}", loaded.warnings);
+    assert_eq!(says(&["without normals; computed"]), 1, "{:?}", loaded.warnings);
+    assert_eq!(says(&["without texture coordinates; drawn untextured"]), 1, "{:?}", loaded.warnings);
+    assert!(loaded.model.vertices.iter().all(|v| (Vec3::from(v.normal) - Vec3::Z).length() < 1e-6));
+}
+
+// Issue 25, kind 7: coordinates that are not finite numbers.
+#[test]
+fn non_finite_coordinates_are_left_out_with_their_faces() {
+    let text = "v 0 0 0\nv 1 0 0\nv 0 1 0\nv nan 0 0\nv 1 1.#IND 0\nv inf 0 1\nv -1.#QNAN0 2 2\nv 1e39 0 0\n\
+                vn 0 0 1\nvn -nan(ind) 0 1\n\
+                f 1//1 2//1 3//1\nf 1 2 4\nf 2 5 3\nf 1 6 7 8\nf 1//2 3//1 2//1\n";
+    let dir = folder("not-finite", &[("nan.obj", text)]);
+    let loaded = load(&dir.join("nan.obj")).unwrap();
+    assert_eq!(loaded.model.triangle_count(), 2, "the faces on finite positions stay");
+    assert!(loaded.model.vertices.iter().all(|v| Vec3::from(v.position).is_finite()));
+    let about: Vec<&String> = loaded.warnings.iter().filter(|w| w.contains("not finite")).collect();
+    assert_eq!(about.len(), 2, "{:?}", loaded.warnings);
+    assert!(about[0].contains("nan.obj: line 4: 5 position(s)") && about[0].contains("left out, with the faces"));
+    assert!(about[1].contains("nan.obj: line 10: 1 normal(s)") && about[1].contains("computed instead"));
+}
+
+/// The area of the triangles of `model`, each counted as positive.
+fn area(model: &textures::mesh::ModelData) -> f32 {
+    let p = |i: u32| Vec3::from(model.vertices[i as usize].position);
+    model.indices.chunks_exact(3).map(|t| (p(t[1]) - p(t[0])).cross(p(t[2]) - p(t[0])).length() / 2.0).sum()
+}
+
+// Issue 25, kind 8: concave faces are cut into ears, in their own plane.
+#[test]
+fn concave_faces_are_cut_into_ears() {
+    // A star of 33 points (66 corners), tilted out of every axis plane; and
+    // a comb. Fans from the first corner would cover more than the face.
+    let tilt = common::glam::Quat::from_euler(common::glam::EulerRot::XYZ, 0.4, 0.7, 0.2);
+    let face = |corners: &[(f32, f32)]| {
+        let mut text = String::new();
+        for &(x, y) in corners {
+            let p = tilt * Vec3::new(x, y, 0.0) + Vec3::new(3.0, 1.0, -2.0);
+            text += &format!("v {} {} {}\n", p.x, p.y, p.z);
+        }
+        let numbers: Vec<String> = (1..=corners.len()).map(|i| format!("{i}/1/1")).collect();
+        text + "vt 0 0\nvn 0 0 1\nf " + &numbers.join(" ") + "\n"
+    };
+    let star: Vec<(f32, f32)> = (0..66)
+        .map(|i| {
+            let (s, c) = (i as f32 * std::f32::consts::TAU / 66.0).sin_cos();
+            let r = if i % 2 == 0 { 1.0 } else { 0.4 };
+            (r * c, r * s)
+        })
+        .collect();
+    // Shoelace: the star's own area.
+    let star_area: f32 =
+        (0..66).map(|i| star[i].0 * star[(i + 1) % 66].1 - star[(i + 1) % 66].0 * star[i].1).sum::<f32>() / 2.0;
+    let comb = [(0.0, 0.0), (7.0, 0.0), (7.0, 3.0), (6.0, 3.0), (6.0, 1.0), (5.0, 1.0), (5.0, 3.0), (4.0, 3.0)]
+        .into_iter()
+        .chain([(4.0, 1.0), (3.0, 1.0), (3.0, 3.0), (2.0, 3.0), (2.0, 1.0), (1.0, 1.0), (1.0, 3.0), (0.0, 3.0)])
+        .collect::<Vec<(f32, f32)>>();
+    let comb_area: f32 = (0..comb.len())
+        .map(|i| comb[i].0 * comb[(i + 1) % comb.len()].1 - comb[(i + 1) % comb.len()].0 * comb[i].1)
+        .sum::<f32>()
+        / 2.0;
+    let dir = folder("ears", &[("star.obj", &face(&star)), ("comb.obj", &face(&comb))]);
+    let normal = tilt * Vec3::Z;
+    for (name, corners, expected) in [("star.obj", 66, star_area), ("comb.obj", comb.len(), comb_area)] {
+        let loaded = load(&dir.join(name)).unwrap();
+        let model = &loaded.model;
+        assert_eq!(model.triangle_count(), corners - 2, "{name}");
+        assert!((area(model) - expected).abs() < 1e-3 * expected, "{name}: {} against {expected}", area(model));
+        let p = |i: u32| Vec3::from(model.vertices[i as usize].position);
+        for t in model.indices.chunks_exact(3) {
+            let winding = (p(t[1]) - p(t[0])).cross(p(t[2]) - p(t[0])).dot(normal);
+            assert!(winding > -1e-6, "{name}: every triangle winds as the face does");
+        }
+        assert!(loaded.warnings.is_empty(), "{name}: {:?}", loaded.warnings);
+    }
+}
+
+// Issue 25, "also": files too large are refused with a message, quickly.
+#[test]
+fn too_many_triangles_or_elements_are_refused_with_the_line() {
+    let limits = obj::Limits { line_bytes: 1 << 20, elements: 100, triangles: 50 };
+    let mut text = String::from("v 0 0 0\nv 1 0 0\nv 0 1 0\n");
+    for _ in 0..60 {
+        text += "f 1 2 3\n";
+    }
+    let many_positions = "v 0 0 0\n".repeat(101);
+    let dir = folder("limits", &[("faces.obj", &text), ("positions.obj", &many_positions)]);
+    let read = |p: &Path| common::files::read(p);
+    let error = obj::load_within(&dir.join("faces.obj"), &read, limits).unwrap_err().to_string();
+    assert!(error.contains("faces.obj: line 54: more than 50 triangles"), "{error}");
+    let error = obj::load_within(&dir.join("positions.obj"), &read, limits).unwrap_err().to_string();
+    assert!(error.contains("positions.obj: line 101: more than 100 positions"), "{error}");
 }

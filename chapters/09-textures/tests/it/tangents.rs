@@ -1,7 +1,8 @@
-//! Tangents on every primitive of `common` and every model of the project:
-//! unit length, at right angles to the normal, pointing the way u grows,
-//! and close to what MikkTSpace (the reference implementation that
-//! Blender and glTF use, here as the `bevy_mikktspace` crate) computes.
+//! Tangents on every primitive of `common` and on the three models this
+//! chapter builds in (car, tower, boat; not chapter 10's): unit length, at
+//! right angles to the normal, pointing the way u grows, and close to what
+//! MikkTSpace (the reference implementation that Blender and glTF use, here
+//! as the `bevy_mikktspace` crate) computes.
 
 use std::path::Path;
 
@@ -116,7 +117,7 @@ fn compare_with_mikktspace(model: &ModelData) -> (f32, f32, usize, usize) {
 }
 
 // ANCHOR: mikktspace
-/// Our tangents against MikkTSpace's on every primitive and model: the
+/// Our tangents against MikkTSpace's on every model of `models()`: the
 /// same handedness at every corner; within 1° everywhere (0.1° on average)
 /// but on `common`'s cone. There MikkTSpace, which averages only triangles
 /// joined by edges around a vertex, keeps one tangent per triangle along

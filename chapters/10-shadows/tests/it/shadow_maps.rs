@@ -159,7 +159,7 @@ fn a_box_above_a_plane_casts_the_shadow_geometry_predicts() {
 /// Pixels whose surface faces the sun and yet get less than half its light.
 fn shadowed_lit_faces(gpu: &Gpu, view: &str) -> (usize, usize) {
     let target = Target { format: OFFSCREEN_FORMAT, width: 480, height: 270 };
-    let mut chapter = ShadowsChapter::new(gpu, target).unwrap();
+    let mut chapter = ShadowsChapter::new(gpu, target, ()).unwrap();
     let index = common::chapter::view_index::<ShadowsChapter>(view).unwrap();
     chapter.settings = shadows::Settings { show: Show::Sunlit, ..shadows::VIEW_TABLE[index].settings };
     let image = capture(gpu, &mut chapter, target, ShadowsChapter::SNAPSHOT_TIME, index).unwrap();
@@ -187,7 +187,7 @@ fn the_scripted_run_gives_the_same_bytes_however_it_was_reached() {
     let gpu = Gpu::headless(ShadowsChapter::gpu_needs()).unwrap();
     let target = Target { format: OFFSCREEN_FORMAT, width: 320, height: 180 };
     let picture = |times: &[f32]| {
-        let mut chapter = ShadowsChapter::new(&gpu, target).unwrap();
+        let mut chapter = ShadowsChapter::new(&gpu, target, ()).unwrap();
         let mut last = None;
         for &time in times {
             last = Some(capture(&gpu, &mut chapter, target, time, 0).unwrap());
@@ -228,7 +228,7 @@ fn a_key_takes_over_from_the_demo_and_every_key_at_once_breaks_nothing() {
     use common::winit::keyboard::KeyCode;
     let gpu = Gpu::headless(ShadowsChapter::gpu_needs()).unwrap();
     let target = Target { format: OFFSCREEN_FORMAT, width: 160, height: 90 };
-    let mut chapter = ShadowsChapter::new(&gpu, target).unwrap();
+    let mut chapter = ShadowsChapter::new(&gpu, target, ()).unwrap();
     let demo = capture(&gpu, &mut chapter, target, 0.0, 0).unwrap();
     let mut input = Input::default();
     chapter.update(&input, 1.0 / 60.0);
