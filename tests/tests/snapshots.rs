@@ -87,7 +87,8 @@ fn readme_and_summary_follow_the_records() -> Result<(), Failed> {
 
 /// A later chapter reuses an earlier one's pieces (a renderer, a post
 /// chain), never the earlier chapter itself: no chapter's source names
-/// another chapter's `Chapter` type.
+/// another chapter's `Chapter` type, and no piece uses its own chapter's
+/// demo module.
 fn chapters_compose_pieces_not_chapters() -> Result<(), Failed> {
     let chapters_dir = Path::new(env!("CARGO_MANIFEST_DIR")).join("../chapters");
     let records = snapshots::chapters();
@@ -96,6 +97,12 @@ fn chapters_compose_pieces_not_chapters() -> Result<(), Failed> {
         let dir = dir.map_err(|e| e.to_string())?.path();
         for file in rust_files(&dir.join("src")).map_err(|e| e.to_string())? {
             let text = std::fs::read_to_string(&file).map_err(|e| e.to_string())?;
+            // A piece stands without its chapter's demo: a later chapter
+            // composing it must not need the demo's settings.
+            let is_demo = file.file_name().is_some_and(|f| f == "demo.rs" || f == "lib.rs" || f == "main.rs");
+            if !is_demo && text.contains("crate::demo") {
+                problems.push(format!("{} is a piece but uses its chapter's demo", file.display()));
+            }
             for record in &records {
                 let (krate, type_name) = (
                     record.type_name.split("::").next().unwrap_or_default(),

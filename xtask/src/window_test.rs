@@ -366,8 +366,19 @@ fn drive(display: &Display, chapter: &str, dir: &Path) -> anyhow::Result<String>
     ))
 }
 
-/// Runs the test for `chosen` chapters (all of them when empty).
+/// Builds the chapters, then runs the test for `chosen` chapters (all of
+/// them when empty).
 pub fn run(chosen: &[String]) -> anyhow::Result<()> {
+    let all = chapter_names()?;
+    if let Some(bad) = chosen.iter().find(|c| !all.contains(c)) {
+        bail!("unknown chapter '{bad}'; the chapters are: {}", all.join(", "));
+    }
+    crate::cargo(&["build", "--workspace", "--bins"])?;
+    run_built(chosen)
+}
+
+/// [`run`] on chapters already built (`cargo xtask test` builds everything first).
+pub fn run_built(chosen: &[String]) -> anyhow::Result<()> {
     let all = chapter_names()?;
     if let Some(bad) = chosen.iter().find(|c| !all.contains(c)) {
         bail!("unknown chapter '{bad}'; the chapters are: {}", all.join(", "));
@@ -376,7 +387,6 @@ pub fn run(chosen: &[String]) -> anyhow::Result<()> {
         println!("\nwindow test skipped: no X server available on this system");
         return Ok(());
     }
-    crate::cargo(&["build", "--workspace", "--bins"])?;
     let dir = std::env::temp_dir().join(format!("window-test-{}", std::process::id()));
     std::fs::create_dir_all(&dir)?;
     // Two chapters at a time, each on its own X display (pointer and

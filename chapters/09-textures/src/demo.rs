@@ -24,7 +24,7 @@ use crate::mesh::{GpuModel, ModelData, ModelInstance};
 use crate::mipmaps::MipMaker;
 use crate::obj::{self, LoadedModel, ReadFile};
 use crate::scenes;
-use crate::textured_renderer::{Draw, DrawList, TexturedRenderer, upload_model};
+use crate::textured_renderer::{Draw, DrawList, SurfaceOptions, TexturedRenderer, upload_model};
 
 // ANCHOR: views
 /// Every view, once: what it shows, and for a preset where the camera goes.
@@ -659,7 +659,14 @@ impl Chapter for TexturesChapter {
             );
             pass.set_bind_group(0, &self.scene_lights.group, &[]);
             let list = DrawList { materials: &self.materials, instances: &self.instances, draws };
-            self.renderer.draw(gpu, &mut pass, &s, self.target.width, &list);
+            let surfaces = SurfaceOptions {
+                sampler: s.sampler,
+                normal_maps: s.normal_maps,
+                flip_green: s.flip_green,
+                swapped_colour_spaces: s.swapped_colour_spaces,
+                show_frame: s.show_frame,
+            };
+            self.renderer.draw(gpu, &mut pass, &surfaces, self.target.width, &list);
             if !s.show_frame {
                 self.sky.draw(&mut pass);
             }

@@ -27,4 +27,4 @@ pub mod textured_renderer;
 pub mod demo;
 
 pub use demo::{BuiltinModels, CameraPreset, Featured, Scene, Settings, Tangents, TexturesChapter, VIEW_TABLE};
-pub use textured_renderer::{Draw, DrawList, TexturedRenderer, upload_model};
+pub use textured_renderer::{Draw, DrawList, SurfaceOptions, TexturedRenderer, upload_model};

@@ -8,7 +8,6 @@ use common::chapter::{mesh_pipeline, sampler_entry, storage_entry};
 use common::{Gpu, Reloadable, ShaderError, shader, wgpu};
 use lighting::{HDR_FORMAT, SceneLights};
 
-use crate::demo::Settings;
 use crate::materials::{Materials, SamplerMode, Uploader};
 use crate::mesh::{GpuModel, ModelData, ModelInstance, TexturedVertex};
 
@@ -147,7 +146,7 @@ impl TexturedRenderer {
         &self,
         gpu: &Gpu,
         pass: &mut wgpu::RenderPass<'_>,
-        settings: &Settings,
+        settings: &SurfaceOptions,
         target_width: u32,
         list: &DrawList,
     ) {
@@ -168,6 +167,20 @@ impl TexturedRenderer {
         list.draw(pass, settings.swapped_colour_spaces);
     }
     // ANCHOR_END: draw
+}
+
+/// How [`TexturedRenderer::draw`] shades surfaces: what chapter 09's views
+/// switch between.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct SurfaceOptions {
+    pub sampler: SamplerMode,
+    pub normal_maps: bool,
+    /// Read normal maps' green as pointing down the image (DirectX's way).
+    pub flip_green: bool,
+    /// Albedo read as linear data and normal maps as sRGB: the mistake.
+    pub swapped_colour_spaces: bool,
+    /// Show the tangent frame as colours instead of the picture.
+    pub show_frame: bool,
 }
 
 /// Uploads `model`'s materials and then the model.
