@@ -470,9 +470,9 @@ fn test_chapter(browser: &Browser, base: &str, entry: &course::Record) -> anyhow
     let start = page.wait_for("a live frame", |p| p.drawn >= 1)?;
     lap!("first live frame");
     if entry.prepares_in_steps {
-        // Chapters 03-07 draw chapter 03's terrain, whose frames take 5 to
-        // 30 s each in SwiftShader: their page is checked to run live, and
-        // no more. The key, the drag and the collapsed canvas go through
+        // Chapters 03-07 draw chapter 03's terrain, whose frames take 3.6
+        // to 23.6 s each in SwiftShader (book/src/bench/web.md): their page
+        // is checked to run live, and no more. The key, the drag and the collapsed canvas go through
         // the same runner on every page, checked here on the other six
         // chapters; what each chapter does with them (camera, resizing) is
         // checked natively for every chapter by the window test.

@@ -122,7 +122,7 @@ pub fn perlin3(x: f64, y: f64, z: f64) -> f64 {
 // ANCHOR_END: perlin3
 
 // ANCHOR: fbm
-/// Fractal Brownian motion: several octaves of noise, each at `lacunarity`
+/// Fractional Brownian motion (fBm): several octaves of noise, each at `lacunarity`
 /// times the frequency and `persistence` times the amplitude of the last.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Fbm {

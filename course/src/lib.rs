@@ -20,69 +20,83 @@ use common::{Camera, Chapter, Gpu, GpuNeeds, PassTimer, Target, Tolerance, View,
 pub fn chapters() -> Vec<Record> {
     vec![
         record::<triangle::Triangle>(
-            BASICS,
+            &BASICS,
             "default",
             "buffers, WGSL, a render pipeline, per-vertex colour interpolation",
         ),
         record::<camera::CameraChapter>(
-            BASICS,
+            &BASICS,
             "default",
             "model/view/projection, fly camera, primitives, depth buffer",
         ),
         record::<terrain::TerrainChapter>(
-            MARS,
+            &MARS,
             "default",
             "improved Perlin noise, fBm, chunked height-map mesh, seamless normals, frustum culling",
         ),
         record::<fog::FogChapter>(
-            MARS,
+            &MARS,
             "default",
             "exponential distance fog matched to the sky, far plane at the opaque distance, WGSL modules",
         ),
         record::<instancing::InstancingChapter>(
-            MARS,
+            &MARS,
             "default",
             "one instanced draw for up to a million rocks, against one draw per rock; the Mars plain so far",
         ),
         record::<skybox::SkyboxChapter>(
-            MARS,
+            &MARS,
             "dusk",
             "day and night cube maps, a turning sky whose sun is the light, fog that follows the sky",
         ),
         record::<water::WaterChapter>(
-            MARS,
+            &MARS,
             "default",
             "reflection and refraction pictures, clip distances, Fresnel, DuDv ripples, soft shores, sine waves: the Mars scene, complete",
         ),
         record::<lighting::LightingChapter>(
-            CITY,
+            &CITY,
             "night",
             "a city by day and night: Lambert, Phong and Blinn-Phong; flat, Gouraud and Phong shading; point and spot lights; 339 lights culled per cluster; HDR, bloom, ACES",
         ),
         record::<textures::TexturesChapter>(
-            CITY,
+            &CITY,
             "night",
             "the city textured: UVs and texel density, samplers and GPU mipmaps, sRGB, OBJ + MTL models (`--model PATH.obj` shows yours), tangents and normal maps",
         ),
         record::<shadows::ShadowsChapter>(
-            ENGINE,
+            &ENGINE,
             "default",
             "a side-scroller lit by the sun: a shadow map fitted to the view and snapped to texels, depth comparison, slope-scaled and normal-offset bias, hard, PCF, Poisson and PCSS filtering; swept AABB collision, fixed-step physics, parallax layers",
         ),
         record::<voronoi_water::VoronoiWaterChapter>(
-            OCEAN,
+            &OCEAN,
             "default",
             "a boat on an endless toon sea: Voronoi diagrams by cones with a depth test and by jump flooding, tiling, separable blur, Sobel edges; a grid that follows the boat in whole cells, a sea periodic in space and time, the boat riding the same waves on the CPU; gradient-texture sunsets, bloom and the boat's shadow from chapters 08 and 10",
         ),
     ]
 }
 
+/// A part of the book: its heading in the summary, and the page that opens
+/// it (the seed project it rebuilds, what that project did and where it
+/// fell short, what the part adds, and the finished scene), as its title in
+/// the summary and its file in `book/src/`.
+pub struct Part {
+    pub title: &'static str,
+    pub opening: Option<(&'static str, &'static str)>,
+}
+
 // The parts of the book, each after the seed project its chapters rebuild.
-const BASICS: &str = "The basics";
-const MARS: &str = "Prehistoric Mars";
-const CITY: &str = "The futuristic city";
-const ENGINE: &str = "The small engine";
-const OCEAN: &str = "The ocean";
+// The basics rebuild no one project (chapter 02's camera comes from two),
+// so the introduction opens them.
+static BASICS: Part = Part { title: "The basics", opening: None };
+static MARS: Part = Part { title: "Prehistoric Mars", opening: Some(("The Mars project", "part-mars.md")) };
+static CITY: Part = Part { title: "The futuristic city", opening: Some(("The city project", "part-city.md")) };
+static ENGINE: Part = Part { title: "The small engine", opening: Some(("The engine project", "part-engine.md")) };
+static OCEAN: Part = Part { title: "The ocean", opening: Some(("The ocean project", "part-ocean.md")) };
+
+/// The pages after the last chapter, as (title, file in `book/src/`).
+pub const APPENDICES: [(&str, &str); 1] = [("Appendix: Running in the browser", "running-in-the-browser.md")];
 
 /// The chapter called `name` (its package name), if there is one.
 pub fn find(name: &str) -> Option<Record> {
@@ -99,7 +113,7 @@ pub struct Record {
     /// The book's title for it.
     pub title: &'static str,
     /// The part of the book it belongs to.
-    pub part: &'static str,
+    pub part: &'static Part,
     /// The view the README shows as its picture.
     pub figure: &'static str,
     /// What it teaches, in one line.
@@ -118,7 +132,7 @@ pub struct Record {
     pub open: fn(&Gpu, Target) -> anyhow::Result<Box<dyn AnyChapter>>,
 }
 
-fn record<C: Chapter>(part: &'static str, figure: &'static str, techniques: &'static str) -> Record {
+fn record<C: Chapter>(part: &'static Part, figure: &'static str, techniques: &'static str) -> Record {
     Record {
         name: C::NAME,
         type_name: std::any::type_name::<C>(),
@@ -165,17 +179,25 @@ pub fn readme_table(chapters: &[Record]) -> String {
     table
 }
 
-/// The chapters' part of the book's `SUMMARY.md`, made from the records:
-/// a heading per part, a line per chapter.
+/// The book's `SUMMARY.md` after its first pages, made from the records: a
+/// heading per part, the page that opens the part, a line per chapter, then
+/// the appendices, unnumbered, after a rule.
 pub fn summary_chapters(chapters: &[Record]) -> String {
     let mut text = String::new();
-    let mut part = "";
+    let mut part: Option<&Part> = None;
     for c in chapters {
-        if c.part != part {
-            part = c.part;
-            text.push_str(&format!("\n# {part}\n\n"));
+        if !part.is_some_and(|p| std::ptr::eq(p, c.part)) {
+            part = Some(c.part);
+            text.push_str(&format!("\n# {}\n\n", c.part.title));
+            if let Some((title, file)) = c.part.opening {
+                text.push_str(&format!("- [{title}]({file})\n"));
+            }
         }
         text.push_str(&format!("- [{}]({})\n", c.title, page(c)));
+    }
+    text.push_str("\n---\n\n");
+    for (title, file) in APPENDICES {
+        text.push_str(&format!("[{title}]({file})\n"));
     }
     text
 }
