@@ -9,10 +9,20 @@ use anyhow::{bail, ensure};
 
 const VULKAN: [&str; 2] = ["mesa-vulkan-drivers", "libvulkan1"];
 /// Xvfb, the X libraries winit loads at run time, xdotool to drive the
-/// windows, and openbox, a small window manager (without one, X has no
-/// minimising).
-const WINDOW: [&str; 9] =
-    ["xvfb", "xauth", "libx11-xcb1", "libxcursor1", "libxrandr2", "libxi6", "libxkbcommon-x11-0", "xdotool", "openbox"];
+/// windows, openbox, a small window manager (without one, X has no
+/// minimising), and xwd (in x11-apps), which reads a window's pixels.
+const WINDOW: [&str; 10] = [
+    "xvfb",
+    "xauth",
+    "libx11-xcb1",
+    "libxcursor1",
+    "libxrandr2",
+    "libxi6",
+    "libxkbcommon-x11-0",
+    "xdotool",
+    "openbox",
+    "x11-apps",
+];
 
 /// On Linux, wgpu needs the Vulkan loader and at least one driver (ICD);
 /// with no GPU, Mesa's lavapipe is that driver.
@@ -25,7 +35,7 @@ pub fn ensure_adapter() -> anyhow::Result<()> {
     Ok(())
 }
 
-/// Xvfb, openbox and xdotool for the window test: true when they are
+/// Xvfb, openbox, xdotool and xwd (x11-apps) for the window test: true when they are
 /// there (installed now if we may), false on systems where we cannot
 /// provide them.
 pub fn ensure_window_tools() -> anyhow::Result<bool> {
@@ -33,13 +43,13 @@ pub fn ensure_window_tools() -> anyhow::Result<bool> {
         return Ok(false);
     }
     if !has_window_tools() {
-        apt_install("the window test needs Xvfb, openbox and xdotool", &WINDOW)?;
+        apt_install("the window test needs Xvfb, openbox, xdotool and xwd", &WINDOW)?;
     }
     Ok(has_window_tools())
 }
 
 fn has_window_tools() -> bool {
-    let command = "command -v Xvfb && command -v openbox && command -v xdotool";
+    let command = "command -v Xvfb && command -v openbox && command -v xdotool && command -v xwd";
     Command::new("sh").args(["-c", command]).output().is_ok_and(|o| o.status.success())
 }
 

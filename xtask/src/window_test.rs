@@ -1,8 +1,9 @@
 //! The window test: every chapter in a real window on a virtual X server,
 //! driven the way people drive windows, with `xdotool`. For each chapter it
-//! resizes the window through 1×1 and back, minimises and restores it (three
-//! times each), drags with the mouse and checks that the camera turned, holds
-//! a key and clicks the overlay and checks that the camera stops once the key
+//! reads the window's pixels back (the scene must be drawn), resizes the
+//! window through 1×1 and back, minimises and restores it (three times
+//! each), drags with the mouse and checks that the camera turned, holds a
+//! key and clicks the overlay and checks that the camera stops once the key
 //! is let go, watches memory over 2 × 10 frames, then closes the window
 //! with Esc. Any panic, wgpu validation error, non-zero exit, frame that
 //! never comes or memory that grows frame after frame fails it.
@@ -162,6 +163,38 @@ impl<'d> Session<'d> {
         session.window = display.xdotool(&["search", "--sync", "--pid", &pid, "--name", "From Triangle"])?;
         session.window = session.window.lines().next().unwrap_or_default().to_string();
         Ok(session)
+    }
+
+    /// The window's pixels as X shows them (what the chapter presented,
+    /// overlay included), read with `xwd` and returned as RGB rows.
+    fn picture(&self) -> anyhow::Result<(u32, u32, Vec<[u8; 3]>)> {
+        let output = Command::new("xwd")
+            .args(["-silent", "-id", &self.window])
+            .env("DISPLAY", &self.display.name)
+            .output()
+            .context("xwd")?;
+        ensure!(output.status.success(), "xwd failed: {}", String::from_utf8_lossy(&output.stderr));
+        parse_xwd(&output.stdout).with_context(|| format!("{}: cannot read xwd's picture", self.chapter))
+    }
+
+    /// The picture right of the overlay's panel shows the scene: more than
+    /// one colour there (a window that presents nothing, or the clear
+    /// colour alone, is one colour). Returns how many it found.
+    fn scene_is_drawn(&self) -> anyhow::Result<usize> {
+        let (width, height, pixels) = self.picture()?;
+        let mut colours: Vec<[u8; 3]> = (0..height)
+            .flat_map(|y| (width * 3 / 4..width).map(move |x| (x, y)))
+            .map(|(x, y)| pixels[(y * width + x) as usize])
+            .collect();
+        colours.sort_unstable();
+        colours.dedup();
+        ensure!(
+            colours.len() >= 2,
+            "{}: the window's right quarter is one colour ({:?}): the scene was not drawn",
+            self.chapter,
+            colours.first()
+        );
+        Ok(colours.len())
     }
 
     fn read(&self) -> Option<Probe> {
@@ -337,10 +370,37 @@ impl Drop for Session<'_> {
     }
 }
 
+/// Reads an X window dump (`xwd`'s XWDFile: a header of 25 big-endian
+/// 32-bit fields, the window's name, a colour map, then the pixels) of
+/// a true-colour window into RGB pixels.
+fn parse_xwd(bytes: &[u8]) -> anyhow::Result<(u32, u32, Vec<[u8; 3]>)> {
+    let field = |i: usize| -> anyhow::Result<u32> {
+        let b = bytes.get(4 * i..4 * i + 4).context("short header")?;
+        Ok(u32::from_be_bytes([b[0], b[1], b[2], b[3]]))
+    };
+    let (header, format, width, height) = (field(0)?, field(2)?, field(4)?, field(5)?);
+    let (byte_order, bits_per_pixel, bytes_per_line) = (field(7)?, field(11)?, field(12)?);
+    let masks = [field(14)?, field(15)?, field(16)?];
+    let colours = field(19)?;
+    ensure!(format == 2 && bits_per_pixel == 32, "not a 32-bit ZPixmap (format {format}, {bits_per_pixel} bits)");
+    let start = header as usize + 12 * colours as usize;
+    let mut pixels = Vec::with_capacity((width * height) as usize);
+    for y in 0..height as usize {
+        for x in 0..width as usize {
+            let at = start + y * bytes_per_line as usize + 4 * x;
+            let b: [u8; 4] = bytes.get(at..at + 4).context("short pixel data")?.try_into()?;
+            let value = if byte_order == 0 { u32::from_le_bytes(b) } else { u32::from_be_bytes(b) };
+            pixels.push(masks.map(|mask| ((value & mask) >> mask.trailing_zeros()) as u8));
+        }
+    }
+    Ok((width, height, pixels))
+}
+
 /// Runs one chapter through everything; returns a one-line summary.
 fn drive(display: &Display, chapter: &str, dir: &Path) -> anyhow::Result<String> {
     let started = Instant::now();
     let mut session = Session::start(display, chapter, dir)?;
+    let colours = session.scene_is_drawn()?;
     session.resize_through_one_pixel()?;
     session.minimise_and_restore()?;
     let (before, after) = session.drag()?;
@@ -359,7 +419,7 @@ fn drive(display: &Display, chapter: &str, dir: &Path) -> anyhow::Result<String>
     session.close()?;
     let gpu = gpu.map_or("no GPU count".into(), |g| format!("GPU {:+.1} KB", g / 1024.0));
     Ok(format!(
-        "{chapter}: {CYCLES}× resized through 1×1, {CYCLES}× minimised and restored, {}, memory {:+.1} KB and {gpu} a frame, closed cleanly ({:.0} s)",
+        "{chapter}: {colours} colours drawn right of the panel, {CYCLES}× resized through 1×1, {CYCLES}× minimised and restored, {}, memory {:+.1} KB and {gpu} a frame, closed cleanly ({:.0} s)",
         if turned { "drag turned the camera, W stopped on release" } else { "no camera to drag" },
         process / 1024.0,
         started.elapsed().as_secs_f64()
