@@ -3,21 +3,21 @@
 //! centre of the picture.
 
 use common::headless::{OFFSCREEN_FORMAT, capture};
-use common::{Camera, Chapter, Gpu, GpuNeeds, Target};
+use common::{Camera, Chapter, Target};
 use skybox::{SkyboxChapter, sun_at};
 
 #[test]
 fn the_sun_is_drawn_where_the_light_comes_from() {
-    let gpu = Gpu::headless(GpuNeeds::default()).expect("an adapter (lavapipe will do)");
+    let gpu = crate::plain_gpu();
     let target = Target { format: OFFSCREEN_FORMAT, width: 240, height: 136 };
-    let mut chapter: SkyboxChapter = common::chapter::create(&gpu, target, &Default::default()).unwrap();
+    let mut chapter: SkyboxChapter = common::chapter::create(gpu, target, &Default::default()).unwrap();
     chapter.select_view(0);
     for phase in [0.30, 0.42, 0.55, 0.70] {
         chapter.settings.start_phase = phase;
         let light = sun_at(phase).direction;
         let eye = chapter.camera.position;
         chapter.camera = Camera { far: 3000.0, ..Camera::looking_at(eye, eye + light, target.aspect()) };
-        let image = capture(&gpu, &mut chapter, target, 0.0, 0).unwrap();
+        let image = capture(gpu, &mut chapter, target, 0.0, 0).unwrap();
         let (x, y, _) = image
             .enumerate_pixels()
             .max_by_key(|(_, _, p)| u32::from(p[0]) + u32::from(p[1]) + u32::from(p[2]))

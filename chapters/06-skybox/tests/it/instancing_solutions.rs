@@ -1,0 +1,459 @@
+//! Worked solutions to the exercises of book page 05 (instancing), compiled
+//! and checked here, with chapter 06's tests (see `main.rs` for why): the
+//! page includes them by anchor, and each test asserts the figure it states.
+
+use std::ops::Range;
+use std::sync::Arc;
+
+use common::glam::{Mat4, Quat, Vec3};
+use common::headless::{OFFSCREEN_FORMAT, Offscreen, capture, read_texture};
+use common::wgpu::util::DeviceExt as _;
+use common::{Camera, Chapter, Gpu, MeshData, PassTimer, ShaderFile, Target, Vertex, image, shader, wgpu};
+use fog::{FogBinding, FogSettings};
+use instancing::{InstancingChapter, RockInstance, plain_camera, rock_mesh, scatter};
+use terrain::chunks::Aabb;
+use terrain::culling::Frustum;
+use terrain::heightfield::{HeightField, TerrainSettings};
+use terrain::{KEEP_ALL, SKY, Sun, TerrainData, TerrainMesh, TerrainRenderer};
+
+/// The median frame time, in ms, of `view` in chapter 05's bench table
+/// (`book/src/bench/instancing.md`, written by `cargo xtask bench instancing`).
+fn bench_median_ms(view: &str) -> f64 {
+    let path = concat!(env!("CARGO_MANIFEST_DIR"), "/../../book/src/bench/instancing.md");
+    let table = std::fs::read_to_string(path).unwrap();
+    let row = table
+        .lines()
+        .find(|line| line.starts_with(&format!("| {view} | frame")))
+        .unwrap_or_else(|| panic!("no frame row for {view} in {path}"));
+    row.split('|').nth(4).unwrap().trim().parse().unwrap()
+}
+
+#[test]
+fn exercise_1_one_call_per_rock_draws_the_same_picture_at_4_microseconds_a_call() {
+    let gpu = crate::plain_gpu();
+    let target = Target { format: OFFSCREEN_FORMAT, width: 320, height: 180 };
+    let mut chapter: InstancingChapter = common::chapter::create(gpu, target, &Default::default()).unwrap();
+    let mut picture = |view: &str| {
+        let view = common::chapter::view_index::<InstancingChapter>(view).unwrap();
+        chapter.select_view(view);
+        let picture = capture(gpu, &mut chapter, target, 0.0, view).unwrap();
+        (picture, chapter.draw_calls.rocks)
+    };
+    // The two bench views: 10,000 rocks without the terrain, one call each
+    // and all in one call.
+    let ((one_by_one, calls), (instanced, one_call)) = (picture("naive-10k"), picture("rocks-10k"));
+    assert_eq!((calls, one_call), (10_000, 1));
+    assert_eq!(one_by_one, instanced, "the same rocks, byte for byte");
+
+    // What the extra 9,999 calls cost, from the bench table (release
+    // build, lavapipe, 1280 × 720): 67.2 ms against 23.4 ms, 4.4 µs a call.
+    let per_call_us = (bench_median_ms("naive-10k") - bench_median_ms("rocks-10k")) * 1000.0 / 9_999.0;
+    // The default view's frame, 815 ms on lavapipe, would take that many
+    // calls to double: more than the slider's 20,000 (MAX_ONE_PER_DRAW),
+    // which add 88 ms. On a GPU that draws the frame in 5 ms, 1,100 would.
+    let to_halve = bench_median_ms("default") * 1000.0 / per_call_us;
+    eprintln!("{per_call_us:.2} µs a call; the default view's frame rate halves at {to_halve:.0} calls");
+    assert!((per_call_us - 4.4).abs() < 0.7, "{per_call_us}");
+    assert!((120_000.0..260_000.0).contains(&to_halve), "{to_halve}");
+}
+
+/// A rock's model matrix as the shader builds it, with a tilt about its
+/// own x axis before the yaw: scale, tilt, turn, move.
+fn tilted_model(rock: &RockInstance, tilt: f32) -> Mat4 {
+    Mat4::from_translation(rock.position.into())
+        * Mat4::from_rotation_y(rock.yaw)
+        * Mat4::from_rotation_x(tilt)
+        * Mat4::from_scale(rock.scale.into())
+}
+
+// ANCHOR: tilted_normal
+/// Exercise 2: the normal of a tilted rock. The rotations are the same
+/// for the normal as for the position (a rotation is its own inverse
+/// transpose); only the scale is inverted, as before.
+fn tilted_normal(rock: &RockInstance, tilt: f32, normal: Vec3) -> Vec3 {
+    let turn = Quat::from_rotation_y(rock.yaw) * Quat::from_rotation_x(tilt);
+    (turn * (normal / Vec3::from(rock.scale))).normalize()
+}
+// ANCHOR_END: tilted_normal
+
+/// `rocks.wgsl`'s model transform, and the tilted one that replaces it.
+const ROCK_TRANSFORM: &str = "    let world = turn(position * rock.scale_shade.xyz, yaw) + rock.position_yaw.xyz;";
+const ROCK_NORMAL: &str = "    out.normal = turn(normal / rock.scale_shade.xyz, yaw);";
+// ANCHOR: tilted_wgsl
+/// Exercise 2, in `rocks.wgsl`: `rock_vertex`'s position, tilted…
+const TILTED_TRANSFORM: &str = "    // Exercise 2: a tilt about the rock's own x axis (here from its
+    // shade, −0.4 to 0.4 rad), between the scale and the turn.
+    let tilt = 0.8 * rock.scale_shade.w - 0.4;
+    let world = turn(tip(position * rock.scale_shade.xyz, tilt), yaw) + rock.position_yaw.xyz;";
+/// …its normal, tilted the same way…
+const TILTED_NORMAL: &str = "    // The same two rotations, after the inverse scale.
+    out.normal = turn(tip(normal / rock.scale_shade.xyz, tilt), yaw);";
+/// …and the tilt itself, a new function.
+const TIP: &str = "
+// Turns v about x by `angle` radians.
+fn tip(v: vec3<f32>, angle: f32) -> vec3<f32> {
+    let s = sin(angle);
+    let c = cos(angle);
+    return vec3<f32>(v.x, c * v.y - s * v.z, s * v.y + c * v.z);
+}
+";
+// ANCHOR_END: tilted_wgsl
+
+#[test]
+fn exercise_2_a_tilted_rock_tilts_its_normal_by_the_same_rotation() {
+    let field = HeightField::generate(TerrainSettings { chunks_per_side: 16, ..Default::default() });
+    let (rocks, mesh) = (scatter(&field, 200, 5), rock_mesh(5));
+    let (mut worst_right, mut worst_forgotten) = (0.0f32, 0.0f32);
+    for rock in &rocks {
+        let tilt = 0.8 * rock.shade - 0.4;
+        let normal_matrix = tilted_model(rock, tilt).inverse().transpose();
+        for v in &mesh.vertices {
+            let n = Vec3::from(v.normal);
+            let truth = normal_matrix.transform_vector3(n).normalize();
+            let angle = |m: Vec3| truth.dot(m).clamp(-1.0, 1.0).acos().to_degrees();
+            worst_right = worst_right.max(angle(tilted_normal(rock, tilt, n)));
+            // Forgetting the tilt: the chapter's normal, yaw and scale only.
+            worst_forgotten = worst_forgotten.max(angle(tilted_normal(rock, 0.0, n)));
+        }
+    }
+    eprintln!("normal error with the tilt: {worst_right:.3}°; without it: {worst_forgotten:.1}°");
+    assert!(worst_right < 0.05, "{worst_right}");
+    // Forgotten, the light is off by as much as the tilt itself, 0.4 rad.
+    assert!((worst_forgotten - 0.4f32.to_degrees()).abs() < 1.5, "{worst_forgotten}");
+
+    // The WGSL edit is valid against the real modules.
+    let rocks_wgsl = shader!("instancing/rocks.wgsl", imports: ["terrain/terrain.wgsl", "fog/fog.wgsl"]);
+    let mut edited = rocks_wgsl.embedded.to_string();
+    for (from, to) in [(ROCK_TRANSFORM, TILTED_TRANSFORM), (ROCK_NORMAL, TILTED_NORMAL)] {
+        assert!(edited.contains(from), "rocks.wgsl changed: update the exercise's edit");
+        edited = edited.replacen(from, to, 1);
+    }
+    edited.push_str(TIP);
+    let imports: Vec<(&str, String)> = rocks_wgsl.imports.iter().map(|i| (i.path, i.embedded.to_string())).collect();
+    common::shader::compose(&edited, rocks_wgsl.path, &imports).unwrap();
+}
+
+/// Rocks drawn by a test, with chapter 05's shader, pipeline layout and
+/// instance layout: meshes and instance ranges of the solution's choosing,
+/// from the plain's camera, in the haze, without the terrain.
+struct RockLab {
+    terrain: TerrainRenderer,
+    air: FogBinding,
+    pipeline: wgpu::RenderPipeline,
+    camera: Camera,
+    target: Target,
+}
+
+impl RockLab {
+    fn new(gpu: &Gpu) -> Self {
+        let target = Target { format: OFFSCREEN_FORMAT, width: 400, height: 225 };
+        let terrain = TerrainRenderer::new(gpu, TerrainData::get(gpu, TerrainSettings::default()));
+        let air = FogBinding::new(&gpu.device);
+        air.write(&gpu.queue, FogSettings::HAZE);
+        let layout = gpu.device.create_pipeline_layout(&wgpu::PipelineLayoutDescriptor {
+            label: None,
+            bind_group_layouts: &[Some(&terrain.bind_group_layout), Some(&air.layout)],
+            immediate_size: 0,
+        });
+        let rocks = shader!("instancing/rocks.wgsl", imports: ["terrain/terrain.wgsl", "fog/fog.wgsl"]);
+        let module = rocks.module(gpu).unwrap();
+        let buffers = [Some(Vertex::LAYOUT), Some(RockInstance::LAYOUT)];
+        let pipeline = common::pipeline::mesh_pipeline(
+            &gpu.device,
+            &layout,
+            &module,
+            ("vs_instanced", "fs_main"),
+            &buffers,
+            target.format.into(),
+        );
+        let camera = Camera { far: FogSettings::HAZE.far_plane(), ..plain_camera(terrain.field(), target.aspect()) };
+        Self { terrain, air, pipeline, camera, target }
+    }
+
+    /// Draws `rocks`: for each (mesh, range), the rocks in `range` with
+    /// that mesh, in one instanced call. Returns the picture.
+    fn draw(&self, gpu: &Gpu, rocks: &[RockInstance], calls: &[(&MeshData, Range<u32>)]) -> image::RgbaImage {
+        let device = &gpu.device;
+        let instances = device.create_buffer_init(&wgpu::util::BufferInitDescriptor {
+            label: Some("rocks"),
+            contents: bytemuck::cast_slice(rocks),
+            usage: wgpu::BufferUsages::VERTEX,
+        });
+        let meshes: Vec<_> = calls.iter().map(|(mesh, _)| mesh.upload(device, "rock")).collect();
+        let mut viewpoint = self.terrain.viewpoint(device);
+        self.terrain.aim(&gpu.queue, &mut viewpoint, &self.camera, Sun::AFTERNOON, terrain::Shading::Shaded, KEEP_ALL);
+        let offscreen = Offscreen::new(device, self.target);
+        let depth = common::texture::depth_view(device, self.target.width, self.target.height);
+        let mut encoder = device.create_command_encoder(&Default::default());
+        {
+            let mut pass =
+                common::pipeline::scene_pass(&mut encoder, &PassTimer::off(), "rocks", &offscreen.view, SKY, &depth);
+            pass.set_pipeline(&self.pipeline);
+            self.terrain.bind(&mut pass, &viewpoint);
+            pass.set_bind_group(1, &self.air.group, &[]);
+            pass.set_vertex_buffer(1, instances.slice(..));
+            for (mesh, (_, range)) in meshes.iter().zip(calls) {
+                pass.set_vertex_buffer(0, mesh.vertex_buffer.slice(..));
+                pass.set_index_buffer(mesh.index_buffer.slice(..), wgpu::IndexFormat::Uint32);
+                pass.draw_indexed(0..mesh.index_count, 0, range.clone());
+            }
+        }
+        gpu.queue.submit([encoder.finish()]);
+        read_texture(gpu, &offscreen.texture).unwrap()
+    }
+}
+
+// ANCHOR: variety
+/// Exercise 3: `kinds` rock meshes from different seeds, and the instance
+/// range each draws: the scatter is random, so consecutive blocks of it
+/// are as good a mix as any. One instanced call per mesh.
+fn varied_rocks(kinds: u32, rocks: u32) -> Vec<(MeshData, Range<u32>)> {
+    let block = rocks.div_ceil(kinds);
+    (0..kinds).map(|k| (rock_mesh(100 + u64::from(k)), k * block..((k + 1) * block).min(rocks))).collect()
+}
+// ANCHOR_END: variety
+
+#[test]
+fn exercise_3_four_rock_meshes_cost_three_more_calls() {
+    let gpu = crate::plain_gpu();
+    let lab = RockLab::new(gpu);
+    let rocks = scatter(lab.terrain.field(), 20_000, 5);
+    let varied = varied_rocks(4, rocks.len() as u32);
+    assert_eq!(varied.len(), 4, "one call per mesh");
+    assert_eq!(varied.iter().map(|(_, r)| r.len()).sum::<usize>(), rocks.len(), "every rock once");
+    let calls: Vec<(&MeshData, Range<u32>)> = varied.iter().map(|(m, r)| (m, r.clone())).collect();
+    let one_mesh = rock_mesh(5);
+    let (four, one) = (lab.draw(gpu, &rocks, &calls), lab.draw(gpu, &rocks, &[(&one_mesh, 0..rocks.len() as u32)]));
+    let sky = *one.get_pixel(0, 0);
+    let rock_pixels = |picture: &image::RgbaImage| picture.pixels().filter(|&&p| p != sky).count();
+    eprintln!("rock pixels with one mesh {}, with four {}", rock_pixels(&one), rock_pixels(&four));
+    assert_ne!(four, one);
+    // Three more calls: the default view's 1,133 become 1,136, and the
+    // meshes take 3 × 60 vertices × 32 bytes = 5,760 bytes more.
+    assert_eq!(3 * one_mesh.vertices.len() * size_of::<Vertex>(), 5_760);
+}
+
+// ANCHOR: rocks_by_chunk
+/// Exercise 4: the rocks sorted by the terrain chunk they stand in, and
+/// the range of them in each chunk (`n × n` chunks of `size` metres).
+fn rocks_by_chunk(mut rocks: Vec<RockInstance>, n: u32, size: f32) -> (Vec<RockInstance>, Vec<Range<u32>>) {
+    let chunk_of = |rock: &RockInstance| {
+        let [x, _, z] = rock.position.map(|c| (c / size).clamp(0.0, n as f32 - 1.0) as u32);
+        z * n + x
+    };
+    rocks.sort_by_key(chunk_of);
+    let mut counts = vec![0; (n * n) as usize];
+    rocks.iter().for_each(|rock| counts[chunk_of(rock) as usize] += 1);
+    let mut start = 0;
+    let ranges = counts
+        .iter()
+        .map(|count| {
+            start += count;
+            start - count..start
+        })
+        .collect();
+    (rocks, ranges)
+}
+
+/// Exercise 4: the instance ranges to draw, one call each: the rocks of
+/// every chunk whose box (grown by the largest rock, so that no rock can
+/// poke out of a culled chunk) the frustum keeps. Chunks next to each
+/// other in a row are next to each other in the sorted rocks, so their
+/// ranges join into one call.
+fn visible_rock_ranges(
+    ranges: &[Range<u32>],
+    bounds: &[Aabb],
+    frustum: &Frustum,
+    largest_rock: f32,
+) -> Vec<Range<u32>> {
+    let mut calls: Vec<Range<u32>> = Vec::new();
+    for (range, b) in ranges.iter().zip(bounds) {
+        let grown = Aabb { min: b.min - Vec3::splat(largest_rock), max: b.max + Vec3::splat(largest_rock) };
+        if range.is_empty() || !frustum.intersects(&grown) {
+            continue;
+        }
+        match calls.last_mut() {
+            Some(last) if last.end == range.start => last.end = range.end,
+            _ => calls.push(range.clone()),
+        }
+    }
+    calls
+}
+// ANCHOR_END: rocks_by_chunk
+
+#[test]
+fn exercise_4_culling_rocks_by_chunk_draws_fewer_rocks_and_the_same_picture() {
+    let gpu = crate::plain_gpu();
+    let lab = RockLab::new(gpu);
+    let (field, mesh) = (lab.terrain.field(), lab.terrain.mesh());
+    let rocks = scatter(field, 200_000, 5);
+    // The largest rock: 2.1 m at most, stretched by at most 1.5.
+    let largest = rocks.iter().map(|r| r.scale.iter().copied().fold(0.0, f32::max)).fold(0.0, f32::max);
+    assert!(largest <= 3.15);
+    let chunk_size = field.settings.extent() / mesh.chunks_per_side as f32;
+    let (sorted, ranges) = rocks_by_chunk(rocks.clone(), mesh.chunks_per_side, chunk_size);
+    let frustum = Frustum::from_view_projection(lab.camera.view_projection());
+    let calls = visible_rock_ranges(&ranges, &mesh.bounds, &frustum, largest);
+    let drawn: u32 = calls.iter().map(|r| r.len() as u32).sum();
+    let chunks_with_rocks = ranges.iter().filter(|r| !r.is_empty()).count();
+    eprintln!(
+        "{drawn} of {} rocks drawn, in {} calls ({chunks_with_rocks} chunks hold rocks)",
+        rocks.len(),
+        calls.len()
+    );
+    let rock = rock_mesh(5);
+    let all = lab.draw(gpu, &rocks, &[(&rock, 0..rocks.len() as u32)]);
+    let calls_with_mesh: Vec<_> = calls.iter().map(|r| (&rock, r.clone())).collect();
+    let culled = lab.draw(gpu, &sorted, &calls_with_mesh);
+    let differing = all.pixels().zip(culled.pixels()).filter(|(a, b)| a != b).count();
+    eprintln!("{differing} pixels differ");
+    // Two thirds of the rocks are in view (the scatter lies ahead of the
+    // camera), in one call per row of chunks, and the picture is the same.
+    assert_eq!(differing, 0);
+    assert!(drawn.abs_diff(131_610) < 500 && calls.len() == 18, "{drawn} rocks in {} calls", calls.len());
+}
+
+/// Exercise 5: chapter 03's visible chunks in one instanced call. All the
+/// instances of a call share one base vertex, so it can no longer say where
+/// a chunk's vertices start: the shader reads them from a storage buffer
+/// itself, at `chunk × 4225 + vertex_index` ("vertex pulling"), and a list
+/// of the chunks the frustum keeps turns the instance into a chunk.
+const ONE_CALL_TERRAIN: &str = "
+// ANCHOR: one_call_terrain
+enable clip_distances;
+#import terrain::{VertexOutput, FragmentInput, globals, terrain_vertex, ground_colour, lit}
+
+// A `TerrainVertex`: the height, then the normal's four signed bytes.
+struct PackedVertex {
+    height: f32,
+    normal: u32,
+};
+@group(1) @binding(0) var<storage, read> vertices: array<PackedVertex>;
+@group(1) @binding(1) var<storage, read> visible_chunks: array<u32>;
+
+@vertex
+fn vs_main(@builtin(vertex_index) vertex_index: u32, @builtin(instance_index) instance: u32) -> VertexOutput {
+    let chunk = visible_chunks[instance];
+    // What the base vertex did: skip the vertices of the chunks before it.
+    let side = globals.grid.y + 1u;
+    let vertex = vertices[chunk * side * side + vertex_index];
+    return terrain_vertex(vertex_index, chunk, vertex.height, unpack4x8snorm(vertex.normal));
+}
+
+@fragment
+fn fs_main(in: FragmentInput) -> @location(0) vec4<f32> {
+    let n = normalize(in.normal);
+    return vec4<f32>(lit(ground_colour(in.world_position.y, n), n), 1.0);
+}
+// ANCHOR_END: one_call_terrain
+";
+
+#[test]
+fn exercise_5_every_visible_chunk_in_one_call_draws_the_same_terrain() {
+    // A terrain of its own, 16 × 16 chunks, made here (not through the
+    // device's cache, which keeps one terrain: the default one).
+    let gpu = crate::plain_gpu();
+    let settings = TerrainSettings { chunks_per_side: 16, ..Default::default() };
+    let field = HeightField::generate(settings);
+    let (vertices, bounds) = TerrainMesh::chunk_rows(&field, 0..16);
+    let mesh = TerrainMesh::upload(&gpu.device, 16, &vertices, bounds);
+    let terrain = TerrainRenderer::new(gpu, Arc::new(TerrainData { field, mesh, timings: (0.0, 0.0) }));
+    let target = Target { format: OFFSCREEN_FORMAT, width: 320, height: 180 };
+    let camera = terrain::start_camera(terrain.field(), target.aspect());
+    let frustum = Frustum::from_view_projection(camera.view_projection());
+    let visible: Vec<u32> = (0..terrain.mesh().bounds.len() as u32)
+        .filter(|&c| frustum.intersects(&terrain.mesh().bounds[c as usize]))
+        .collect();
+
+    // The storage buffers, their layout, and the pipeline.
+    let device = &gpu.device;
+    let storage = |contents: &[u8]| {
+        device.create_buffer_init(&wgpu::util::BufferInitDescriptor {
+            label: None,
+            contents,
+            usage: wgpu::BufferUsages::STORAGE,
+        })
+    };
+    let (vertex_storage, visible_storage) =
+        (storage(bytemuck::cast_slice(&vertices)), storage(bytemuck::cast_slice(&visible)));
+    let group_layout = device.create_bind_group_layout(&wgpu::BindGroupLayoutDescriptor {
+        label: None,
+        entries: &[
+            common::pipeline::storage_entry(0, wgpu::ShaderStages::VERTEX),
+            common::pipeline::storage_entry(1, wgpu::ShaderStages::VERTEX),
+        ],
+    });
+    let group = device.create_bind_group(&wgpu::BindGroupDescriptor {
+        label: None,
+        layout: &group_layout,
+        entries: &[
+            wgpu::BindGroupEntry { binding: 0, resource: vertex_storage.as_entire_binding() },
+            wgpu::BindGroupEntry { binding: 1, resource: visible_storage.as_entire_binding() },
+        ],
+    });
+    let pipeline_layout = |groups: &[Option<&wgpu::BindGroupLayout>]| {
+        device.create_pipeline_layout(&wgpu::PipelineLayoutDescriptor {
+            label: None,
+            bind_group_layouts: groups,
+            immediate_size: 0,
+        })
+    };
+    let one_call_layout = pipeline_layout(&[Some(&terrain.bind_group_layout), Some(&group_layout)]);
+    let one_call_shader = ShaderFile {
+        path: "terrain/one_call.wgsl",
+        embedded: ONE_CALL_TERRAIN,
+        imports: &[shader!("terrain/terrain.wgsl")],
+    };
+    let module = one_call_shader.module(gpu).unwrap();
+    let one_call = common::pipeline::mesh_pipeline(
+        device,
+        &one_call_layout,
+        &module,
+        ("vs_main", "fs_main"),
+        &[],
+        target.format.into(),
+    );
+    let per_chunk_layout = pipeline_layout(&[Some(&terrain.bind_group_layout)]);
+    let per_chunk =
+        TerrainRenderer::pipeline(gpu, &shader!("terrain/terrain.wgsl"), &per_chunk_layout, target.format).unwrap();
+
+    // The same picture both ways.
+    let mut viewpoint = terrain.viewpoint(device);
+    terrain.aim(&gpu.queue, &mut viewpoint, &camera, Sun::AFTERNOON, terrain::Shading::Shaded, KEEP_ALL);
+    let render = |one_call_instead: bool| {
+        let offscreen = Offscreen::new(device, target);
+        let depth = common::texture::depth_view(device, target.width, target.height);
+        let mut encoder = device.create_command_encoder(&Default::default());
+        let calls = {
+            let mut pass =
+                common::pipeline::scene_pass(&mut encoder, &PassTimer::off(), "terrain", &offscreen.view, SKY, &depth);
+            if one_call_instead {
+                pass.set_pipeline(&one_call);
+                terrain.bind(&mut pass, &viewpoint);
+                pass.set_bind_group(1, &group, &[]);
+                pass.set_index_buffer(terrain.mesh().index_buffer.slice(..), wgpu::IndexFormat::Uint16);
+                pass.draw_indexed(0..terrain.mesh().index_count, 0, 0..visible.len() as u32);
+                1
+            } else {
+                pass.set_pipeline(&per_chunk);
+                terrain.draw(&mut pass, &viewpoint)
+            }
+        };
+        gpu.queue.submit([encoder.finish()]);
+        (read_texture(gpu, &offscreen.texture).unwrap(), calls)
+    };
+    let ((chunk_by_chunk, calls), (all_at_once, one)) = (render(false), render(true));
+    eprintln!("{calls} chunks in {calls} calls, and in {one}");
+    assert_eq!(calls, visible.len());
+    assert_eq!(one, 1);
+    // The same picture, but for a handful of pixels a step of one byte
+    // apart: two shader programs, compiled differently, round differently.
+    let steps: Vec<u8> = chunk_by_chunk
+        .pixels()
+        .zip(all_at_once.pixels())
+        .map(|(a, b)| (0..3).map(|c| a[c].abs_diff(b[c])).max().unwrap())
+        .filter(|&step| step > 0)
+        .collect();
+    eprintln!("{} of {} pixels differ, by at most {}", steps.len(), 320 * 180, steps.iter().max().unwrap_or(&0));
+    assert!(steps.len() <= 10 && steps.iter().all(|&step| step == 1), "{steps:?}");
+}

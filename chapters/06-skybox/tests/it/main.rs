@@ -1,0 +1,26 @@
+//! Chapter 06's integration tests, one binary: the sun in the sky is the
+//! light on the ground, and the worked solutions to the exercises of pages
+//! 04, 05 and 06.
+//!
+//! One test binary per crate: each links wgpu, naga, egui and winit, so
+//! every extra file in `tests/` would be another link of all of them.
+//! Chapters 04 and 05 have no test binary of their own; this one links
+//! both already (chapter 06 draws their plain), and its tests share one
+//! device, so the terrain and the million rocks are made once for all of
+//! them (`Gpu::cached`), not once per chapter.
+
+use std::sync::OnceLock;
+
+use common::Gpu;
+
+mod fog_solutions;
+mod instancing_solutions;
+mod solutions;
+mod sun;
+
+/// The device every test here that draws the Mars plain shares, with the
+/// needs of the chapters that draw it (`terrain::gpu_needs`).
+pub fn plain_gpu() -> &'static Gpu {
+    static GPU: OnceLock<Gpu> = OnceLock::new();
+    GPU.get_or_init(|| Gpu::headless(terrain::gpu_needs()).expect("an adapter (lavapipe will do)"))
+}
