@@ -14,6 +14,9 @@ pub mod waves;
 pub mod water_renderer;
 // The chapter itself: its settings, views, cameras and frame.
 pub mod demo;
+// Worked solutions to the page's exercises, built and checked by `cargo test`.
+#[cfg(test)]
+mod solutions;
 
 pub use demo::{CameraPreset, Display, Settings, VIEW_TABLE, WaterChapter};
 pub use lake::{find_lake, lake_camera, mirrored};

@@ -1,4 +1,6 @@
-//! Chapter 08's integration tests, one binary: the bloom chain, light extremes, and the three shading models.
+//! Chapter 08's integration tests, one binary: the bloom chain, light
+//! extremes, the three shading models, and the worked solutions to the
+//! page's exercises.
 //!
 //! One test binary per crate: each links wgpu, naga, egui and winit, so
 //! every extra file here would be another link of all of them.
@@ -6,3 +8,4 @@
 mod bloom;
 mod extremes;
 mod shading;
+mod solutions;

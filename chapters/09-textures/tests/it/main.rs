@@ -1,8 +1,11 @@
-//! Chapter 09's integration tests, one binary: GPU mipmaps, OBJ + MTL models (`--model`), and tangents.
+//! Chapter 09's integration tests, one binary: GPU mipmaps, OBJ + MTL
+//! models (`--model`), tangents, and the worked solutions to the page's
+//! exercises.
 //!
 //! One test binary per crate: each links wgpu, naga, egui and winit, so
 //! every extra file here would be another link of all of them.
 
 mod mipmaps;
 mod models;
+mod solutions;
 mod tangents;

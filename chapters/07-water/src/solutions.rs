@@ -1,0 +1,271 @@
+//! Worked solutions to the exercises on chapter 07's page. Each makes the
+//! change its exercise asks for and asserts the figure the page's solution
+//! states, so that the solutions are built and checked with the chapter.
+//! They live in the library's own test build (this chapter has no
+//! integration-test binary, and one more would be one more link of wgpu),
+//! and change shaders by text edits of the real files, composed and
+//! validated by naga as the chapter's loader does: an edit whose text is
+//! no longer in the shader fails here instead of rotting on the page.
+
+use std::f32::consts::TAU;
+
+use common::glam::{Vec2, Vec3};
+use common::headless::{OFFSCREEN_FORMAT, capture};
+use common::{Camera, Chapter, Gpu, ShaderFile, Target, shader};
+
+use crate::WaterChapter;
+use crate::waves::{self, Wave};
+
+/// `file` with `edits` made to its own text, composed with its imports and
+/// validated by naga. Each edit's `before` must occur exactly once.
+fn compiles_with(file: ShaderFile, edits: &[(&str, &str)]) {
+    let mut text = file.embedded.to_string();
+    for (before, after) in edits {
+        assert_eq!(text.matches(before).count(), 1, "{} should hold `{before}` once", file.path);
+        text = text.replacen(before, after, 1);
+    }
+    let imports: Vec<(&str, String)> = file.imports.iter().map(|i| (i.path, i.embedded.to_string())).collect();
+    common::shader::compose_with(&text, file.path, &imports, &[]).unwrap_or_else(|e| panic!("{e}"));
+}
+
+/// The water's shader, with the modules it imports.
+const WATER: ShaderFile =
+    shader!("water/water.wgsl", imports: ["terrain/terrain.wgsl", "fog/fog.wgsl", "water/waves.wgsl"]);
+
+/// The median of a pass's row in the chapter's bench table, milliseconds.
+fn bench_median(view: &str, what: &str) -> f32 {
+    let table = include_str!("../../../book/src/bench/water.md");
+    let row = table.lines().find(|l| l.starts_with(&format!("| {view} | {what} |"))).unwrap();
+    row.split('|').nth(4).unwrap().trim().parse().unwrap()
+}
+
+// ANCHOR: quarter
+/// Exercise 1: the bytes the reflection and refraction pictures take for
+/// a `target` at `resolution` (the overlay's slider): each a colour
+/// texture of the target's format and a depth buffer, `resolution` of the
+/// target's width and height.
+fn picture_bytes(target: Target, resolution: f32) -> u64 {
+    let (width, height) = ((target.width as f32 * resolution) as u64, (target.height as f32 * resolution) as u64);
+    let colour = u64::from(target.format.block_copy_size(None).unwrap());
+    let depth = u64::from(common::texture::DEPTH_FORMAT.block_copy_size(None).unwrap());
+    2 * width * height * (colour + depth)
+}
+
+/// What the pictures' passes would save at `resolution` instead of 0.5,
+/// in milliseconds, estimated from the bench: a scene pass costs its
+/// vertices plus its pixels, and the main pass (1280 × 720) and the
+/// reflection pass (a quarter of those pixels, the same scene) tell the two apart.
+fn pass_time_saved(resolution: f32) -> f32 {
+    let (main, reflection) =
+        (bench_median("default", "GPU: plain and sky pass"), bench_median("default", "GPU: reflection pass"));
+    let per_screen_of_pixels = (main - reflection) / (1.0 - 0.25);
+    2.0 * per_screen_of_pixels * (0.25 - resolution * resolution)
+}
+
+/// What the water looks like with the pictures at `resolution`: the
+/// default view at 320 × 180, without rocks (they cost seconds to draw
+/// and add nothing to the question).
+fn lake_at(gpu: &Gpu, chapter: &mut WaterChapter, resolution: f32) -> common::image::RgbaImage {
+    let target = Target { format: OFFSCREEN_FORMAT, width: 320, height: 180 };
+    chapter.settings.water.resolution = resolution;
+    capture(gpu, chapter, target, 0.0, 0).unwrap()
+}
+// ANCHOR_END: quarter
+
+#[test]
+fn exercise_1_quarter_resolution_pictures_save_memory_not_time_here() {
+    let target = Target { format: common::wgpu::TextureFormat::Bgra8UnormSrgb, width: 1280, height: 720 };
+    let (half, quarter) = (picture_bytes(target, 0.5), picture_bytes(target, 0.25));
+    let saved = pass_time_saved(0.25);
+    let frame = bench_median("default", "frame (CPU+GPU)");
+    println!(
+        "pictures: {half} bytes at half resolution, {quarter} at a quarter; the passes would save about \
+         {saved:.1} ms of a {frame:.0} ms frame"
+    );
+    assert_eq!((half, quarter), (3_686_400, 921_600));
+    assert!((saved - 26.8).abs() < 0.5, "{saved}");
+    // What it costs: the pixels that change, and by how much (of 255).
+    let gpu = Gpu::headless(WaterChapter::gpu_needs()).unwrap();
+    let target = Target { format: OFFSCREEN_FORMAT, width: 320, height: 180 };
+    let mut chapter = common::chapter::create::<WaterChapter>(&gpu, target, &Default::default()).unwrap();
+    chapter.select_view(0);
+    chapter.rocks.rocks = 0;
+    let (sharp, coarse) = (lake_at(&gpu, &mut chapter, 0.5), lake_at(&gpu, &mut chapter, 0.25));
+    let changes: Vec<u8> = sharp
+        .pixels()
+        .zip(coarse.pixels())
+        .map(|(a, b)| (0..3).map(|c| a[c].abs_diff(b[c])).max().unwrap())
+        .filter(|d| *d > 0)
+        .collect();
+    let share = changes.len() as f64 / (320.0 * 180.0);
+    let mean = changes.iter().map(|d| f64::from(*d)).sum::<f64>() / changes.len() as f64;
+    let worst = changes.iter().copied().max().unwrap();
+    // Where: the first row that changes, and how many of the changes are
+    // within 20 rows of it (the far shore's reflection).
+    let rows: Vec<u32> = (0..320 * 180)
+        .filter(|&i| sharp.as_raw()[4 * i..4 * i + 3] != coarse.as_raw()[4 * i..4 * i + 3])
+        .map(|i| i as u32 / 320)
+        .collect();
+    let first = rows[0];
+    let difference = |i: usize| (0..3).map(|c| sharp.as_raw()[4 * i + c].abs_diff(coarse.as_raw()[4 * i + c])).max();
+    let worst_row = (0..320 * 180).max_by_key(|&i| difference(i)).unwrap() as u32 / 320;
+    println!(
+        "at a quarter: {:.1} % of the pixels change, by {mean:.2} on average, {worst} at most (row {worst_row}); \
+         none above row {first}",
+        share * 100.0
+    );
+    assert!(first == 93 && worst_row < first + 20, "first row {first}, worst at {worst_row}");
+    assert!((share - 0.157).abs() < 0.02 && (mean - 2.44).abs() < 0.3 && worst.abs_diff(42) <= 8);
+}
+
+// ANCHOR: fresnel
+/// Exercise 2: the Mars project's mix in water.wgsl, the cosine itself…
+const COSINE_MIX: (&str, &str) =
+    ("fresnel = 0.02 + 0.98 * pow(1.0 - max(dot(to_eye, n), 0.0), 5.0);", "fresnel = 1.0 - max(dot(to_eye, n), 0.0);");
+
+/// …and the three mixes as the share of the reflection, for a view
+/// direction at `cos_theta` to the water's normal.
+fn schlick(cos_theta: f32) -> f32 {
+    0.02 + 0.98 * (1.0 - cos_theta).powi(5)
+}
+
+fn cosine_mix(cos_theta: f32) -> f32 {
+    1.0 - cos_theta
+}
+
+fn no_fresnel(_: f32) -> f32 {
+    0.5
+}
+
+/// The share of the reflection each mix gives the default view's lake, row
+/// by row from the bottom of the picture to where the lake ends (520 m
+/// square, the camera 41.6 m inside its southern edge, 18 m above the
+/// water, looking at the water 322 m away): at the bottom row, and the
+/// mean over the rows that show the lake.
+fn reflection_shares(mix: fn(f32) -> f32) -> (f32, f32) {
+    let camera = Camera::looking_at(Vec3::new(0.0, 18.0, 0.0), Vec3::new(0.0, 0.0, -322.4), 16.0 / 9.0);
+    let inverse = camera.view_projection().inverse();
+    let mut shares = Vec::new();
+    for row in (0..720).rev() {
+        let y = 1.0 - (row as f32 + 0.5) / 720.0 * 2.0;
+        let near = inverse.project_point3(Vec3::new(0.0, y, 0.0));
+        let d = (inverse.project_point3(Vec3::new(0.0, y, 1.0)) - near).normalize();
+        if d.y >= 0.0 || -(near + d * (-near.y / d.y)).z > 520.0 - 41.6 {
+            break;
+        }
+        shares.push(mix(-d.y));
+    }
+    (shares[0], shares.iter().sum::<f32>() / shares.len() as f32)
+}
+// ANCHOR_END: fresnel
+
+#[test]
+fn exercise_2_the_cosine_mix_is_nearer_no_fresnel_than_schlick() {
+    compiles_with(WATER, &[COSINE_MIX]);
+    let (by_schlick, by_cosine, by_halves) =
+        (reflection_shares(schlick), reflection_shares(cosine_mix), reflection_shares(no_fresnel));
+    println!(
+        "reflection at the bottom row and on average: Schlick {by_schlick:.3?}, cosine {by_cosine:.3?}, \
+         none {by_halves:.3?}"
+    );
+    assert!((by_schlick.0 - 0.039).abs() < 0.002 && (by_cosine.0 - 0.452).abs() < 0.002);
+    assert!((by_schlick.1 - SCHLICK_MEAN).abs() < 0.005 && (by_cosine.1 - COSINE_MEAN).abs() < 0.005);
+    // At 60° from the normal, the page's figure.
+    assert!((cosine_mix(0.5) - 0.5).abs() < 1e-6 && (schlick(0.5) - 0.0506).abs() < 1e-3);
+}
+
+/// The mean share of the reflection over the lake's rows, by Schlick and by the cosine.
+const SCHLICK_MEAN: f32 = 0.247;
+const COSINE_MEAN: f32 = 0.688;
+
+// ANCHOR: gerstner
+/// Exercise 3: Gerstner waves. Each wave also moves the surface's points
+/// along its direction, by Qᵢ Aᵢ cos(phase), towards its crests (Fournier
+/// and Reeves 1986; Finch 2004). With Qᵢ Aᵢ kᵢ = `steepness` / 8 for the
+/// eight waves, the sum can never fold over while `steepness` ≤ 1.
+fn gerstner(waves: &[Wave], p: Vec2, time: f32, steepness: f32) -> Vec3 {
+    let mut moved = p;
+    for w in waves {
+        let k = TAU / w.wavelength;
+        let phase = k * (w.direction.dot(p) - w.speed * time);
+        moved += steepness / (k * waves.len() as f32) * phase.cos() * w.direction;
+    }
+    Vec3::new(moved.x, waves::height(waves, p.x, p.y, time), moved.y)
+}
+
+/// The same in water.wgsl: the offset, and the vertex moved by it.
+const GERSTNER: [(&str, &str); 2] = [
+    (
+        "@vertex\nfn vs_water(",
+        "// Gerstner: each wave moves a point towards its crests as well as up.
+fn gerstner_offset(p: vec2<f32>, time: f32, steepness: f32) -> vec2<f32> {
+    var offset = vec2<f32>(0.0);
+    for (var i = 0u; i < 8u; i++) {
+        let wave = water.waves[i];
+        let k = 6.2831853 / wave.w;
+        let phase = k * (dot(wave.xy, p) - water.speeds[i / 4u][i % 4u] * time);
+        offset += steepness / (k * 8.0) * cos(phase) * wave.xy;
+    }
+    return offset;
+}
+
+@vertex\nfn vs_water(",
+    ),
+    (
+        "let world = vec3<f32>(p.x, water.level_time.x + strength * height, p.y);",
+        "let moved = p + strength * gerstner_offset(p, water.level_time.y, 1.0);
+    let world = vec3<f32>(moved.x, water.level_time.x + strength * height, moved.y);",
+    ),
+];
+
+/// Along a line across the lake in the wind's direction: the share of its
+/// length where the surface stands above its mean level, and the least
+/// stretch of the surface (below zero it would have folded over).
+fn crest_share_and_least_stretch(steepness: f32) -> (f32, f32) {
+    let waves = waves::lake_waves();
+    let along = Vec2::new(0.6f32.cos(), -0.6f32.sin());
+    let points: Vec<Vec3> = (0..20_000).map(|i| gerstner(&waves, along * (i as f32 * 0.01), 3.0, steepness)).collect();
+    let (mut above, mut total, mut least) = (0.0, 0.0, f32::MAX);
+    for pair in points.windows(2) {
+        let step = Vec2::new(pair[1].x - pair[0].x, pair[1].z - pair[0].z).dot(along);
+        least = least.min(step / 0.01);
+        total += step;
+        if pair[0].y + pair[1].y > 0.0 {
+            above += step;
+        }
+    }
+    (above / total, least)
+}
+// ANCHOR_END: gerstner
+
+#[test]
+fn exercise_3_gerstner_waves_have_narrower_crests() {
+    compiles_with(WATER, &GERSTNER);
+    let (sine, _) = crest_share_and_least_stretch(0.0);
+    let (sharp, stretch) = crest_share_and_least_stretch(1.0);
+    println!("share of the line above the mean: sines {sine:.3}, Gerstner {sharp:.3}; least stretch {stretch:.3}");
+    assert!((sine - 0.528).abs() < 0.005 && (sharp - GERSTNER_CREST_SHARE).abs() < 0.005);
+    assert!((stretch - 0.496).abs() < 0.01, "squeezed to {stretch} at the crests, never folded");
+}
+
+/// The share of a line across the lake above the mean level, with Gerstner's steepness 1.
+const GERSTNER_CREST_SHARE: f32 = 0.454;
+
+// ANCHOR: no_refraction
+/// Exercise 4: the water without the refraction picture: the reflection
+/// alone, laid over the scene (which has the lake bed in it) with Fresnel
+/// as its opacity. The depth under the surface came from the refraction
+/// pass, so the shallows' fade and the murk of deep water go with it.
+const REFLECTION_ONLY: [(&str, &str); 2] = [
+    ("    var colour = mix(refraction, reflection, fresnel);", "    var colour = reflection;"),
+    ("    return vec4<f32>(colour, shallow);", "    return vec4<f32>(colour, fresnel);"),
+];
+// ANCHOR_END: no_refraction
+
+#[test]
+fn exercise_4_without_the_refraction_picture_a_fifth_of_the_frame_goes() {
+    compiles_with(WATER, &REFLECTION_ONLY);
+    let share = bench_median("default", "GPU: refraction pass") / bench_median("default", "frame (CPU+GPU)");
+    println!("the refraction pass is {:.1} % of the default frame", share * 100.0);
+    assert!((share - 0.201).abs() < 0.002, "{share}");
+}

@@ -1,0 +1,412 @@
+//! Worked solutions to the exercises on chapter 08's page. Each makes the
+//! change its exercise asks for and asserts the figure the page's solution
+//! states, so that the solutions are built and checked with the chapter.
+//! Changes to a shader are text edits of the real file, composed and
+//! validated by naga as the chapter's loader does: an edit whose text is no
+//! longer in the shader fails here instead of rotting on the page.
+
+use std::collections::HashMap;
+
+use common::glam::{Vec2, Vec3};
+use common::headless::{OFFSCREEN_FORMAT, capture, read_floats};
+use common::{Camera, Chapter, Gpu, ShaderFile, Target, chapter::view_index, image, shader};
+use lighting::city::City;
+use lighting::clusters::{self, GRID};
+use lighting::lights::{Light, LightKind, TimeOfDay, daylight};
+use lighting::{LightCount, LightingChapter, MAX_LIGHTS, aerial_camera, beacons, frame_lights, sphere_camera};
+
+/// `file` with `edits` made to the text of `path` (the file itself or a
+/// module it imports), composed with its imports and validated by naga.
+/// Each edit's `before` must occur exactly once.
+fn compiles_with(file: ShaderFile, path: &str, edits: &[(&str, &str)]) {
+    assert!(file.path == path || file.imports.iter().any(|i| i.path == path), "{path} is not in {}", file.path);
+    let text = |f: &ShaderFile| {
+        let mut text = f.embedded.to_string();
+        if f.path == path {
+            for (before, after) in edits {
+                assert_eq!(text.matches(before).count(), 1, "{path} should hold `{before}` once");
+                text = text.replacen(before, after, 1);
+            }
+        }
+        text
+    };
+    let imports: Vec<(&str, String)> = file.imports.iter().map(|i| (i.path, text(i))).collect();
+    common::shader::compose_with(&text(&file), file.path, &imports, &[]).unwrap_or_else(|e| panic!("{e}"));
+}
+
+/// The city's shader, with the light loop it imports.
+const CITY: ShaderFile = shader!("lighting/city.wgsl", imports: ["lighting/lights.wgsl"]);
+
+/// Where the ray through the centre of pixel (x, y) of a `width` × `height`
+/// picture from `camera` starts, and its direction.
+fn pixel_ray(camera: &Camera, (x, y): (u32, u32), (width, height): (u32, u32)) -> (Vec3, Vec3) {
+    let inverse = camera.view_projection().inverse();
+    let ndc = Vec2::new((x as f32 + 0.5) / width as f32 * 2.0 - 1.0, 1.0 - (y as f32 + 0.5) / height as f32 * 2.0);
+    let near = inverse.project_point3(ndc.extend(0.0));
+    (near, (inverse.project_point3(ndc.extend(1.0)) - near).normalize())
+}
+
+// ANCHOR: blinn_match
+/// Exercise 1: the shininess that makes Blinn's highlight on the glass
+/// sphere closest (least squares over the pixels) to Phong's at
+/// `phong_shininess`, as the `phong` view sees it in the morning sun.
+/// Both highlights are normalised as lights.wgsl normalises them.
+fn blinn_shininess_matching_phong(phong_shininess: f32) -> f32 {
+    let city = City::new();
+    let camera = sphere_camera(&city, 16.0 / 9.0);
+    let (centre, radius) = (city.sphere_building + Vec3::Y * 24.0, 14.0);
+    let l = daylight(TimeOfDay::Morning.phase(0.0, 1.0)).direction;
+    // The normal and the direction to the eye at every lit pixel of the sphere.
+    let mut points = Vec::new();
+    for (x, y) in (0..90).flat_map(|y| (0..160).map(move |x| (x, y))) {
+        let (origin, d) = pixel_ray(&camera, (x, y), (160, 90));
+        let b = d.dot(origin - centre);
+        let c = (origin - centre).length_squared() - radius * radius;
+        if b * b - c > 0.0 {
+            let n = (origin + d * (-b - (b * b - c).sqrt()) - centre).normalize();
+            if n.dot(l) > 0.0 {
+                points.push((n, -d));
+            }
+        }
+    }
+    let phong = |n: Vec3, v: Vec3, s: f32| {
+        let r = 2.0 * n.dot(l) * n - l; // reflect(−l, n)
+        (s + 2.0) / 2.0 * r.dot(v).max(0.0).powf(s) * n.dot(l)
+    };
+    let blinn = |n: Vec3, v: Vec3, s: f32| (s + 8.0) / 8.0 * n.dot((l + v).normalize()).max(0.0).powf(s) * n.dot(l);
+    let error =
+        |s: f32| points.iter().map(|&(n, v)| (phong(n, v, phong_shininess) - blinn(n, v, s)).powi(2)).sum::<f32>();
+    (phong_shininess as u32..=12 * phong_shininess as u32)
+        .step_by(4)
+        .map(|s| s as f32)
+        .min_by(|a, b| error(*a).total_cmp(&error(*b)))
+        .unwrap()
+}
+// ANCHOR_END: blinn_match
+
+#[test]
+fn exercise_1_blinn_needs_about_four_times_phongs_shininess() {
+    let blinn = blinn_shininess_matching_phong(96.0);
+    println!("Blinn's highlight matches Phong's at 96 best at shininess {blinn} ({:.2} times)", blinn / 96.0);
+    assert!((blinn - BLINN_MATCHING_96).abs() <= 8.0, "best match at {blinn}");
+}
+
+/// The best match exercise 1's solution states.
+const BLINN_MATCHING_96: f32 = 352.0;
+
+// ANCHOR: city_falloff
+/// Exercise 2: the city project's falloff, which never reaches zero…
+fn city_project_falloff(distance: f32) -> f32 {
+    1.0 / (1.0 + 0.09 * distance + 0.032 * distance * distance)
+}
+
+/// …and the same in lights.wgsl, in place of the windowed inverse square.
+const CITY_PROJECT_FALLOFF: (&str, &str) = (
+    "    let ratio = distance / range;
+    let window = clamp(1.0 - ratio * ratio * ratio * ratio, 0.0, 1.0);
+    return window * window / (distance * distance + 1.0);",
+    "    return 1.0 / (1.0 + 0.09 * distance + 0.032 * distance * distance);",
+);
+
+/// The range at which a light with `falloff` has fallen below one 8-bit
+/// step (1/255) of what it gives at `reference` metres, to half a metre.
+fn range_where_it_fades(falloff: impl Fn(f32) -> f32, reference: f32) -> f32 {
+    (0..).map(|i| i as f32 * 0.5).find(|d| falloff(*d) < falloff(reference) / 255.0).unwrap()
+}
+
+/// How many cluster lists of the aerial view the first `count` street
+/// lamps are in when each reaches `range` metres.
+fn lamp_cluster_entries(count: usize, range: f32) -> usize {
+    let city = City::new();
+    let lamps: Vec<Light> = city
+        .fixed_lights
+        .iter()
+        .filter(|l| matches!(l.kind, LightKind::Spot { .. }))
+        .take(count)
+        .map(|l| Light { range, ..*l })
+        .collect();
+    clusters::cull(&aerial_camera(16.0 / 9.0), &lamps).indices.len()
+}
+// ANCHOR_END: city_falloff
+
+#[test]
+fn exercise_2_the_city_projects_falloff_has_no_end_and_culling_pays_for_it() {
+    compiles_with(CITY, "lighting/lights.wgsl", &[CITY_PROJECT_FALLOFF]);
+    // A street lamp hangs 6.6 m above the road and reaches 18 m.
+    let (below, at_range) = (city_project_falloff(6.6), city_project_falloff(18.0));
+    let fades = range_where_it_fades(city_project_falloff, 6.6);
+    let (near, far) = (lamp_cluster_entries(16, 18.0), lamp_cluster_entries(16, fades));
+    println!(
+        "the city project's falloff at 18 m: {at_range:.3} ({:.0} % of the light under the lamp); \
+         below 1/255 of that at {fades} m; 16 lamps in {near} cluster lists at 18 m, {far} at {fades} m",
+        100.0 * at_range / below
+    );
+    assert!((at_range - 0.077).abs() < 0.001 && (100.0 * at_range / below - 23.0).abs() < 0.5);
+    assert_eq!(fades, 153.0);
+    assert!(near.abs_diff(475) <= 5 && far.abs_diff(35_891) <= 360, "{near} and {far} entries");
+    let growth = far as f64 / near as f64;
+    assert!((growth - LAMP_LIST_GROWTH).abs() < 0.05 * LAMP_LIST_GROWTH, "{growth:.1} times as many entries");
+}
+
+/// How many times as many cluster entries the lamps have at 152.5 m as at 18 m.
+const LAMP_LIST_GROWTH: f64 = 75.6;
+
+// ANCHOR: torch
+/// Exercise 3: a torch, a point light riding with the camera, added to a
+/// frame's lights.
+fn with_torch(mut lights: Vec<Light>, camera: &Camera) -> Vec<Light> {
+    lights.push(Light { position: camera.position, colour: Vec3::splat(40.0), range: 25.0, kind: LightKind::Point });
+    lights
+}
+// ANCHOR_END: torch
+
+/// What a depth picture shows: for each pixel that shows the city (not
+/// the sky), its column, its row and the view-space distance to it.
+fn covered_pixels(camera: &Camera, depths: &[[f32; 4]], width: u32) -> Vec<(u32, u32, f32)> {
+    let (near, far) = (camera.near, camera.far);
+    depths
+        .iter()
+        .enumerate()
+        .filter(|(_, d)| d[0] < 1.0)
+        .map(|(i, d)| (i as u32 % width, i as u32 / width, near * far / (far - d[0] * (far - near))))
+        .collect()
+}
+
+// ANCHOR: grid
+/// Exercise 5: how many lights a fragment visits, on average over the
+/// pixels of a depth picture, with the view cut into `grid` clusters
+/// (across, down, deep), each listing the lights `cull` would list there:
+/// its two tests, for any grid.
+fn lights_visited(
+    camera: &Camera,
+    lights: &[Light],
+    pixels: &[(u32, u32, f32)],
+    size: (u32, u32),
+    grid: [u32; 3],
+) -> f64 {
+    let (near, far) = (camera.near, camera.far);
+    let view = camera.view();
+    let spans: Vec<_> = lights.iter().map(|light| light_span(camera, light, grid)).collect();
+    let mut listed: HashMap<[u32; 3], u32> = HashMap::new();
+    let mut visited = 0u64;
+    for &(x, y, distance) in pixels {
+        let slice = ((distance / near).ln() / (far / near).ln() * grid[2] as f32).floor();
+        let cluster = [x * grid[0] / size.0, y * grid[1] / size.1, slice.clamp(0.0, grid[2] as f32 - 1.0) as u32];
+        visited += u64::from(*listed.entry(cluster).or_insert_with(|| {
+            let (low, high) = cluster_box(camera, grid, cluster);
+            let inside = |span: &Option<[std::ops::Range<u32>; 3]>| {
+                span.as_ref().is_some_and(|s| (0..3).all(|axis| s[axis].contains(&cluster[axis])))
+            };
+            let centre = |light: &Light| view.transform_point3(light.position);
+            let reaching =
+                lights.iter().zip(&spans).filter(|(l, s)| inside(s) && reaches(&centre(l), l, &view, low, high));
+            reaching.count() as u32
+        }));
+    }
+    visited as f64 / pixels.len() as f64
+}
+
+/// The clusters a light's sphere may touch (`light_span` in clusters.rs,
+/// for any grid): the slices its depth spans, and the tiles its bounding
+/// box projects to, cut off at the near plane.
+fn light_span(camera: &Camera, light: &Light, grid: [u32; 3]) -> Option<[std::ops::Range<u32>; 3]> {
+    let (near, far) = (camera.near, camera.far);
+    let centre = camera.view().transform_point3(light.position);
+    let (depth, r) = (-centre.z, light.range);
+    if depth + r < near || depth - r > far {
+        return None;
+    }
+    let slice =
+        |d: f32| ((d / near).ln() / (far / near).ln() * grid[2] as f32).floor().clamp(0.0, grid[2] as f32 - 1.0) as u32;
+    let (near_z, far_z) = ((centre.z + r).min(-near), centre.z - r);
+    let (mut low, mut high) = (Vec3::splat(f32::INFINITY), Vec3::splat(f32::NEG_INFINITY));
+    for corner in 0..8 {
+        let x = centre.x + if corner & 1 == 0 { -r } else { r };
+        let y = centre.y + if corner & 2 == 0 { -r } else { r };
+        let z = if corner & 4 == 0 { near_z } else { far_z };
+        let ndc = camera.projection().project_point3(Vec3::new(x, y, z));
+        (low, high) = (low.min(ndc), high.max(ndc));
+    }
+    if high.x < -1.0 || low.x > 1.0 || high.y < -1.0 || low.y > 1.0 {
+        return None;
+    }
+    let tile = |v: f32, n: u32| ((v.clamp(0.0, 0.999_999) * n as f32) as u32).min(n - 1);
+    let (x0, x1) = (tile((low.x + 1.0) * 0.5, grid[0]), tile((high.x + 1.0) * 0.5, grid[0]));
+    let (y0, y1) = (tile((1.0 - high.y) * 0.5, grid[1]), tile((1.0 - low.y) * 0.5, grid[1]));
+    Some([x0..x1 + 1, y0..y1 + 1, slice((depth - r).max(near))..slice((depth + r).min(far)) + 1])
+}
+
+/// A cluster's box in view space (`cluster_boxes` in clusters.rs, for any grid).
+fn cluster_box(camera: &Camera, grid: [u32; 3], [x, y, z]: [u32; 3]) -> (Vec3, Vec3) {
+    let tan_y = (camera.fov_y / 2.0).tan();
+    let tan_x = tan_y * camera.aspect;
+    let depth_at = |s: u32| camera.near * (camera.far / camera.near).powf(s as f32 / grid[2] as f32);
+    let ndc = |i: u32, n: u32| -1.0 + 2.0 * i as f32 / n as f32;
+    let (mut low, mut high) = (Vec3::splat(f32::INFINITY), Vec3::splat(f32::NEG_INFINITY));
+    for depth in [depth_at(z), depth_at(z + 1)] {
+        for nx in [ndc(x, grid[0]), ndc(x + 1, grid[0])] {
+            for ny in [-ndc(y, grid[1]), -ndc(y + 1, grid[1])] {
+                let corner = Vec3::new(nx * depth * tan_x, ny * depth * tan_y, -depth);
+                (low, high) = (low.min(corner), high.max(corner));
+            }
+        }
+    }
+    (low, high)
+}
+
+/// Whether `light`, at `centre` in view space, can reach the box from
+/// `low` to `high` (`reaches` in clusters.rs).
+fn reaches(centre: &Vec3, light: &Light, view: &common::glam::Mat4, low: Vec3, high: Vec3) -> bool {
+    if centre.clamp(low, high).distance_squared(*centre) >= light.range * light.range {
+        return false;
+    }
+    match light.kind {
+        LightKind::Point => true,
+        LightKind::Spot { direction, .. } => {
+            let axis = view.transform_vector3(direction);
+            axis.dot(Vec3::select(axis.cmpge(Vec3::ZERO), high, low) - *centre) > 0.0
+        }
+    }
+}
+
+/// The bench's culled 256-light frame over its one-light frame, predicted
+/// for a grid whose fragments visit `visited` lights: a straight line
+/// through the three grids the page's table measured.
+fn predicted_cost(visited: f64) -> f64 {
+    let measured = [(5.44, 2.40), (4.39, 2.17), (3.35, 1.91)];
+    let (mx, my) = (measured.iter().map(|m| m.0).sum::<f64>() / 3.0, measured.iter().map(|m| m.1).sum::<f64>() / 3.0);
+    let slope = measured.iter().map(|(x, y)| (x - mx) * (y - my)).sum::<f64>()
+        / measured.iter().map(|(x, _)| (x - mx).powi(2)).sum::<f64>();
+    my + slope * (visited - mx)
+}
+// ANCHOR_END: grid
+
+/// The fewest lights any grid could leave a fragment to visit: those that
+/// really reach the point the pixel shows (every `step`-th pixel each way).
+fn lights_reaching(camera: &Camera, lights: &[Light], pixels: &[(u32, u32, f32)], size: (u32, u32), step: u32) -> f64 {
+    let sampled: Vec<_> = pixels.iter().filter(|(x, y, _)| x % step == 0 && y % step == 0).collect();
+    let total: usize = sampled
+        .iter()
+        .map(|&&(x, y, distance)| {
+            let (_, d) = pixel_ray(camera, (x, y), size);
+            // `distance` is along the view axis; the ray is longer off-centre.
+            let point = camera.position + d * (distance / d.dot(camera.forward()));
+            lights.iter().filter(|l| l.reaching(point).max_element() > 0.0).count()
+        })
+        .sum();
+    total as f64 / sampled.len() as f64
+}
+
+// ANCHOR: reinhard
+/// Exercise 4: Reinhard's operator in place of the ACES fit, in tonemap.wgsl.
+const REINHARD: (&str, &str) = (
+    "return clamp((x * (2.51 * x + 0.03)) / (x * (2.43 * x + 0.59) + 0.14), vec3<f32>(0.0), vec3<f32>(1.0));",
+    "return x / (1.0 + x);",
+);
+// ANCHOR_END: reinhard
+
+/// An 8-bit sRGB pixel's luminance (Rec. 709 weights on the stored values)
+/// and saturation ((max − min) / max).
+fn luminance_and_saturation(p: &image::Rgba<u8>) -> (f32, f32) {
+    let [r, g, b] = [p[0], p[1], p[2]].map(f32::from);
+    let (max, min) = (r.max(g).max(b), r.min(g).min(b));
+    (0.2126 * r + 0.7152 * g + 0.0722 * b, if max > 0.0 { (max - min) / max } else { 0.0 })
+}
+
+/// Exercises 3 to 5 on one night city: a torch from the street and from the
+/// air; the grid's lights per fragment; and the night under Reinhard's curve.
+#[test]
+fn exercises_3_to_5_on_the_night_city() {
+    let root = shader::scratch_copy("lighting-solutions").unwrap();
+    let gpu = Gpu::headless(LightingChapter::gpu_needs()).expect("an adapter (lavapipe will do)");
+    gpu.read_shaders_from(Some(root.clone()));
+    let size = (320, 180);
+    let target = Target { format: OFFSCREEN_FORMAT, width: size.0, height: size.1 };
+    let mut chapter = LightingChapter::new(&gpu, target, ()).unwrap();
+    let time = LightingChapter::SNAPSHOT_TIME;
+    let draw = |chapter: &mut LightingChapter, view: &str, camera: Camera| {
+        let index = view_index::<LightingChapter>(view).unwrap();
+        chapter.select_view(index);
+        chapter.camera = camera;
+        let picture = capture(&gpu, chapter, target, time, index).unwrap();
+        let depths = read_floats(&gpu, &chapter.post.hdr().depth_texture).unwrap();
+        (picture, covered_pixels(&camera, &depths, size.0))
+    };
+
+    // Exercise 3: the share of the pixels whose cluster lists the torch.
+    let aspect = target.aspect();
+    for (camera, expected) in [(lighting::street_camera(aspect), TORCH_FROM_THE_STREET), (aerial_camera(aspect), 0.0)] {
+        let (_, pixels) = draw(&mut chapter, "night", camera);
+        let torch = with_torch(Vec::new(), &camera);
+        let share = lights_visited(&camera, &torch, &pixels, size, GRID);
+        println!("the torch is in the list of {:.1} % of the pixels seen from {:?}", share * 100.0, camera.position);
+        assert!((share - expected).abs() < 0.02, "{share}");
+    }
+
+    // Exercise 5: lights per fragment at 256 lights, by grid.
+    let camera = aerial_camera(aspect);
+    let (_, pixels) = draw(&mut chapter, "lights-256", camera);
+    let traffic = chapter.city.traffic(chapter.clocks.cars.time(time), chapter.clocks.drones.time(time));
+    let night = daylight(TimeOfDay::Night.phase(time, 1.0)).night;
+    let lights = frame_lights(&chapter.city, &traffic, &beacons(MAX_LIGHTS as usize), LightCount::First(256), night);
+    let stats = chapter.stats(&gpu);
+    let chapters_own: f64 =
+        stats.split("covered pixel: ").nth(1).and_then(|s| s.split(';').next()).unwrap().parse().unwrap();
+    let chosen = lights_visited(&camera, &lights, &pixels, size, GRID);
+    let coarse = lights_visited(&camera, &lights, &pixels, size, [16, 9, 24]);
+    let finest = lights_reaching(&camera, &lights, &pixels, size, 2);
+    println!(
+        "lights visited per fragment at 256 lights: 64 × 36 × 48 {chosen:.2} (the chapter counts {chapters_own:.2}), \
+         16 × 9 × 24 {coarse:.2}; lights that reach the point: {finest:.2}"
+    );
+    assert!((chosen - chapters_own).abs() < 0.01 * chapters_own, "{chosen} against the chapter's {chapters_own}");
+    assert!((coarse - VISITED_16_9_24).abs() < 0.02 * VISITED_16_9_24, "{coarse}");
+    let cost = predicted_cost(coarse);
+    println!("predicted: the 256-light frame {cost:.2} times the one-light frame (1.91 with the chapter's grid)");
+    assert!((cost - 3.28).abs() < 0.05, "{cost}");
+    assert!((finest - REACHING_256).abs() < 0.03 * REACHING_256, "{finest}");
+
+    // Exercise 4: the night under ACES, then under Reinhard.
+    let camera = aerial_camera(aspect);
+    let (aces, _) = draw(&mut chapter, "night", camera);
+    let file = root.join("lighting/tonemap.wgsl");
+    let source = std::fs::read_to_string(&file).unwrap();
+    assert_eq!(source.matches(REINHARD.0).count(), 1);
+    std::fs::write(&file, source.replacen(REINHARD.0, REINHARD.1, 1)).unwrap();
+    assert!(gpu.reload_shaders(&["lighting/tonemap.wgsl"]).unwrap() >= 1);
+    let (reinhard, _) = draw(&mut chapter, "night", camera);
+    let pairs: Vec<_> =
+        aces.pixels().map(luminance_and_saturation).zip(reinhard.pixels().map(luminance_and_saturation)).collect();
+    let mean = |values: &mut dyn Iterator<Item = f32>| {
+        let (sum, n) = values.fold((0.0, 0), |(s, n), v| (s + v, n + 1));
+        sum / n as f32
+    };
+    // Dark streets: pixels ACES leaves below 24 of 255. Neon: the brightest
+    // pixels (ACES luminance above 200), whose colour is the question.
+    let dark = |(a, _): &&((f32, f32), (f32, f32))| a.0 < 24.0;
+    let bright = |(a, _): &&((f32, f32), (f32, f32))| a.0 > 200.0;
+    let dark_aces = mean(&mut pairs.iter().filter(dark).map(|(a, _)| a.0));
+    let dark_reinhard = mean(&mut pairs.iter().filter(dark).map(|(_, r)| r.0));
+    let neon_aces = mean(&mut pairs.iter().filter(bright).map(|(a, _)| a.1));
+    let neon_reinhard = mean(&mut pairs.iter().filter(bright).map(|(_, r)| r.1));
+    let neon_brightness = mean(&mut pairs.iter().filter(bright).map(|(_, r)| r.0));
+    let neon_brightness_aces = mean(&mut pairs.iter().filter(bright).map(|(a, _)| a.0));
+    println!(
+        "dark streets: {dark_aces:.1} of 255 under ACES, {dark_reinhard:.1} under Reinhard; the brightest pixels \
+         (above 200 under ACES): saturation {neon_aces:.2} under ACES, {neon_reinhard:.2} under Reinhard, \
+         brightness {neon_brightness_aces:.0} under ACES, {neon_brightness:.0} under Reinhard"
+    );
+    assert!((dark_aces - 18.7).abs() < 0.5 && (dark_reinhard - 30.4).abs() < 0.5);
+    assert!((neon_aces - 0.20).abs() < 0.02 && (neon_reinhard - 0.33).abs() < 0.02);
+    assert!((neon_brightness - NEON_BRIGHTNESS_REINHARD).abs() < 3.0);
+    let _ = std::fs::remove_dir_all(&root);
+}
+
+/// The share of the street view's pixels whose cluster lists the torch.
+const TORCH_FROM_THE_STREET: f64 = 0.496;
+/// Lights a fragment visits at 256 lights with a 16 × 9 × 24 grid.
+const VISITED_16_9_24: f64 = 9.16;
+/// Lights that really reach a visible point, at 256 lights.
+const REACHING_256: f64 = 0.70;
+/// The brightest pixels' brightness under Reinhard (of 255; above 200 under ACES).
+const NEON_BRIGHTNESS_REINHARD: f32 = 208.0;

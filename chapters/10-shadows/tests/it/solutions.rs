@@ -1,0 +1,426 @@
+//! Worked solutions to the exercises on chapter 10's page. Each makes the
+//! change its exercise asks for and asserts the figure the page's solution
+//! states, so that the solutions are built and checked with the chapter.
+
+use common::glam::{Mat4, Vec3};
+use common::headless::{OFFSCREEN_FORMAT, capture};
+use common::{Camera, Chapter, Gpu, ShaderFile, Target, shader};
+use shadows::game::{self, Controls, Game, JUMP_SPEED, STEP};
+use shadows::shadow_map::{Bias, Cull, Filter, LightBox, ShadowSettings, fit_light};
+use shadows::{CAMERA_DISTANCE, Settings, ShadowsChapter, Show, scene, side_camera, visible_part};
+
+/// `file` with `edits` made to the text of `path` (the file itself or a
+/// module it imports), composed with its imports and validated by naga.
+/// Each edit's `before` must occur exactly once.
+fn compiles_with(file: ShaderFile, path: &str, edits: &[(&str, &str)]) {
+    assert!(file.path == path || file.imports.iter().any(|i| i.path == path), "{path} is not in {}", file.path);
+    let text = |f: &ShaderFile| {
+        let mut text = f.embedded.to_string();
+        if f.path == path {
+            for (before, after) in edits {
+                assert_eq!(text.matches(before).count(), 1, "{path} should hold `{before}` once");
+                text = text.replacen(before, after, 1);
+            }
+        }
+        text
+    };
+    let imports: Vec<(&str, String)> = file.imports.iter().map(|i| (i.path, text(i))).collect();
+    common::shader::compose_with(&text(&file), file.path, &imports, &[]).unwrap_or_else(|e| panic!("{e}"));
+}
+
+/// What the shadow map says in one picture of the `Show::Sunlit` kind
+/// (red: the sun that arrives, green: whether the surface faces the sun).
+#[derive(Clone, Copy, Debug)]
+struct Sunlit {
+    /// Pixels whose surface faces the sun…
+    facing: usize,
+    /// …and of those, the ones the map puts in shadow (under half the sun).
+    facing_shadowed: usize,
+    /// Pixels whose surface faces away from the sun that the map calls lit.
+    away_lit: usize,
+}
+
+/// Counts what [`Sunlit`] says in a picture of the level at `time` with
+/// `settings`, shown as `Show::Sunlit`.
+fn sunlit(gpu: &Gpu, chapter: &mut ShadowsChapter, settings: Settings, time: f32) -> Sunlit {
+    let target = Target { format: OFFSCREEN_FORMAT, width: 320, height: 180 };
+    chapter.settings = Settings { show: Show::Sunlit, ..settings };
+    let image = capture(gpu, chapter, target, time, 0).unwrap();
+    let pixels: Vec<_> = image.pixels().collect();
+    Sunlit {
+        facing: pixels.iter().filter(|p| p[1] > 128).count(),
+        facing_shadowed: pixels.iter().filter(|p| p[1] > 128 && p[0] < 128).count(),
+        away_lit: pixels.iter().filter(|p| p[1] <= 128 && p[0] >= 128).count(),
+    }
+}
+
+// ANCHOR: bias_search
+/// Exercise 1: the smallest bias of one kind that removes the acne, the
+/// other kind at zero. `bias(x)` makes the bias for a value `x`; the acne
+/// is gone when no more sun-facing pixels are in shadow than with the
+/// chapter's default bias, give or take 1 % of them.
+fn smallest_bias_without_acne(
+    gpu: &Gpu,
+    chapter: &mut ShadowsChapter,
+    bias: impl Fn(f32) -> Bias,
+    values: &[f32],
+) -> (f32, Vec<(f32, usize)>) {
+    let time = ShadowsChapter::SNAPSHOT_TIME;
+    let reference = sunlit(gpu, chapter, Settings::hard_with(Bias::DEFAULT), time);
+    let mut counts = Vec::new();
+    for &value in values {
+        let shadowed = sunlit(gpu, chapter, Settings::hard_with(bias(value)), time).facing_shadowed;
+        counts.push((value, shadowed));
+        if shadowed <= reference.facing_shadowed + reference.facing / 100 {
+            return (value, counts);
+        }
+    }
+    panic!("no value removed the acne: {counts:?}");
+}
+// ANCHOR_END: bias_search
+
+/// Exercises 1, 2 and 4 on one chapter: the biases, front faces, and the
+/// sun going down.
+#[test]
+fn exercises_1_2_and_4_biases_culling_and_the_evening_sun() {
+    let gpu = Gpu::headless(ShadowsChapter::gpu_needs()).unwrap();
+    let target = Target { format: OFFSCREEN_FORMAT, width: 320, height: 180 };
+    let mut chapter = ShadowsChapter::new(&gpu, target, ()).unwrap();
+    let time = ShadowsChapter::SNAPSHOT_TIME;
+
+    // Exercise 1.
+    let values = [0.25, 0.5, 0.75, 1.0, 1.5, 2.0, 3.0, 4.0];
+    let (offset, offsets) = smallest_bias_without_acne(
+        &gpu,
+        &mut chapter,
+        |v| Bias { constant: 0, slope_scale: 0.0, normal_offset: v },
+        &values,
+    );
+    let (slope, slopes) = smallest_bias_without_acne(
+        &gpu,
+        &mut chapter,
+        |v| Bias { constant: 0, slope_scale: v, normal_offset: 0.0 },
+        &values,
+    );
+    // Then each raised to 64 times that: how much of the real shadow goes.
+    let default = sunlit(&gpu, &mut chapter, Settings::hard_with(Bias::DEFAULT), time).facing_shadowed;
+    let lost = |bias: Bias, chapter: &mut ShadowsChapter| {
+        let left = sunlit(&gpu, chapter, Settings::hard_with(bias), time).facing_shadowed;
+        1.0 - left as f64 / default as f64
+    };
+    let offset_lost = lost(Bias { constant: 0, slope_scale: 0.0, normal_offset: 64.0 * offset }, &mut chapter);
+    let slope_lost = lost(Bias { constant: 0, slope_scale: 64.0 * slope, normal_offset: 0.0 }, &mut chapter);
+    println!(
+        "normal offset alone: acne gone at {offset} texels {offsets:?}; slope scale alone: at {slope} {slopes:?}; \
+         at 64 times those, {:.1} % and {:.1} % of the real shadow is lost",
+        offset_lost * 100.0,
+        slope_lost * 100.0
+    );
+    assert_eq!((offset, slope), ACNE_GONE_AT);
+    let close = |count: usize, expected: usize| count.abs_diff(expected) <= expected / 50;
+    assert!(
+        close(default, 2967) && close(offsets[0].1, 8615) && close(slopes[0].1, 10_342) && close(slopes[1].1, 3822)
+    );
+    assert!((offset_lost - OFFSET_LOSES).abs() < 0.01 && (slope_lost - SLOPE_LOSES).abs() < 0.01);
+
+    // Exercise 2: front faces culled, no bias at all.
+    let front = front_faces_culled_without_bias();
+    let culled_front = sunlit(&gpu, &mut chapter, front, time);
+    let usual = sunlit(&gpu, &mut chapter, Settings::hard_with(Bias::DEFAULT), time);
+    let acne = sunlit(&gpu, &mut chapter, Settings::hard_with(Bias::NONE), time);
+    println!("front faces culled, no bias: {culled_front:?}; default: {usual:?}; no bias: {acne:?}");
+    // With no lookup at all every surface is lit: the pixels facing away, counted.
+    let away = sunlit(&gpu, &mut chapter, Settings::filtered(Filter::Off, 2048), time).away_lit;
+    let share = |n: usize, of: usize| n as f64 / of as f64;
+    println!(
+        "faces turned away from the sun that the map calls lit: {:.1} % with front faces culled, {:.1} % usually",
+        100.0 * share(culled_front.away_lit, away),
+        100.0 * share(usual.away_lit, away)
+    );
+    assert!((share(culled_front.away_lit, away) - AWAY_LIT_FRONT).abs() < 0.02);
+    assert!((share(usual.away_lit, away) - AWAY_LIT_DEFAULT).abs() < 0.02);
+    // Facing the sun: no acne, and every real shadow (the tree's among them) still there.
+    assert!(culled_front.facing_shadowed.abs_diff(usual.facing_shadowed) <= usual.facing_shadowed / 100);
+    assert!(close(culled_front.facing_shadowed, 2963) && close(acne.facing_shadowed, 17_411));
+
+    // Exercise 4: the acne view, and the default bias, as the sun goes down.
+    let mut by_phase = Vec::new();
+    for phase in [0.375, 0.7, 0.73] {
+        let (elevation, texel_on_ground) = sun_on_the_ground(phase, time);
+        let acne = sunlit(&gpu, &mut chapter, Settings { phase, ..Settings::hard_with(Bias::NONE) }, time);
+        let biased = sunlit(&gpu, &mut chapter, Settings { phase, ..Settings::hard_with(Bias::DEFAULT) }, time);
+        let (acne, biased) = (share(acne.facing_shadowed, acne.facing), share(biased.facing_shadowed, biased.facing));
+        by_phase.push((phase, elevation, acne, biased, texel_on_ground));
+    }
+    println!(
+        "phase, elevation, shadowed share of sun-facing pixels without bias and with, texel on the ground: {by_phase:?}"
+    );
+    for ((_, _, acne, biased, texel), (expected_acne, expected_biased, expected_texel)) in by_phase.iter().zip(EVENING)
+    {
+        assert!((acne - expected_acne).abs() < 0.01 && (biased - expected_biased).abs() < 0.01, "{by_phase:?}");
+        assert!((texel - expected_texel).abs() < 0.001, "{by_phase:?}");
+    }
+}
+
+/// At phases 0.375, 0.7 and 0.73: the share of sun-facing pixels in
+/// shadow without bias and with the default one, and the ground a
+/// shadow-map texel covers, metres.
+const EVENING: [(f64, f64, f32); 3] = [(0.550, 0.094, 0.0379), (0.585, 0.171, 0.0868), (0.614, 0.227, 0.2140)];
+
+// ANCHOR: front_faces
+/// Exercise 2: the shadow pass keeps the far sides of solids (it culls the
+/// faces towards the sun), with no bias of either kind, hard shadows.
+fn front_faces_culled_without_bias() -> Settings {
+    let no_bias = Settings::hard_with(Bias::NONE);
+    Settings { shadow: ShadowSettings { cull: Cull::Front, ..no_bias.shadow }, ..no_bias }
+}
+// ANCHOR_END: front_faces
+
+// ANCHOR: evening
+/// Exercise 4: the sun's height at `phase`, degrees, and how much ground a
+/// texel of the map covers there (the texel across the box, over the sine
+/// of the sun's height: a grazing sun stretches it).
+fn sun_on_the_ground(phase: f32, time: f32) -> (f32, f32) {
+    let sun = scene::sun_at(phase).direction;
+    let elevation = sun.y.asin();
+    let level = game::level();
+    let texel = fit_light(sun, &visible_at(time), scene::level_bounds(&level), 2048).texel;
+    (elevation.to_degrees(), texel / elevation.sin())
+}
+// ANCHOR_END: evening
+
+/// The share of the faces turned away from the sun that read as lit with
+/// front faces culled and no bias, and with the default culling and bias.
+const AWAY_LIT_FRONT: f64 = 0.598;
+const AWAY_LIT_DEFAULT: f64 = 0.457;
+
+/// Exercise 1's answers: the smallest normal offset and slope scale that
+/// remove the acne on their own.
+const ACNE_GONE_AT: (f32, f32) = (0.5, 0.75);
+/// The share of the real shadows lost at 64 times those (below zero: gained).
+const OFFSET_LOSES: f64 = -0.045;
+const SLOPE_LOSES: f64 = 0.083;
+
+// ANCHOR: tight_fit
+/// Exercise 3: the sun's box fitted to the smallest rectangle around the
+/// `focus` points in the light's own space, rather than a sphere. Its depth
+/// is `fit_light`'s; a square map takes the rectangle's longer side.
+fn fit_light_tightly(towards_sun: Vec3, focus: &[Vec3], caster_bounds: (Vec3, Vec3), size: u32) -> LightBox {
+    let sphere = fit_light(towards_sun, focus, caster_bounds, size);
+    let up = if towards_sun.y.abs() > 0.99 { Vec3::Z } else { Vec3::Y };
+    let rotation = Mat4::look_to_rh(Vec3::ZERO, -towards_sun, up);
+    let in_light = focus.iter().map(|p| rotation.transform_point3(*p));
+    let (low, high) = in_light.fold((Vec3::MAX, Vec3::MIN), |(lo, hi), p| (lo.min(p), hi.max(p)));
+    // A texel of margin on each side: snapping moves the box by up to half of one.
+    let texel = (high - low).truncate().max_element() / (size - 2) as f32;
+    let side = texel * size as f32;
+    // Snapped to whole texels, as fit_light's box is.
+    let centre = ((low + high) / 2.0).truncate();
+    let centre = (centre / texel).round() * texel;
+    // The depth range is the sphere fit's: recover it from its matrix.
+    let (near, far) = depth_range(&sphere, &rotation);
+    let projection = Mat4::orthographic_rh(
+        centre.x - side / 2.0,
+        centre.x + side / 2.0,
+        centre.y - side / 2.0,
+        centre.y + side / 2.0,
+        near,
+        far,
+    );
+    LightBox { view_proj: projection * rotation, texel, depth: far - near }
+}
+
+/// The near and far distances of `light`'s box along the sun's direction.
+fn depth_range(light: &LightBox, rotation: &Mat4) -> (f32, f32) {
+    let corners = light.corners().map(|c| -rotation.transform_point3(c).z);
+    corners.iter().fold((f32::MAX, f32::MIN), |(n, f), d| (n.min(*d), f.max(*d)))
+}
+// ANCHOR_END: tight_fit
+
+/// The points the chapter fits its box to at scene time `time`.
+fn visible_at(time: f32) -> [Vec3; 8] {
+    let level = game::level();
+    let game = game::demo_at(&level, &level.solids(), time);
+    let camera = side_camera(game.player.aabb.centre(), CAMERA_DISTANCE, 16.0 / 9.0);
+    visible_part(&camera, scene::level_bounds(&level).1.z)
+}
+
+#[test]
+fn exercise_3_a_rectangle_in_the_lights_space_has_smaller_texels_and_keeps_its_size() {
+    let level = game::level();
+    let bounds = scene::level_bounds(&level);
+    let towards_sun = scene::sun_at(Settings::DEFAULT.phase).direction;
+    let focus = visible_at(ShadowsChapter::SNAPSHOT_TIME);
+    let sphere = fit_light(towards_sun, &focus, bounds, 2048);
+    let tight = fit_light_tightly(towards_sun, &focus, bounds, 2048);
+    // Every focus point still falls inside the tight box.
+    for p in focus {
+        let q = tight.view_proj.project_point3(p);
+        assert!(q.x.abs() <= 1.0 && q.y.abs() <= 1.0 && (0.0..=1.0).contains(&q.z), "{p} falls outside: {q}");
+    }
+    println!("texel: {:.2} cm fitted to a sphere, {:.2} cm to a rectangle", sphere.texel * 100.0, tight.texel * 100.0);
+    assert!((sphere.texel * 100.0 - 2.20).abs() < 0.01);
+    assert!((tight.texel * 100.0 - TIGHT_TEXEL_CM).abs() < 0.01);
+    // While the player runs the demo (the camera only slides) the rectangle
+    // keeps its size; with the sun moving, it does not.
+    let sizes = |moving_sun: bool| {
+        (0..=210)
+            .map(|i| {
+                let time = i as f32 * 0.1;
+                let phase = Settings::DEFAULT.phase + if moving_sun { time / shadows::DAY_SECONDS } else { 0.0 };
+                fit_light_tightly(scene::sun_at(phase).direction, &visible_at(time), bounds, 2048).texel
+            })
+            .fold((f32::MAX, f32::MIN), |(lo, hi), t| (lo.min(t), hi.max(t)))
+    };
+    let (still, moving) = (sizes(false), sizes(true));
+    println!("texel over the demo: {still:?} with the sun still, {moving:?} with it moving");
+    assert!(still.1 - still.0 < 1e-4 * still.0, "the texel changes while the player runs: {still:?}");
+    assert!(
+        (moving.0 - 0.0143).abs() < 0.0001 && (moving.1 - 0.0190).abs() < 0.0001,
+        "with the sun moving: {moving:?}"
+    );
+}
+
+/// A texel of the 2048² map fitted to the rectangle, cm.
+const TIGHT_TEXEL_CM: f32 = 1.59;
+
+// ANCHOR: cascades
+/// Exercise 5: the part of the view nearer than `distance` metres along
+/// each corner ray, between the level's front face (z = `half_depth`) and
+/// its back: the focus of the near cascade.
+fn near_part(camera: &Camera, half_depth: f32, distance: f32) -> Vec<Vec3> {
+    let far_points = visible_part(camera, half_depth);
+    let mut points = Vec::new();
+    for corner in 0..4 {
+        let (front, back) = (far_points[corner], far_points[corner + 4]);
+        let along = (back - camera.position).normalize();
+        let near_end = camera.position + along * distance;
+        // Where the ray is 10 m out, or the back face if that is nearer.
+        let end = if near_end.z > back.z { near_end } else { back };
+        points.extend([front, end]);
+    }
+    points
+}
+
+/// Which cascade a world point reads: the near one wherever its box has
+/// the point (inside by a texel's margin), else the far one.
+fn cascade_for(point: Vec3, near: &LightBox) -> usize {
+    let q = near.view_proj.project_point3(point);
+    let margin = 2.0 * near.texel / (near.corners()[1] - near.corners()[0]).length();
+    if q.x.abs() < 1.0 - margin && q.y.abs() < 1.0 - margin && (0.0..=1.0).contains(&q.z) { 0 } else { 1 }
+}
+
+/// The same choice in shadow.wgsl: a second map and box, looked up where
+/// the point falls inside the near box.
+const SECOND_CASCADE: [(&str, &str); 2] = [
+    (
+        "@group(3) @binding(3) var<storage, read> shadow: Shadow;",
+        "@group(3) @binding(3) var<storage, read> shadow: Shadow;
+@group(3) @binding(4) var near_map: texture_depth_2d;
+// The near cascade's box, world to its clip space.
+@group(3) @binding(5) var<storage, read> near_box: mat4x4<f32>;
+
+fn near_cascade(world: vec3<f32>) -> f32 {
+    let clip = near_box * vec4<f32>(world, 1.0);
+    let uv = vec2<f32>(clip.x * 0.5 + 0.5, 0.5 - clip.y * 0.5);
+    if any(abs(clip.xy) > vec2<f32>(0.99)) || clip.z < 0.0 || clip.z > 1.0 {
+        return -1.0;
+    }
+    return textureSampleCompareLevel(near_map, compare_nearest, uv, clip.z);
+}",
+    ),
+    (
+        "    let texel = 1.0 / f32(shadow.options.y);\n    switch mode {",
+        "    let texel = 1.0 / f32(shadow.options.y);
+    let near = near_cascade(lifted);
+    if near >= 0.0 {
+        return near;
+    }
+    switch mode {",
+    ),
+];
+// ANCHOR_END: cascades
+
+#[test]
+fn exercise_5_a_near_cascade_halves_the_texel_where_the_view_is_close() {
+    compiles_with(
+        shader!("shadows/scene.wgsl", imports: ["lighting/lights.wgsl", "textures/surface.wgsl", "shadows/shadow.wgsl"]),
+        "shadows/shadow.wgsl",
+        &SECOND_CASCADE,
+    );
+    let level = game::level();
+    let bounds = scene::level_bounds(&level);
+    let towards_sun = scene::sun_at(Settings::DEFAULT.phase).direction;
+    let game = game::demo_at(&level, &level.solids(), ShadowsChapter::SNAPSHOT_TIME);
+    let camera = side_camera(game.player.aabb.centre(), CAMERA_DISTANCE, 16.0 / 9.0);
+    let far = fit_light(towards_sun, &visible_part(&camera, bounds.1.z), bounds, 2048);
+    let near_points = near_part(&camera, bounds.1.z, 10.0);
+    let near = fit_light(towards_sun, &near_points, bounds, 2048);
+    println!("texels: {:.2} cm in the near cascade, {:.2} cm in the far one", near.texel * 100.0, far.texel * 100.0);
+    assert!((near.texel * 100.0 - NEAR_TEXEL_CM).abs() < 0.01);
+    // The near points' middle reads the near map; the far end of the level the far one.
+    let middle = near_points.iter().sum::<Vec3>() / near_points.len() as f32;
+    let far_corners = visible_part(&camera, bounds.1.z);
+    let choices: Vec<usize> = far_corners.iter().map(|p| cascade_for(*p, &near)).collect();
+    println!("the far box's corners read cascades {choices:?}");
+    assert_eq!(cascade_for(middle, &near), 0);
+    assert_eq!(choices, FAR_CORNERS_READ);
+}
+
+/// A texel of the near cascade's 2048² map, cm.
+const NEAR_TEXEL_CM: f32 = 1.03;
+/// Which cascade each corner of the visible part reads.
+const FAR_CORNERS_READ: [usize; 8] = [0, 0, 0, 0, 1, 0, 1, 1];
+
+// ANCHOR: double_jump
+/// Exercise 6: the game with one more jump in the air, taken by pressing
+/// jump again (not by holding it) before landing.
+struct DoubleJump {
+    game: Game,
+    air_jump_left: bool,
+    jump_held: bool,
+}
+
+impl DoubleJump {
+    fn new(level: &game::Level) -> Self {
+        Self { game: Game::new(level), air_jump_left: true, jump_held: false }
+    }
+
+    fn step(&mut self, solids: &[shadows::physics::Aabb], controls: Controls) {
+        let pressed = controls.jump && !self.jump_held;
+        self.jump_held = controls.jump;
+        if self.game.on_floor {
+            self.air_jump_left = true;
+        } else if pressed && self.air_jump_left {
+            self.game.player.velocity.y = JUMP_SPEED;
+            self.air_jump_left = false;
+        }
+        self.game.step(solids, controls);
+    }
+}
+
+/// The first test to write: pressing jump three times in one flight lifts
+/// the player twice as high as one jump (2 × v² / 2g), and no higher.
+#[test]
+fn exercise_6_a_second_jump_in_the_air_lifts_the_player_once() {
+    let level = game::level();
+    let solids = level.solids();
+    let mut player = DoubleJump::new(&level);
+    let ground = player.game.player.aabb.min.y;
+    // Presses of 0.1 s at 0, 0.42 s (the top of the first jump) and 0.84 s.
+    let pressed = |t: f32| [0.0f32, 0.42, 0.84].iter().any(|&at| t >= at && t < at + 0.1);
+    let mut highest = 0.0f32;
+    for _ in 0..(2.0 / STEP) as u32 {
+        let time = player.game.time();
+        player.step(&solids, Controls { jump: pressed(time), ..Controls::default() });
+        highest = highest.max(player.game.player.aabb.min.y - ground);
+    }
+    let one_jump = JUMP_SPEED * JUMP_SPEED / (2.0 * game::GRAVITY);
+    println!("one jump rises {one_jump:.2} m; with the double jump the player reached {highest:.2} m");
+    assert!((highest - DOUBLE_JUMP_HEIGHT).abs() < 0.02, "{highest}");
+    assert!(player.game.on_floor, "and landed");
+}
+
+/// The highest the double jump takes the player, metres (one jump: 2.08 m).
+const DOUBLE_JUMP_HEIGHT: f32 = 4.08;
+// ANCHOR_END: double_jump
