@@ -126,38 +126,15 @@ fn test() -> anyhow::Result<()> {
     step("build", &|| cargo(&["build", "--workspace", "--all-targets"]))?;
     step("cargo test", &|| cargo(&["test", "--workspace"]))?;
     step("shared builds", &chapters_reuse_the_test_build)?;
-    // The window test waits on frames and on X much of the time, and the
-    // book's WebAssembly build ends in a link on one core: side by side
-    // they keep both cores busy. (`cargo test` has just compared every
-    // snapshot; the book only copies them.)
-    step("window and book", &|| both(("window", &|| window_test::run_built(&[])), ("book", &|| book::build(false))))?;
+    // The build step built every chapter. (Run side by side with the
+    // book's build, both took as long as one after the other: both keep the
+    // two cores busy.)
+    step("window", &|| window_test::run_built(&[]))?;
+    // `cargo test` has just compared every snapshot; the book only copies them.
+    step("book", &|| book::build(false))?;
     step("browser", &|| web::browser_test(&[]))?;
     println!("\nxtask test: all checks passed in {:.0} s", started.elapsed().as_secs_f64());
     Ok(())
-}
-
-/// Runs two steps at once, each timed; fails with both failures.
-fn both(
-    (first, run_first): (&str, &(dyn Fn() -> anyhow::Result<()> + Sync)),
-    (second, run_second): (&str, &(dyn Fn() -> anyhow::Result<()> + Sync)),
-) -> anyhow::Result<()> {
-    let timed = |name: &str, run: &(dyn Fn() -> anyhow::Result<()> + Sync)| {
-        let begun = std::time::Instant::now();
-        let result = run();
-        let seconds = begun.elapsed().as_secs_f64();
-        println!("\nxtask test: {name} {} after {seconds:.0} s", if result.is_ok() { "passed" } else { "FAILED" });
-        result.with_context(|| format!("{name} failed"))
-    };
-    let (a, b) = std::thread::scope(|scope| {
-        let other = scope.spawn(|| timed(first, run_first));
-        let b = timed(second, run_second);
-        (other.join().unwrap_or_else(|_| Err(anyhow::anyhow!("{first} panicked"))), b)
-    });
-    match (a, b) {
-        (Ok(()), Ok(())) => Ok(()),
-        (Err(e), Ok(())) | (Ok(()), Err(e)) => Err(e),
-        (Err(a), Err(b)) => Err(anyhow::anyhow!("{a:#}\n{b:#}")),
-    }
 }
 
 /// After the workspace build, `cargo run -p CHAPTER` (the
