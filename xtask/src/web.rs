@@ -264,7 +264,7 @@ pub fn browser_test(chapters: &[String]) -> anyhow::Result<()> {
 /// crates it shares with the rest and compile headless_chrome and its
 /// protocol code a second time (70 s of a cold `cargo xtask test`).
 fn run_browser_bin(args: &[&str], chromium: &Path) -> anyhow::Result<()> {
-    cargo(&["build", "--quiet", "--workspace", "--bins"])?;
+    cargo(&["build", "--quiet", "--workspace", "--exclude", "xtask", "--bins"])?;
     let binary = target_dir().join("debug").join("browser");
     println!("\n$ {} {}", binary.display(), args.join(" "));
     let status = Command::new(&binary)

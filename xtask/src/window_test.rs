@@ -433,7 +433,7 @@ pub fn run(chosen: &[String]) -> anyhow::Result<()> {
     if let Some(bad) = chosen.iter().find(|c| !all.contains(c)) {
         bail!("unknown chapter '{bad}'; the chapters are: {}", all.join(", "));
     }
-    crate::cargo(&["build", "--workspace", "--bins"])?;
+    crate::cargo(&["build", "--workspace", "--exclude", "xtask", "--bins"])?;
     run_built(chosen)
 }
 
