@@ -103,6 +103,32 @@ impl ShaderFile {
     }
 }
 
+impl ShaderFile {
+    /// Composes and validates the embedded text with `edits` made to the
+    /// file at `path` (this file or one it imports), each `(before, after)`
+    /// replacing text that occurs exactly once: how the book's solutions
+    /// check a shader change against the real files.
+    pub fn compose_edited(&self, path: &str, edits: &[(&str, &str)]) -> Result<naga::Module, ShaderError> {
+        if self.path != path && !self.imports.iter().any(|i| i.path == path) {
+            return Err(ShaderError(format!("{path} is not {} nor one of its imports", self.path)));
+        }
+        let text = |f: &ShaderFile| -> Result<String, ShaderError> {
+            let mut text = f.embedded.to_string();
+            if f.path == path {
+                for (before, after) in edits {
+                    if text.matches(before).count() != 1 {
+                        return Err(ShaderError(format!("{path} should hold `{before}` once")));
+                    }
+                    text = text.replacen(before, after, 1);
+                }
+            }
+            Ok(text)
+        };
+        let imports = self.imports.iter().map(|i| Ok((i.path, text(i)?))).collect::<Result<Vec<_>, ShaderError>>()?;
+        compose_with(&text(self)?, self.path, &imports, &[])
+    }
+}
+
 // ANCHOR: compose
 /// Composes WGSL `source` (at `path`) with the modules it `#import`s, each
 /// given as (path, text), and validates the result with naga, the same

@@ -19,19 +19,7 @@ use lighting::{LightCount, LightingChapter, MAX_LIGHTS, aerial_camera, beacons, 
 /// module it imports), composed with its imports and validated by naga.
 /// Each edit's `before` must occur exactly once.
 fn compiles_with(file: ShaderFile, path: &str, edits: &[(&str, &str)]) {
-    assert!(file.path == path || file.imports.iter().any(|i| i.path == path), "{path} is not in {}", file.path);
-    let text = |f: &ShaderFile| {
-        let mut text = f.embedded.to_string();
-        if f.path == path {
-            for (before, after) in edits {
-                assert_eq!(text.matches(before).count(), 1, "{path} should hold `{before}` once");
-                text = text.replacen(before, after, 1);
-            }
-        }
-        text
-    };
-    let imports: Vec<(&str, String)> = file.imports.iter().map(|i| (i.path, text(i))).collect();
-    common::shader::compose_with(&text(&file), file.path, &imports, &[]).unwrap_or_else(|e| panic!("{e}"));
+    file.compose_edited(path, edits).unwrap_or_else(|e| panic!("{e}"));
 }
 
 /// The city's shader, with the light loop it imports.
