@@ -20,6 +20,11 @@ pub struct View {
     /// Compared with a reference image by the tests. False for views that
     /// exist to be measured (`View::bench`).
     pub snapshot: bool,
+    /// The view whose picture this one draws again by another method, to
+    /// compare their cost (instanced rocks and one draw call each). The
+    /// tests then check the two look alike, where every other two views
+    /// must look different. `None` for most views.
+    pub same_picture_as: Option<&'static str>,
 }
 
 /// What choosing a view does to the camera. Either way, what a view shows
@@ -36,11 +41,11 @@ pub enum ViewKind {
 
 impl View {
     pub const fn mode(name: &'static str, about: &'static str) -> Self {
-        Self { name, about, kind: ViewKind::Mode, snapshot: true }
+        Self { name, about, kind: ViewKind::Mode, snapshot: true, same_picture_as: None }
     }
 
     pub const fn preset(name: &'static str, about: &'static str) -> Self {
-        Self { name, about, kind: ViewKind::Preset, snapshot: true }
+        Self { name, about, kind: ViewKind::Preset, snapshot: true, same_picture_as: None }
     }
 
     /// A mode that exists to be measured by `--bench` (a workload, such as
@@ -49,7 +54,7 @@ impl View {
     /// be checked some other way (chapter 08 compares its naive loop with
     /// the culled one in a test).
     pub const fn bench(name: &'static str, about: &'static str) -> Self {
-        Self { name, about, kind: ViewKind::Mode, snapshot: false }
+        Self { name, about, kind: ViewKind::Mode, snapshot: false, same_picture_as: None }
     }
 }
 
@@ -81,6 +86,13 @@ impl<S, P> ViewRow<S, P> {
     pub const fn bench(name: &'static str, about: &'static str, settings: S) -> Self {
         Self { view: View::bench(name, about), settings, camera: None }
     }
+
+    /// This view draws `view`'s picture by another method (see
+    /// [`View::same_picture_as`]).
+    pub const fn same_picture_as(mut self, view: &'static str) -> Self {
+        self.view.same_picture_as = Some(view);
+        self
+    }
 }
 
 /// The views of a table, in its order: a chapter's [`Chapter::VIEWS`] is
@@ -97,23 +109,30 @@ pub const fn views_of<S, P, const N: usize>(table: &[ViewRow<S, P>; N]) -> [View
 // ANCHOR_END: view_table
 
 /// How far a picture may be from its reference and still pass, by NVIDIA's
-/// FLIP metric (the snapshot tests compute it): a mean over the image and a
-/// share of visibly wrong pixels.
+/// FLIP metric (the snapshot tests compute it): a mean over the image, a
+/// share of visibly wrong pixels, and a mean over the worst small patch.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Tolerance {
     /// Largest allowed mean FLIP error over the image (0 = identical, 1 = opposite).
     pub mean: f32,
     /// Largest allowed fraction of pixels whose FLIP error exceeds
-    /// [`Tolerance::OUTLIER_ERROR`]: catches a small object gone missing,
-    /// which barely moves the mean.
+    /// [`Tolerance::OUTLIER_ERROR`]: catches a scattered error (a texture
+    /// filtered wrongly, edges moved), which barely moves the mean.
     pub outliers: f32,
+    /// Largest allowed mean FLIP error over any [`Tolerance::PATCH`] ×
+    /// [`Tolerance::PATCH`] square of pixels: catches a small object gone
+    /// missing or changed (the sun's disc, a shadow), whose pixels are too
+    /// few for the share of outliers and all in one place.
+    pub patch: f32,
 }
 
 impl Tolerance {
     /// FLIP error above which a pixel counts as visibly wrong.
     pub const OUTLIER_ERROR: f32 = 0.3;
+    /// The side, in pixels, of the squares [`Tolerance::patch`] averages over.
+    pub const PATCH: u32 = 16;
     /// Allows rasteriser and driver differences, not missing geometry.
-    pub const DEFAULT: Self = Self { mean: 0.01, outliers: 0.001 };
+    pub const DEFAULT: Self = Self { mean: 0.01, outliers: 0.001, patch: 0.2 };
 }
 
 /// The colour target a chapter draws into: the window's surface or an

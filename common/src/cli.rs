@@ -108,7 +108,7 @@ fn run_headless<C: Chapter>(args: &Args) -> anyhow::Result<()> {
             }
             let extra = if report.stats.is_empty() { String::new() } else { format!("; {}", report.stats) };
             notes.push(format!("- {}: setup (`Chapter::new`) {:.0} ms{extra}", report.view, report.setup_ms));
-            notes.push(format!("- {}: {}", report.view, report.memory.line()));
+            notes.push(format!("- {}: {}", report.view, report.memory.summary()));
         }
         println!("\n{}", notes.join("\n"));
         let baseline = C::BENCH_BASELINE.and_then(|name| medians.iter().find(|(view, _)| *view == name));

@@ -118,7 +118,7 @@ impl Growth {
         Some(((b? - a?) / n).min((c? - b?) / m))
     }
 
-    /// One line, which `cargo xtask test` reads back (see [`Growth::parse`]):
+    /// Every reading, for a failure's message:
     /// `memory: process A B C bytes, gpu D E F bytes, after N and M frames`.
     pub fn line(&self) -> String {
         let values = |read: fn(&MemoryUse) -> Option<u64>| {
@@ -133,17 +133,24 @@ impl Growth {
         )
     }
 
-    /// Reads back what [`Growth::line`] wrote (anywhere in `text`).
-    pub fn parse(text: &str) -> Option<Self> {
-        let rest = text.lines().find_map(|l| l.split_once("memory: process "))?.1;
-        let words: Vec<&str> = rest.split_whitespace().collect();
-        let value = |w: &str| if w == "n/a" { Some(None) } else { w.parse().ok().map(Some) };
-        let [a, b, c, "bytes,", "gpu", d, e, f, "bytes,", "after", n, "and", m, "frames", ..] = words.as_slice() else {
-            return None;
+    /// For the bench tables: the last reading and the steady growth,
+    /// `memory: process 107.0 MB (+0.0 KB a frame), GPU 7.6 MB (+0.0 KB a
+    /// frame), over 33 + 33 frames`.
+    pub fn summary(&self) -> String {
+        let part = |name: &str, last: Option<u64>, per_frame: Option<f64>| match (last, per_frame) {
+            (Some(last), Some(growth)) => {
+                format!("{name} {:.1} MB ({:+.1} KB a frame)", last as f64 / 1e6, growth / 1024.0)
+            }
+            (Some(last), None) => format!("{name} {:.1} MB", last as f64 / 1e6),
+            _ => format!("{name} not measured"),
         };
-        let reading = |process: &str, gpu: &str| Some(MemoryUse { process: value(process)?, gpu: value(gpu)? });
-        let frames = [n.parse().ok()?, m.parse().ok()?];
-        Some(Self { readings: [reading(a, d)?, reading(b, e)?, reading(c, f)?], frames })
+        format!(
+            "memory: {}, {}, over {} + {} frames",
+            part("process", self.readings[2].process, self.process_per_frame()),
+            part("GPU", self.readings[2].gpu, self.gpu_per_frame()),
+            self.frames[0],
+            self.frames[1]
+        )
     }
 }
 
@@ -156,16 +163,18 @@ mod tests {
     }
 
     #[test]
-    fn lines_read_back() {
+    fn readings_are_summed_up_as_steady_growth() {
         let growth = Growth {
             readings: [reading(100_000, Some(4096)), reading(130_000, None), reading(160_000, Some(4096))],
             frames: [15, 15],
         };
-        let text = format!("| a | table |\n- default: {}\n", growth.line());
-        assert_eq!(Growth::parse(&text), Some(growth));
         assert_eq!(growth.process_per_frame(), Some(2000.0));
         assert_eq!(growth.gpu_per_frame(), None, "no count in the middle reading");
-        assert_eq!(Growth::parse("memory: process 1 2 3 bytes"), None, "a cut line is no reading");
+        assert_eq!(
+            growth.line(),
+            "memory: process 100000 130000 160000 bytes, gpu 4096 n/a 4096 bytes, after 15 and 15 frames"
+        );
+        assert_eq!(growth.summary(), "memory: process 0.2 MB (+2.0 KB a frame), GPU 0.0 MB, over 15 + 15 frames");
     }
 
     #[test]

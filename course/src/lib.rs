@@ -96,7 +96,10 @@ static ENGINE: Part = Part { title: "The small engine", opening: Some(("The engi
 static OCEAN: Part = Part { title: "The ocean", opening: Some(("The ocean project", "part-ocean.md")) };
 
 /// The pages after the last chapter, as (title, file in `book/src/`).
-pub const APPENDICES: [(&str, &str); 1] = [("Appendix: Running in the browser", "running-in-the-browser.md")];
+pub const APPENDICES: [(&str, &str); 2] = [
+    ("Appendix: Running in the browser", "running-in-the-browser.md"),
+    ("Glossary: light and its measures", "glossary.md"),
+];
 
 /// The chapter called `name` (its package name), if there is one.
 pub fn find(name: &str) -> Option<Record> {

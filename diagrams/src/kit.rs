@@ -177,3 +177,36 @@ pub fn trim(value: f32) -> String {
     let text = format!("{value:.2}");
     text.trim_end_matches('0').trim_end_matches('.').to_string()
 }
+
+impl Svg {
+    /// A picture placed in the rectangle (x, y, w, h), embedded as a PNG,
+    /// each texel drawn as a sharp square (no smoothing when enlarged).
+    pub fn image(&mut self, x: f32, y: f32, w: f32, h: f32, picture: &common::image::RgbaImage) {
+        let mut png = Vec::new();
+        picture
+            .write_to(&mut std::io::Cursor::new(&mut png), common::image::ImageFormat::Png)
+            .expect("a picture in memory encodes as PNG");
+        let _ = writeln!(
+            self.body,
+            r#"<image x="{x:.1}" y="{y:.1}" width="{w:.1}" height="{h:.1}" preserveAspectRatio="none" style="image-rendering: pixelated" href="data:image/png;base64,{}"/>"#,
+            base64(&png)
+        );
+    }
+}
+
+/// Standard base64 (RFC 4648, with padding), for pictures inside an SVG.
+fn base64(bytes: &[u8]) -> String {
+    const ALPHABET: &[u8; 64] = b"ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
+    let mut out = String::with_capacity(bytes.len().div_ceil(3) * 4);
+    for chunk in bytes.chunks(3) {
+        let n = chunk.iter().enumerate().fold(0u32, |n, (i, &b)| n | u32::from(b) << (16 - 8 * i));
+        for i in 0..4 {
+            if i <= chunk.len() {
+                out.push(ALPHABET[(n >> (18 - 6 * i) & 63) as usize] as char);
+            } else {
+                out.push('=');
+            }
+        }
+    }
+    out
+}

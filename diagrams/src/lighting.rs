@@ -1,6 +1,7 @@
-//! Chapter 08's figures: a point light's falloff, a spot light's cone, the
-//! half vector, clusters from the side and the bloom chain, from the
-//! chapter's lights, clusters and bloom.
+//! Chapter 08's figures: Lambert's cosine law, a point light's falloff, a
+//! spot light's cone, the half vector, clusters from the side, the tone
+//! curves, and the bloom's chain, knee and downsample taps, from the
+//! chapter's lights, clusters, tone map and bloom.
 
 use common::glam::Vec2;
 
@@ -194,6 +195,226 @@ pub fn bloom_chain() -> String {
         11.0,
         "start",
         BLUE,
+    );
+    svg.finish()
+}
+
+/// `f` as a dashed line: every other of its 120 pieces.
+fn dashed_curve(svg: &mut Svg, axes: &Axes, f: impl Fn(f32) -> f32, stroke: &str) {
+    let at = |i: usize| {
+        let x = axes.x.0 + (axes.x.1 - axes.x.0) * i as f32 / 120.0;
+        axes.at(x, f(x).clamp(axes.y.0, axes.y.1))
+    };
+    for i in (0..120).step_by(2) {
+        svg.polyline(&[at(i), at(i + 1)], stroke, 1.6);
+    }
+}
+
+/// Chapter 08: tone curves against exposed light in stops: clipping,
+/// Reinhard's x / (1 + x), and the ACES fit the chapter uses
+/// (`lighting::post::aces_fit`, the same as tonemap.wgsl), with and without
+/// the 0.6 that would give the original ACES curve's exposure.
+pub fn tone_curves() -> String {
+    use lighting::post::aces_fit;
+    let mut svg = Svg::new(640.0, 340.0);
+    let axes = Axes { origin: Vec2::new(70.0, 50.0), size: Vec2::new(520.0, 220.0), x: (-6.0, 4.0), y: (0.0, 1.0) };
+    axes.draw(
+        &mut svg,
+        &[-6.0, -4.0, -2.0, 0.0, 2.0, 4.0],
+        &[0.0, 0.25, 0.5, 0.75, 1.0],
+        "light × exposure, in stops from 1 (each stop doubles it)",
+        "value on screen (linear, before sRGB encoding)",
+    );
+    let light = |stops: f32| 2f32.powf(stops);
+    svg.dashed(axes.at(0.0, 0.0), axes.at(0.0, 1.0), "#c9c2b6");
+    axes.curve(&mut svg, |s| light(s).min(1.0), MUTED, 1.5);
+    axes.curve(&mut svg, |s| light(s) / (1.0 + light(s)), BLUE, 1.8);
+    dashed_curve(&mut svg, &axes, |s| aces_fit(0.6 * light(s)), "#8a6fb0");
+    axes.curve(&mut svg, |s| aces_fit(light(s)), ACCENT, 2.4);
+    // Where the fit meets 1 and clips: its asymptote, 2.51 / 2.43, is above 1.
+    let clip = (0.56 + (0.56f32 * 0.56 + 4.0 * 0.08 * 0.14).sqrt()) / 0.16;
+    assert!((aces_fit(clip) - 1.0).abs() < 1e-4 && aces_fit(clip * 0.99) < 1.0);
+    svg.circle(axes.at(clip.log2(), 1.0), 3.5, ACCENT);
+    svg.text(axes.at(clip.log2(), 1.0) + Vec2::new(0.0, -8.0), &format!("{clip:.2}: white"), 10.0, "middle", ACCENT);
+    for (value, colour) in [(aces_fit(1.0), ACCENT), (0.5, BLUE)] {
+        svg.circle(axes.at(0.0, value), 3.5, colour);
+        svg.text(axes.at(0.0, value) + Vec2::new(-6.0, -5.0), &format!("{value:.2}"), 10.0, "end", colour);
+    }
+    // The key, in the corner no curve reaches.
+    svg.text(Vec2::new(84.0, 68.0), "clip: min(x, 1)", 11.0, "start", MUTED);
+    svg.text(Vec2::new(84.0, 82.0), "Reinhard: x / (1 + x)", 11.0, "start", BLUE);
+    svg.text(Vec2::new(84.0, 96.0), "ACES fit (Narkowicz): this chapter", 11.0, "start", ACCENT);
+    svg.text(Vec2::new(84.0, 110.0), "ACES fit of 0.6 x: ACES's exposure", 11.0, "start", "#8a6fb0");
+    svg.finish()
+}
+
+/// Chapter 08: the bloom's bright part against brightness (a grey's
+/// channel), from `lighting::bloom::BloomSettings::bright_part` with the
+/// chapter's settings: a hard cut at the threshold, and the soft knee.
+pub fn bloom_knee() -> String {
+    use lighting::bloom::BloomSettings;
+    let settings = BloomSettings::DEFAULT;
+    let (threshold, knee) = (settings.threshold, settings.knee);
+    let mut svg = Svg::new(640.0, 320.0);
+    let axes = Axes { origin: Vec2::new(70.0, 50.0), size: Vec2::new(520.0, 200.0), x: (0.0, 3.0), y: (0.0, 2.0) };
+    let (low, high) = (axes.at(threshold - knee, 2.0), axes.at(threshold + knee, 0.0));
+    svg.rect(low.x, low.y, high.x - low.x, high.y - low.y, "#f6e7d3", "none");
+    axes.draw(
+        &mut svg,
+        &[0.0, threshold - knee, threshold, threshold + knee, 2.0, 3.0],
+        &[0.0, 0.5, 1.0, 1.5, 2.0],
+        "brightness: the largest of the three channels",
+        "what blooms",
+    );
+    axes.curve(&mut svg, |b| settings.bright_part([b; 3])[0], ACCENT, 2.4);
+    // On top: above the knee the two are the same line.
+    dashed_curve(&mut svg, &axes, |b| (b - threshold).max(0.0), INK);
+    svg.text(
+        axes.at(threshold, 1.9),
+        &format!("the knee: {} to {}", threshold - knee, threshold + knee),
+        10.0,
+        "middle",
+        INK,
+    );
+    // The key, under the curve's right half.
+    svg.text(Vec2::new(585.0, 206.0), &format!("dashed, a hard cut: max(b − {threshold}, 0)"), 11.0, "end", INK);
+    svg.text(
+        Vec2::new(585.0, 220.0),
+        &format!("the chapter: (b − {})² / {} in the knee,", threshold - knee, 4.0 * knee),
+        11.0,
+        "end",
+        ACCENT,
+    );
+    svg.text(Vec2::new(585.0, 234.0), &format!("b − {threshold} above it"), 11.0, "end", ACCENT);
+    svg.finish()
+}
+
+/// Chapter 08: the 13 taps of the bloom's downsample
+/// (`lighting::bloom::DOWNSAMPLE_TAPS`, held to bloom.wgsl by a test) on
+/// the texels of the level they read, and what each texel weighs in the end.
+pub fn downsample_taps() -> String {
+    use lighting::bloom::DOWNSAMPLE_TAPS;
+    let mut svg = Svg::new(640.0, 330.0);
+    let cell = 36.0;
+    // Texels −3‥2 on each axis; tap offsets are texel corners, −2‥2.
+    let panel = |left: f32| move |x: f32, y: f32| Vec2::new(left + (x + 3.0) * cell, 70.0 + (y + 3.0) * cell);
+    let (taps, texels) = (panel(40.0), panel(360.0));
+    // What each texel weighs: a bilinear tap at a corner reads its four texels a quarter each.
+    let mut weight = [[0.0f32; 6]; 6];
+    for ([x, y], w) in DOWNSAMPLE_TAPS {
+        for (tx, ty) in [(x - 1.0, y - 1.0), (x, y - 1.0), (x - 1.0, y), (x, y)] {
+            weight[(ty + 3.0) as usize][(tx + 3.0) as usize] += w / 4.0;
+        }
+    }
+    let heaviest = weight.iter().flatten().fold(0.0f32, |a, &b| a.max(b));
+    for (row, weights) in weight.iter().enumerate() {
+        for (column, &texel_weight) in weights.iter().enumerate() {
+            let (x, y) = (column as f32 - 3.0, row as f32 - 3.0);
+            svg.rect(taps(x, y).x, taps(x, y).y, cell, cell, "#efe6da", "#d9cfc1");
+            let share = texel_weight / heaviest;
+            let shade = format!(
+                "rgb({0:.0},{1:.0},{2:.0})",
+                250.0 - 58.0 * share,
+                240.0 - 157.0 * share,
+                228.0 - 185.0 * share
+            );
+            svg.rect(texels(x, y).x, texels(x, y).y, cell, cell, &shade, "#d9cfc1");
+            let label = format!("{}", (texel_weight * 128.0).round());
+            let ink = if share > 0.6 { "#fbf8f3" } else { INK };
+            svg.text(texels(x, y) + Vec2::new(cell / 2.0, cell / 2.0 + 4.0), &label, 11.0, "middle", ink);
+        }
+    }
+    // The output texel: the 2 × 2 block around the middle corner.
+    for at in [taps, texels] {
+        svg.rect(at(-1.0, -1.0).x, at(-1.0, -1.0).y, 2.0 * cell, 2.0 * cell, "none", INK);
+    }
+    for ([x, y], w) in DOWNSAMPLE_TAPS {
+        let colour = if w == 0.125 {
+            ACCENT
+        } else if w == 0.0625 {
+            BLUE
+        } else {
+            MUTED
+        };
+        svg.circle(taps(x, y), 3.0 + 40.0 * w, colour);
+    }
+    svg.text(Vec2::new(40.0, 300.0), "13 taps, each where four texels meet:", 11.0, "start", INK);
+    svg.text(Vec2::new(40.0, 316.0), "1/8 (orange), 1/16 (blue), 1/32 (grey)", 11.0, "start", INK);
+    svg.text(Vec2::new(360.0, 300.0), "what each texel weighs, in 128ths", 11.0, "start", INK);
+    svg.text(Vec2::new(360.0, 316.0), "(the outlined 2 × 2 block is the output texel)", 11.0, "start", INK);
+    svg.text(
+        Vec2::new(20.0, 28.0),
+        "Halvings 2 to 6 of the bloom chain: 13 taps read 6 × 6 texels of a level for one texel of the next",
+        11.0,
+        "start",
+        INK,
+    );
+    svg.finish()
+}
+
+/// Chapter 08: Lambert's cosine law. The same beam of parallel light on a
+/// surface it meets head-on, and on one it meets at 60° from the normal,
+/// where it covers 1 / cos 60° = twice the width.
+pub fn lambert_cosine() -> String {
+    let mut svg = Svg::new(640.0, 300.0);
+    let beam = 70.0;
+    for (left, degrees) in [(40.0f32, 0.0f32), (340.0, 60.0)] {
+        let theta = degrees.to_radians();
+        let ground = 230.0;
+        let hit = Vec2::new(left + 140.0, ground);
+        svg.line(Vec2::new(left, ground), Vec2::new(left + 280.0, ground), INK, 2.0);
+        // l, towards the light, leans from the normal (up) by θ; `across` is
+        // square to the beam, and the beam's far end is cut square to it.
+        let towards_light = Vec2::new(-theta.sin(), -theta.cos());
+        let across = Vec2::new(theta.cos(), -theta.sin());
+        let far = hit + towards_light * 130.0;
+        let (far_a, far_b) = (far - across * beam / 2.0, far + across * beam / 2.0);
+        let to_ground = |p: Vec2| p - towards_light * (ground - p.y) / theta.cos();
+        let (a, b) = (to_ground(far_a), to_ground(far_b));
+        svg.polygon(&[a, b, far_b, far_a], "#f6e7d3", "none");
+        for i in 0..5 {
+            let start = far_a + (far_b - far_a) * (i as f32 + 0.5) / 5.0;
+            svg.arrow(start, to_ground(start) + towards_light * 2.0, ACCENT);
+        }
+        // The beam's width, measured square to it, beyond its far end.
+        let (m, n) = (far_a + towards_light * 10.0, far_b + towards_light * 10.0);
+        svg.line(m, n, INK, 1.0);
+        svg.text(m - across * 6.0 + Vec2::new(0.0, 4.0), "w", 12.0, "end", INK);
+        // And the width it lands on.
+        svg.line(a + Vec2::Y * 8.0, b + Vec2::Y * 8.0, BLUE, 3.0);
+        let covered = if degrees == 0.0 {
+            "w".to_string()
+        } else {
+            format!("w / cos {degrees:.0}° = {:.0} w", 1.0 / theta.cos())
+        };
+        svg.text(hit + Vec2::new(0.0, 28.0), &covered, 12.0, "middle", BLUE);
+        svg.dashed(hit, hit + Vec2::new(0.0, -185.0), MUTED);
+        svg.text(hit + Vec2::new(6.0, -176.0), "n", 12.0, "start", MUTED);
+        if degrees > 0.0 {
+            let arc: Vec<Vec2> = (0..=16)
+                .map(|i| {
+                    let phi = theta * i as f32 / 16.0;
+                    hit + Vec2::new(-phi.sin(), -phi.cos()) * 44.0
+                })
+                .collect();
+            svg.polyline(&arc, INK, 1.2);
+            let middle = theta / 2.0;
+            svg.text(
+                hit + Vec2::new(-middle.sin(), -middle.cos()) * 56.0 + Vec2::new(0.0, 4.0),
+                "θ",
+                12.0,
+                "middle",
+                INK,
+            );
+        }
+        svg.text(Vec2::new(left + 140.0, 24.0), &format!("θ = {degrees:.0}°"), 12.0, "middle", INK);
+    }
+    svg.text(
+        Vec2::new(320.0, 290.0),
+        "The same light over more area: each square metre gets cos θ as much.",
+        11.0,
+        "middle",
+        INK,
     );
     svg.finish()
 }

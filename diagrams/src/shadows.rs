@@ -1,6 +1,16 @@
-//! Chapter 10's figure: shadow acne, and the slope-scaled bias that ends it.
+//! Chapter 10's figures: the shadow test, how the sun's box is fitted
+//! (computed with the chapter's `fit_light` for its default picture), and
+//! shadow acne with the slope-scaled bias that ends it.
 
-use common::glam::Vec2;
+use common::Chapter;
+use common::glam::{Vec2, Vec3};
+use std::path::Path;
+
+use common::glam::Mat4;
+use shadows::game::{self, Block, Game, Level, PropKind};
+use shadows::shadow_map::{self, LightBox, fit_light};
+use shadows::{CAMERA_DISTANCE, Settings, ShadowsChapter, scene, side_camera, visible_part};
+use textures::mesh::ModelInstance;
 
 use crate::kit::{ACCENT, BLUE, INK, MUTED, Svg};
 
@@ -64,6 +74,544 @@ pub fn shadow_acne() -> String {
         11.0,
         "start",
         BLUE,
+    );
+    svg.finish()
+}
+
+/// The chapter's default picture as `ShadowsChapter::render` fits the
+/// sun's box for it: the demo at the snapshot time, the game's camera at
+/// 16:9, the default sun, a 2048² map.
+struct Fitted {
+    level: Level,
+    game: Game,
+    bounds: (Vec3, Vec3),
+    towards_sun: Vec3,
+    eye: Vec3,
+    visible: [Vec3; 8],
+    light: LightBox,
+}
+
+fn fitted_at(time: f32) -> Fitted {
+    let level = game::level();
+    let game = game::demo_at(&level, &level.solids(), time);
+    let camera = side_camera(game.player.aabb.centre(), CAMERA_DISTANCE, 16.0 / 9.0);
+    let bounds = scene::level_bounds(&level);
+    let visible = visible_part(&camera, bounds.1.z);
+    let towards_sun = scene::sun_at(Settings::DEFAULT.phase).direction;
+    let light = fit_light(towards_sun, &visible, bounds, shadow_map::DEFAULT_SIZE);
+    Fitted { level, game, bounds, towards_sun, eye: camera.position, visible, light }
+}
+
+/// The boxes around the props and the player, from their models' own
+/// vertices placed as the chapter places them.
+fn model_boxes(f: &Fitted) -> Vec<(Vec3, Vec3)> {
+    let read: textures::obj::ReadFile = &scene::read;
+    let placed = |path: &str, instances: Vec<ModelInstance>| {
+        let model = textures::obj::load(Path::new(path), read).expect("the chapter's models load").model;
+        instances
+            .into_iter()
+            .map(|instance| {
+                let at = Mat4::from_cols_array_2d(&instance.model);
+                model.vertices.iter().fold((Vec3::MAX, Vec3::MIN), |(lo, hi), v| {
+                    let p = at.transform_point3(Vec3::from(v.position));
+                    (lo.min(p), hi.max(p))
+                })
+            })
+            .collect::<Vec<_>>()
+    };
+    let kinds = [PropKind::Tree, PropKind::Rock, PropKind::Crate];
+    let mut boxes: Vec<(Vec3, Vec3)> =
+        kinds.iter().flat_map(|&k| placed(scene::prop_model(k), scene::prop_instances(&f.level, k))).collect();
+    boxes.extend(placed(scene::PLAYER_MODEL, vec![scene::player_instance(&f.game)]));
+    boxes
+}
+
+/// A block of the level as a box in the world.
+fn block_box(block: &Block) -> (Vec3, Vec3) {
+    (block.aabb.min.extend(-block.depth), block.aabb.max.extend(block.depth))
+}
+
+fn box_corners((low, high): (Vec3, Vec3)) -> [Vec3; 8] {
+    std::array::from_fn(|i| {
+        Vec3::new(
+            if i & 1 == 0 { low.x } else { high.x },
+            if i & 2 == 0 { low.y } else { high.y },
+            if i & 4 == 0 { low.z } else { high.z },
+        )
+    })
+}
+
+/// The sun's box's own axes, read back from the corners of the box
+/// `fit_light` returned: across the map (x, y; y is up on the map) and
+/// away from the sun (depth). A point's coordinates are metres from the
+/// corner where the map's x and y are smallest, on the face nearest the sun.
+struct BoxFrame {
+    origin: Vec3,
+    axes: [Vec3; 3],
+}
+
+impl BoxFrame {
+    fn of(light: &LightBox) -> Self {
+        let c = light.corners();
+        Self { origin: c[0], axes: [1, 2, 4].map(|i| (c[i] - c[0]).normalize()) }
+    }
+
+    fn at(&self, p: Vec3) -> Vec3 {
+        let d = p - self.origin;
+        Vec3::new(d.dot(self.axes[0]), d.dot(self.axes[1]), d.dot(self.axes[2]))
+    }
+}
+
+/// The convex hull of `points` (Andrew's monotone chain): a box's outline
+/// seen along any direction.
+fn hull(points: &[Vec2]) -> Vec<Vec2> {
+    let mut sorted = points.to_vec();
+    sorted.sort_by(|a, b| a.x.total_cmp(&b.x).then(a.y.total_cmp(&b.y)));
+    let half = |points: &mut dyn Iterator<Item = Vec2>| {
+        let mut chain: Vec<Vec2> = Vec::new();
+        for q in points {
+            while chain.len() >= 2
+                && (chain[chain.len() - 1] - chain[chain.len() - 2]).perp_dot(q - chain[chain.len() - 2]) <= 0.0
+            {
+                chain.pop();
+            }
+            chain.push(q);
+        }
+        chain.pop();
+        chain
+    };
+    let mut outline = half(&mut sorted.iter().copied());
+    outline.extend(half(&mut sorted.iter().rev().copied()));
+    outline
+}
+
+/// A plane's region (y up) drawn into a rectangle of the picture (y
+/// down), the same scale on both axes, centred.
+struct Panel {
+    centre: Vec2,
+    scale: f32,
+    middle: Vec2,
+}
+
+impl Panel {
+    fn new((low, high): (Vec2, Vec2), origin: Vec2, size: Vec2) -> Self {
+        let span = high - low;
+        Self { centre: (low + high) / 2.0, scale: (size.x / span.x).min(size.y / span.y), middle: origin + size / 2.0 }
+    }
+
+    fn at(&self, p: Vec2) -> Vec2 {
+        self.middle + Vec2::new(p.x - self.centre.x, self.centre.y - p.y) * self.scale
+    }
+}
+
+/// Where the line `p + t·d` runs inside the box, as (t in, t out), if it does.
+fn through_box(p: Vec3, d: Vec3, (low, high): (Vec3, Vec3)) -> Option<(f32, f32)> {
+    let (mut enter, mut exit) = (f32::MIN, f32::MAX);
+    for axis in 0..3 {
+        if d[axis].abs() < 1e-9 {
+            if p[axis] < low[axis] || p[axis] > high[axis] {
+                return None;
+            }
+            continue;
+        }
+        let (a, b) = ((low[axis] - p[axis]) / d[axis], (high[axis] - p[axis]) / d[axis]);
+        enter = enter.max(a.min(b));
+        exit = exit.min(a.max(b));
+    }
+    (enter <= exit).then_some((enter, exit))
+}
+
+/// Where the figure's section crosses z = 0 (its shadowed point), and how
+/// far from there towards the sun its lit point lies, metres.
+const SECTION_AT: f32 = 25.6;
+const LIT_AT: f32 = 5.0;
+
+/// The demo's script runs for 21 s (`game::script`); a second later the
+/// player has stopped, and the view with it.
+const DEMO_SECONDS: u32 = 22;
+
+/// Chapter 10: the shadow test, in the chapter's default picture. A
+/// vertical section through the level along the sun's rays, through two
+/// points of the ground; for each, what the map stored along its ray (the
+/// first surface of the level's blocks the ray meets, coming from the sun)
+/// and the point's own depth, both from `fit_light`'s box.
+pub fn shadow_test() -> String {
+    let f = fitted_at(ShadowsChapter::SNAPSHOT_TIME);
+    let sun = f.towards_sun;
+    let light = f.light;
+    // The section: the vertical plane along the sun's rays through the
+    // ground at the right-hand edge of the first platform; u metres along
+    // the ground towards the sun, y up. Every ray towards the sun from a
+    // point of the plane stays in the plane.
+    let towards = Vec3::new(sun.x, 0.0, sun.z).normalize();
+    let shadowed = Vec3::new(SECTION_AT, 0.0, 0.0);
+    let lit = shadowed + towards * LIT_AT;
+    let (u_range, y_range) = ((-1.5f32, 8.0f32), (-1.2f32, 3.6f32));
+    let blocks: Vec<(Vec3, Vec3)> = f.level.blocks.iter().map(block_box).collect();
+    // The props and the player touch neither ray, nor the part of the
+    // section drawn: the blocks alone decide, and all of them are drawn.
+    for b in model_boxes(&f) {
+        for p in [shadowed, lit] {
+            assert!(through_box(p, sun, b).is_none_or(|(_, out)| out < 0.0), "a model stands on a ray");
+        }
+        let cut = through_box(shadowed, towards, (b.0.with_y(-1.0), b.1.with_y(1.0)));
+        let in_window = cut.is_some_and(|(u0, u1)| u1 > u_range.0 && u0 < u_range.1 && b.1.y > y_range.0);
+        assert!(!in_window, "a model stands in the section drawn: {b:?}");
+    }
+    let first_surface = |p: Vec3| {
+        let t = blocks.iter().filter_map(|b| through_box(p, sun, *b)).map(|(_, out)| out).fold(0.0, f32::max);
+        p + sun * t
+    };
+    let depth = |p: Vec3| light.view_proj.project_point3(p).z;
+    let texel = |p: Vec3| {
+        let clip = light.view_proj.project_point3(p);
+        let size = shadow_map::DEFAULT_SIZE as f32;
+        (((clip.x * 0.5 + 0.5) * size) as u32, ((0.5 - clip.y * 0.5) * size) as u32)
+    };
+
+    let mut svg = Svg::new(640.0, 420.0);
+    let panel = Panel::new(
+        (Vec2::new(-u_range.1, y_range.0), Vec2::new(-u_range.0, y_range.1)),
+        Vec2::new(20.0, 40.0),
+        Vec2::new(600.0, 260.0),
+    );
+    // Picture x grows away from the sun: the sun is on the left.
+    let at = |p: Vec3| panel.at(Vec2::new(-(p - shadowed).dot(towards), p.y));
+    let in_plane = |u: f32, y: f32| shadowed + towards * u + Vec3::Y * y;
+    let (corner_a, corner_b) = (at(in_plane(u_range.1, y_range.1)), at(in_plane(u_range.0, y_range.0)));
+    svg.clip(corner_a.x, corner_a.y, corner_b.x - corner_a.x, corner_b.y - corner_a.y);
+    for &(low, high) in &blocks {
+        // The block cut by the plane: the part of the line where it runs
+        // inside the block's footprint, from its bottom to its top.
+        let Some((u0, u1)) = through_box(shadowed, towards, (low.with_y(-1.0), high.with_y(1.0))) else { continue };
+        let rect = [in_plane(u0, low.y), in_plane(u1, low.y), in_plane(u1, high.y), in_plane(u0, high.y)];
+        svg.polygon(&rect.map(at), "#d9d3c7", "#a9a190");
+    }
+    for (p, colour, name) in [(lit, BLUE, "A"), (shadowed, ACCENT, "B")] {
+        // From the sun to the first surface, then on (dashed) behind it.
+        let hit = first_surface(p);
+        svg.line(at(hit), at(hit + sun * 40.0), colour, 1.6);
+        if hit.distance(p) > 0.01 {
+            svg.dashed(at(hit), at(p), colour);
+            svg.circle(at(hit), 5.0, colour);
+        }
+        svg.circle(at(p), 5.0, colour);
+        svg.text(at(p) + Vec2::new(8.0, -8.0), name, 13.0, "start", colour);
+    }
+    svg.unclip();
+    svg.rect(corner_a.x, corner_a.y, corner_b.x - corner_a.x, corner_b.y - corner_a.y, "none", MUTED);
+
+    // Labels: what the map stored along each ray, and each point's depth.
+    let metres = |d: f32| d * light.depth;
+    let stored_s = depth(first_surface(shadowed));
+    let (own_s, own_l, stored_l) = (depth(shadowed), depth(lit), depth(first_surface(lit)));
+    let hit_s = at(first_surface(shadowed));
+    svg.text(hit_s + Vec2::new(18.0, -34.0), "first on B's ray: the platform's top,", 11.0, "start", ACCENT);
+    svg.text(
+        hit_s + Vec2::new(18.0, -20.0),
+        &format!("stored in B's texel: {:.4} ({:.2} m)", stored_s, metres(stored_s)),
+        11.0,
+        "start",
+        ACCENT,
+    );
+    let (tl, ts) = (texel(lit), texel(shadowed));
+    svg.text(
+        at(shadowed) + Vec2::new(-10.0, 22.0),
+        &format!("B: depth {own_s:.4} ({:.2} m)", metres(own_s)),
+        11.0,
+        "end",
+        ACCENT,
+    );
+    svg.text(
+        at(lit) + Vec2::new(-10.0, 22.0),
+        &format!("A: depth {own_l:.4} ({:.2} m)", metres(own_l)),
+        11.0,
+        "end",
+        BLUE,
+    );
+    let towards_sun_label = at(in_plane(u_range.1 - 0.3, y_range.1 - 0.5));
+    let away = format!("← towards the sun: the box's near face is {:.0} m from A along its ray", metres(own_l));
+    svg.text(towards_sun_label, &away, 11.0, "start", MUTED);
+    svg.text(at(in_plane(u_range.0 + 0.2, -0.9)), "the ground", 11.0, "end", MUTED);
+    assert!(own_l <= stored_l && own_s > stored_s, "the figure's points are no longer lit and shadowed");
+    let lines = [
+        (
+            format!(
+                "A, texel {tl:?}: the ray's first surface is A itself; stored {stored_l:.4} ≥ A's {own_l:.4}: lit (1)"
+            ),
+            BLUE,
+        ),
+        (
+            format!(
+                "B, texel {ts:?}: stored {stored_s:.4} < B's {own_s:.4}; B is {:.2} m behind: shadowed (0)",
+                metres(own_s - stored_s)
+            ),
+            ACCENT,
+        ),
+        (
+            format!(
+                "Depths are fractions of the sun's box, {:.1} m from its face nearest the sun to its far face;",
+                light.depth
+            ),
+            INK,
+        ),
+        ("the comparison is the sampler's LessEqual: lit where the point's depth ≤ the stored one.".to_string(), INK),
+    ];
+    for (i, (line, colour)) in lines.iter().enumerate() {
+        svg.text(Vec2::new(20.0, 336.0 + 18.0 * i as f32), line, 11.0, "start", colour);
+    }
+    let title = format!(
+        "A section through the level along the sun's rays, default view at {} s, sun at {:.0}°: no bias",
+        ShadowsChapter::SNAPSHOT_TIME,
+        sun.y.asin().to_degrees()
+    );
+    svg.text(Vec2::new(20.0, 24.0), &title, 11.0, "start", INK);
+    svg.finish()
+}
+
+/// Chapter 10: how `fit_light` builds the sun's box for the chapter's
+/// default picture, in four panels: what the camera sees (the eight
+/// points), the same seen from the sun with the sphere and the square
+/// around it, the box's depth from the side, and the snap to whole texels
+/// (this frame and the next). The box is the one `fit_light` returned;
+/// the sphere's centre and reach, recomputed here, are checked against it.
+pub fn light_box_fit() -> String {
+    let time = ShadowsChapter::SNAPSHOT_TIME;
+    let f = fitted_at(time);
+    let light = f.light;
+    let frame = BoxFrame::of(&light);
+    let size = shadow_map::DEFAULT_SIZE as f32;
+    let radius = light.texel * size / 2.0;
+    // The sphere: around the middle of the points' bounding box, reaching
+    // the farthest point; its radius rounded up to half a metre.
+    let (low, high) = f.visible.iter().fold((Vec3::MAX, Vec3::MIN), |(lo, hi), p| (lo.min(*p), hi.max(*p)));
+    let centre = (low + high) / 2.0;
+    let reach = f.visible.iter().map(|p| p.distance(centre)).fold(0.0, f32::max);
+    assert_eq!((reach * 2.0).ceil() / 2.0, radius, "fit_light's radius is not the sphere's");
+    // The box's depth: from the caster nearest the sun to the point
+    // farthest from it, a metre more at each end.
+    let casters = box_corners(f.bounds);
+    let depths = casters.iter().chain(&f.visible).map(|p| frame.at(*p).z);
+    let (nearest, farthest) = depths.fold((f32::MAX, f32::MIN), |(n, x), d| (n.min(d), x.max(d)));
+    assert!((nearest - 1.0).abs() < 0.01 && (light.depth - farthest - 1.0).abs() < 0.01, "margins changed");
+
+    let mut svg = Svg::new(640.0, 700.0);
+    let size_of = Vec2::new(300.0, 220.0);
+    let origins = [Vec2::new(15.0, 44.0), Vec2::new(325.0, 44.0), Vec2::new(15.0, 390.0), Vec2::new(325.0, 390.0)];
+    let titles = [
+        "1 · What the camera sees",
+        "2 · Seen from the sun: a sphere, a square",
+        "3 · Depth: every caster, a metre to spare",
+        "4 · The centre snapped to whole texels",
+    ];
+    for (origin, title) in origins.iter().zip(titles) {
+        svg.rect(origin.x, origin.y, size_of.x, size_of.y, "#ffffff", "#d8d2c6");
+        svg.text(*origin - Vec2::new(0.0, 8.0), title, 12.0, "start", INK);
+    }
+    let quad = [0, 1, 3, 2];
+    let caption = |svg: &mut Svg, origin: Vec2, lines: &[String]| {
+        for (i, line) in lines.iter().enumerate() {
+            svg.text(origin + Vec2::new(0.0, size_of.y + 18.0 + 15.0 * i as f32), line, 11.0, "start", INK);
+        }
+    };
+
+    // 1: the world from the side, z to the right (the camera), y up. The
+    // eight points: where the view's corner rays cross the level's front
+    // face (z = +4) and back face (z = −4); from the side, its left and
+    // right corners fall on one another.
+    {
+        let o = origins[0];
+        let side = |p: Vec3| Vec2::new(p.z, p.y);
+        let (lo, hi) = f
+            .visible
+            .iter()
+            .chain([&f.eye])
+            .fold((Vec2::MAX, Vec2::MIN), |(lo, hi), p| (lo.min(side(*p)), hi.max(side(*p))));
+        let panel = Panel::new((lo - Vec2::splat(1.5), hi + Vec2::splat(1.5)), o, size_of);
+        let at = |p: Vec3| panel.at(side(p));
+        svg.clip(o.x, o.y, size_of.x, size_of.y);
+        for block in &f.level.blocks {
+            let (l, h) = block_box(block);
+            let profile = [l, Vec3::new(l.x, l.y, h.z), h, Vec3::new(l.x, h.y, l.z)];
+            svg.polygon(&profile.map(at), "#e6e0d4", "#d3cbbb");
+        }
+        let eye = at(f.eye);
+        for i in 4..8 {
+            svg.dashed(eye, at(f.visible[i]), MUTED);
+        }
+        for (face, colour) in [(0, ACCENT), (4, BLUE)] {
+            svg.line(at(f.visible[face]), at(f.visible[face + 2]), colour, 2.0);
+            for i in [face, face + 2] {
+                svg.circle(at(f.visible[i]), 3.5, colour);
+            }
+        }
+        svg.circle(eye, 4.0, INK);
+        svg.text(eye + Vec2::new(-8.0, -8.0), "camera", 11.0, "end", INK);
+        svg.text(at(f.visible[2]) + Vec2::new(5.0, -8.0), "z = +4", 11.0, "start", ACCENT);
+        svg.text(at(f.visible[6]) + Vec2::new(-5.0, -8.0), "z = −4", 11.0, "end", BLUE);
+        let base = o + Vec2::new(size_of.x - 60.0, size_of.y - 12.0);
+        let to_sun = (at(f.towards_sun) - at(Vec3::ZERO)).normalize();
+        svg.arrow(base, base + to_sun * 36.0, "#b38b14");
+        svg.text(base + Vec2::new(-6.0, -4.0), "to the sun", 11.0, "end", "#b38b14");
+        svg.unclip();
+        let widths = [0, 2, 4, 6].map(|i| f.visible[i + 1].x - f.visible[i].x);
+        let (narrowest, widest) = widths.iter().fold((f32::MAX, f32::MIN), |(lo, hi), w| (lo.min(*w), hi.max(*w)));
+        caption(
+            &mut svg,
+            o,
+            &[
+                "the view's corner rays cross the level's front".to_string(),
+                format!("(z = +{} m, red) and back (z = −{} m, blue) faces:", f.bounds.1.z, f.bounds.1.z),
+                format!("eight points, in pairs {narrowest:.1} to {widest:.1} m apart across"),
+            ],
+        );
+    }
+
+    // 2: the map's plane, as the sun sees it.
+    {
+        let o = origins[1];
+        let flat = |p: Vec3| frame.at(p).truncate();
+        let margin = Vec2::splat(0.12 * radius);
+        let panel = Panel::new((-margin, Vec2::splat(2.0 * radius) + margin), o, size_of);
+        svg.clip(o.x, o.y, size_of.x, size_of.y);
+        for block in &f.level.blocks {
+            let outline: Vec<Vec2> =
+                hull(&box_corners(block_box(block)).map(flat)).into_iter().map(|p| panel.at(p)).collect();
+            svg.polygon(&outline, "#e6e0d4", "#d3cbbb");
+        }
+        let c = panel.at(flat(centre));
+        svg.dashed_ring(c, reach * panel.scale, MUTED);
+        let square =
+            [Vec2::ZERO, Vec2::new(2.0 * radius, 0.0), Vec2::splat(2.0 * radius), Vec2::new(0.0, 2.0 * radius)];
+        svg.polygon(&square.map(|p| panel.at(p)), "none", "#b38b14");
+        let front: Vec<Vec2> = quad.iter().map(|&i| panel.at(flat(f.visible[i]))).collect();
+        let back: Vec<Vec2> = quad.iter().map(|&i| panel.at(flat(f.visible[i + 4]))).collect();
+        svg.polygon(&back, "none", BLUE);
+        svg.polygon(&front, "none", ACCENT);
+        svg.circle(c, 3.0, INK);
+        svg.line(c, c + Vec2::new(reach * panel.scale, 0.0), MUTED, 1.0);
+        svg.text(c + Vec2::new(reach * panel.scale / 2.0, 14.0), &format!("{reach:.2} m"), 11.0, "middle", INK);
+        svg.unclip();
+        let axes = o + Vec2::new(size_of.x - 44.0, size_of.y - 12.0);
+        svg.arrow(axes, axes + Vec2::new(28.0, 0.0), INK);
+        svg.arrow(axes, axes - Vec2::new(0.0, 28.0), INK);
+        svg.text(axes + Vec2::new(30.0, -4.0), "x", 11.0, "start", INK);
+        svg.text(axes + Vec2::new(-4.0, -26.0), "y", 11.0, "end", INK);
+        caption(
+            &mut svg,
+            o,
+            &[
+                format!("the farthest point is {reach:.2} m from the points' middle;"),
+                format!("rounded up to {radius} m: a square {} m wide,", 2.0 * radius),
+                format!("{} texels of {:.2} cm (the level's blocks in grey);", size as u32, light.texel * 100.0),
+                "the map's x is level, its y as near to up as it can be".to_string(),
+            ],
+        );
+    }
+
+    // The box's depth over the whole demo, frame by frame at 60 Hz.
+    assert_eq!(fitted_at(DEMO_SECONDS as f32).game.player.velocity, Vec2::ZERO, "the demo runs longer");
+    let demo_depths = (0..=DEMO_SECONDS * 60)
+        .map(|frame| fitted_at(frame as f32 / 60.0).light.depth)
+        .fold((f32::MAX, f32::MIN), |(lo, hi), d| (lo.min(d), hi.max(d)));
+
+    // 3: the box from its side: depth from the sun to the right, the map's
+    // x up. Its depth spans the whole level, its width only the view.
+    {
+        let o = origins[2];
+        let side = |p: Vec3| Vec2::new(frame.at(p).z, frame.at(p).x);
+        let level_outline: Vec<Vec2> = hull(&casters.map(side));
+        let (lo, hi) = level_outline
+            .iter()
+            .fold((Vec2::new(-6.0, 0.0), Vec2::new(light.depth, 2.0 * radius)), |(lo, hi), p| (lo.min(*p), hi.max(*p)));
+        let panel = Panel::new((lo - Vec2::splat(3.0), hi + Vec2::splat(3.0)), o, size_of);
+        svg.polygon(&level_outline.iter().map(|p| panel.at(*p)).collect::<Vec<_>>(), "#e6e0d4", "#a9a190");
+        let view: Vec<Vec2> = hull(&f.visible.map(side)).into_iter().map(|p| panel.at(p)).collect();
+        svg.polygon(&view, "#f1d9cd", ACCENT);
+        let corners = [
+            Vec2::ZERO,
+            Vec2::new(light.depth, 0.0),
+            Vec2::new(light.depth, 2.0 * radius),
+            Vec2::new(0.0, 2.0 * radius),
+        ];
+        svg.polygon(&corners.map(|p| panel.at(p)), "none", "#b38b14");
+        for d in [0.0, light.depth] {
+            svg.dashed(panel.at(Vec2::new(d, lo.y)), panel.at(Vec2::new(d, hi.y)), "#b38b14");
+        }
+        svg.text(panel.at(Vec2::new(0.0, hi.y)) + Vec2::new(4.0, 2.0), "near", 11.0, "start", "#b38b14");
+        svg.text(panel.at(Vec2::new(light.depth, hi.y)) + Vec2::new(-4.0, 2.0), "far", 11.0, "end", "#b38b14");
+        let mid = panel.at(Vec2::new(-2.0, lo.y + 4.0));
+        svg.arrow(mid, mid + Vec2::new(36.0, 0.0), "#b38b14");
+        svg.text(mid + Vec2::new(0.0, -8.0), "sunlight", 11.0, "start", "#b38b14");
+        caption(
+            &mut svg,
+            o,
+            &[
+                "every caster: the level's bounds (grey); the view (red);".to_string(),
+                format!("near and far 1 m beyond them: {:.1} m deep here,", light.depth),
+                format!("{:.1} to {:.1} m over the demo", demo_depths.0, demo_depths.1),
+            ],
+        );
+    }
+
+    // 4: the box's centre, this frame and 1/60 s later, before and after
+    // snapping, on the grid of texel edges (this frame's box).
+    {
+        let o = origins[3];
+        let next = fitted_at(time + 1.0 / 60.0);
+        let next_centre = {
+            let (lo, hi) = next.visible.iter().fold((Vec3::MAX, Vec3::MIN), |(lo, hi), p| (lo.min(*p), hi.max(*p)));
+            (lo + hi) / 2.0
+        };
+        let box_centre = |l: &LightBox| {
+            let c = l.corners();
+            (c[0] + c[7]) / 2.0
+        };
+        // In texels, on this frame's grid.
+        let texels = |p: Vec3| frame.at(p).truncate() / light.texel;
+        let points =
+            [(texels(centre), texels(box_centre(&light))), (texels(next_centre), texels(box_centre(&next.light)))];
+        let moved = points[1].1 - points[0].1;
+        assert!((moved - moved.round()).abs().max_element() < 0.05, "the box moved {moved} texels");
+        let (lo, hi) =
+            points.iter().fold((Vec2::MAX, Vec2::MIN), |(lo, hi), (a, b)| (lo.min(*a).min(*b), hi.max(*a).max(*b)));
+        let (lo, hi) = ((lo - Vec2::splat(1.0)).floor(), (hi + Vec2::splat(1.0)).ceil());
+        let panel = Panel::new((lo, hi), o + Vec2::new(10.0, 10.0), size_of - Vec2::new(20.0, 20.0));
+        for x in lo.x as i32..=hi.x as i32 {
+            svg.line(panel.at(Vec2::new(x as f32, lo.y)), panel.at(Vec2::new(x as f32, hi.y)), "#e3dccf", 1.0);
+        }
+        for y in lo.y as i32..=hi.y as i32 {
+            svg.line(panel.at(Vec2::new(lo.x, y as f32)), panel.at(Vec2::new(hi.x, y as f32)), "#e3dccf", 1.0);
+        }
+        for ((smooth, snapped), colour) in points.iter().zip([ACCENT, BLUE]) {
+            svg.arrow(panel.at(*smooth), panel.at(*snapped), colour);
+            svg.ring(panel.at(*smooth), 4.0, colour, 1.5);
+            svg.circle(panel.at(*snapped), 4.0, colour);
+        }
+        let offset = (points[0].0 - points[0].1) * light.texel * 100.0;
+        let slid = points[1].0 - points[0].0;
+        caption(
+            &mut svg,
+            o,
+            &[
+                format!("grid: texels of {:.2} cm; ring: the sphere's centre;", light.texel * 100.0),
+                format!("dot: the box's, snapped {:.2}, {:.2} cm to a corner.", offset.x.abs(), offset.y.abs()),
+                format!(
+                    "1/60 s on (blue): ring +{:.2}, +{:.2}; box +{}, +{} texels",
+                    slid.x,
+                    slid.y,
+                    moved.x.round(),
+                    moved.y.round()
+                ),
+            ],
+        );
+    }
+    svg.text(
+        Vec2::new(20.0, 18.0),
+        &format!("fit_light, step by step, for the default view at {time} s (map {}²)", size as u32),
+        11.0,
+        "start",
+        MUTED,
     );
     svg.finish()
 }

@@ -25,6 +25,7 @@ fn vs_fullscreen(@builtin(vertex_index) index: u32) -> FullscreenOutput {
 // ANCHOR: aces
 // Krzysztof Narkowicz's fit of the ACES filmic tone curve: a toe that
 // keeps shadows deep, a shoulder that rolls highlights off towards white.
+// `aces_fit` in post.rs is the same curve, and a test holds them together.
 fn aces(x: vec3<f32>) -> vec3<f32> {
     return clamp((x * (2.51 * x + 0.03)) / (x * (2.43 * x + 0.59) + 0.14), vec3<f32>(0.0), vec3<f32>(1.0));
 }

@@ -144,7 +144,7 @@ fn sunlit(world: vec3<f32>, n: vec3<f32>, pixel: vec2<f32>) -> f32 {
         return 1.0;
     }
     // The normal offset: look the point up a little off its surface, so
-    // that a surface does not shadow itself (lib.rs explains; the depth
+    // that a surface does not shadow itself (`Bias` in shadow_map.rs explains; the depth
     // bias in the shadow pass does the rest).
     let lifted = world + n * shadow.params.y * shadow.params.x;
     let p = to_shadow_map(lifted);

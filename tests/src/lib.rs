@@ -115,7 +115,8 @@ pub trait Snapshots {
     /// A device with the chapter's needs.
     fn gpu(&self) -> anyhow::Result<Lease>;
     /// Renders every view and compares it with its reference; also checks
-    /// the bench table. Returns each view's outcome and the table's problems.
+    /// the bench table and that the views can be told apart. Returns each
+    /// view's outcome and the other problems.
     fn check(&self) -> anyhow::Result<(Vec<ViewResult>, Vec<String>)>;
     /// Writes every view's reference that is missing or that the picture
     /// no longer matches (rounding aside); returns the paths written.
@@ -132,8 +133,8 @@ impl Snapshots for Record {
     // ANCHOR: check
     /// Renders every view with one instance of the chapter, in book order
     /// (views are pure, and `check_purity` proves it), compares each with its
-    /// reference, and checks the chapter's bench table against the passes
-    /// each view drew.
+    /// reference, checks the chapter's bench table against the passes
+    /// each view drew, and that the references can be told apart.
     fn check(&self) -> anyhow::Result<(Vec<ViewResult>, Vec<String>)> {
         let gpu = self.gpu()?;
         let mut chapter = (self.open)(&gpu, target())?;
@@ -149,8 +150,9 @@ impl Snapshots for Record {
                 });
             results.push(ViewResult { view: view.name, outcome });
         }
-        let table_problems = bench_tables::check(self.name, self.views, &passes);
-        Ok((results, table_problems))
+        let mut problems = bench_tables::check(self.name, self.views, &passes);
+        problems.extend(views_told_apart(self));
+        Ok((results, problems))
     }
     // ANCHOR_END: check
 
@@ -245,9 +247,56 @@ impl Snapshots for Record {
             }
         }
         problems.extend(bench_tables::check(self.name, self.views, &passes));
+        problems.extend(views_told_apart(self));
         Ok(problems)
     }
     // ANCHOR_END: purity
+}
+
+/// Every view exists to show something the others do not, so the snapshot
+/// test must be able to tell each from every other: were a view to draw
+/// another's picture (a switch that does nothing, a mode that fell back to
+/// the default), it must fail. A view that draws another's picture by
+/// another method (`View::same_picture_as`) must instead look alike.
+/// Checked on the references, pair by pair; returns the problems.
+fn views_told_apart(record: &Record) -> Vec<String> {
+    let pictures: Vec<(&common::View, image::RgbaImage)> = record
+        .views
+        .iter()
+        .filter(|v| v.snapshot)
+        // A missing reference fails the view's own check.
+        .filter_map(|v| Some((v, image::open(reference_path(record.name, v.name)).ok()?.to_rgba8())))
+        .collect();
+    let mut problems = Vec::new();
+    for view in record.views.iter().filter(|v| v.same_picture_as.is_some()) {
+        let twin = view.same_picture_as.unwrap_or_default();
+        if !record.views.iter().any(|v| v.name == twin && v.snapshot) {
+            problems.push(format!(
+                "{}/{}: draws the picture of `{twin}`, which is no snapshot view",
+                record.name, view.name
+            ));
+        }
+    }
+    for (i, (a, first)) in pictures.iter().enumerate() {
+        for (b, second) in &pictures[i + 1..] {
+            let twins = a.same_picture_as == Some(b.name) || b.same_picture_as == Some(a.name);
+            let apart =
+                first.dimensions() != second.dimensions() || snapshot::tells_apart(first, second, Tolerance::DEFAULT);
+            if twins && apart {
+                problems.push(format!(
+                    "{}: `{}` should draw `{}`'s picture by another method, but the snapshot test tells them apart",
+                    record.name, a.name, b.name
+                ));
+            } else if !twins && !apart {
+                problems.push(format!(
+                    "{}: the views `{}` and `{}` look alike to the snapshot test (within its tolerance), so \
+                     neither is checked against the other: make each show what it is for",
+                    record.name, a.name, b.name
+                ));
+            }
+        }
+    }
+    problems
 }
 
 /// Compares a view's picture with its reference.
@@ -295,5 +344,43 @@ fn elsewhere(camera: &Camera) -> Camera {
         near: camera.near * 2.0,
         far: camera.far * 0.7,
         aspect: camera.aspect,
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// The ocean's default view with its sun's disc painted out (each of its
+    /// pixels given the sky's colour 24 pixels to the left): a small object,
+    /// 253 pixels here, that the whole-picture figures did not catch.
+    #[test]
+    fn the_sun_disc_gone_from_the_ocean_fails_its_snapshot() {
+        let reference = image::open(reference_path("voronoi-water", "default")).expect("the reference").to_rgba8();
+        // The disc: the brightest pixel of the sky (above the horizon at
+        // y = 140) and the pixels around it brighter than the sky beside it.
+        let brightness = |p: &image::Rgba<u8>| u32::from(p.0[0]) + u32::from(p.0[1]) + u32::from(p.0[2]);
+        let (cx, cy) = (0..reference.width())
+            .flat_map(|x| (0..140).map(move |y| (x, y)))
+            .max_by_key(|&(x, y)| brightness(reference.get_pixel(x, y)))
+            .expect("a sky");
+        let mut painted = reference.clone();
+        let mut changed = 0;
+        for y in cy.saturating_sub(16)..cy + 16 {
+            for x in cx.saturating_sub(16)..cx + 16 {
+                let sky = *reference.get_pixel(x - 24, y);
+                if brightness(reference.get_pixel(x, y)) > brightness(&sky) + 30 {
+                    painted.put_pixel(x, y, sky);
+                    changed += 1;
+                }
+            }
+        }
+        assert!((150..400).contains(&changed), "the disc found at ({cx}, {cy}) is {changed} pixels");
+        let (comparison, _) = snapshot::compare(&reference, &painted);
+        assert!(
+            comparison.mean <= Tolerance::DEFAULT.mean && comparison.outliers <= Tolerance::DEFAULT.outliers,
+            "the whole-picture figures alone see it now: {comparison}; this test no longer shows the patch at work"
+        );
+        assert!(!comparison.passes(Tolerance::DEFAULT), "{changed} pixels of sun gone passed: {comparison}");
     }
 }

@@ -47,7 +47,7 @@ fn main() -> ExitCode {
                     let outcome = entry.check();
                     let _lock = print.lock();
                     match outcome {
-                        Ok((results, table_problems)) => {
+                        Ok((results, problems)) => {
                             for r in results {
                                 match r.outcome {
                                     Ok(c) => {
@@ -60,9 +60,9 @@ fn main() -> ExitCode {
                                     }
                                 }
                             }
-                            for problem in table_problems {
+                            for problem in problems {
                                 failed.fetch_add(1, Ordering::SeqCst);
-                                println!("FAIL {}: bench table: {problem}", entry.name);
+                                println!("FAIL {}: {problem}", entry.name);
                             }
                         }
                         Err(e) => {

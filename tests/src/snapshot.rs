@@ -16,11 +16,16 @@ pub struct Comparison {
     pub max: f32,
     /// Fraction of pixels above [`Tolerance::OUTLIER_ERROR`].
     pub outliers: f32,
+    /// The mean over the worst [`Tolerance::PATCH`]-pixel square.
+    pub patch: f32,
 }
 
 impl Comparison {
+    /// Identical pictures (rounding aside).
+    pub const SAME: Self = Self { mean: 0.0, p99: 0.0, max: 0.0, outliers: 0.0, patch: 0.0 };
+
     pub fn passes(&self, tolerance: Tolerance) -> bool {
-        self.mean <= tolerance.mean && self.outliers <= tolerance.outliers
+        self.mean <= tolerance.mean && self.outliers <= tolerance.outliers && self.patch <= tolerance.patch
     }
 }
 
@@ -28,12 +33,14 @@ impl fmt::Display for Comparison {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         write!(
             f,
-            "FLIP mean {:.5}, p99 {:.4}, max {:.4}, {:.3}% of pixels above {}",
+            "FLIP mean {:.5}, p99 {:.4}, max {:.4}, {:.3}% of pixels above {}, worst {p}×{p} patch {:.3}",
             self.mean,
             self.p99,
             self.max,
             100.0 * self.outliers,
-            Tolerance::OUTLIER_ERROR
+            Tolerance::OUTLIER_ERROR,
+            self.patch,
+            p = Tolerance::PATCH
         )
     }
 }
@@ -92,10 +99,11 @@ impl fmt::Display for SnapshotError {
             ),
             Self::TooDifferent { comparison, tolerance, actual, diff } => write!(
                 f,
-                "{comparison} (allowed: mean {}, {}% above {}); actual: {}, FLIP error map: {}",
+                "{comparison} (allowed: mean {}, {}% above {}, patch {}); actual: {}, FLIP error map: {}",
                 tolerance.mean,
                 100.0 * tolerance.outliers,
                 Tolerance::OUTLIER_ERROR,
+                tolerance.patch,
                 actual.display(),
                 diff.display()
             ),
@@ -139,8 +147,7 @@ pub fn compare(reference: &image::RgbaImage, actual: &image::RgbaImage) -> (Comp
     let same_colours = reference.dimensions() == actual.dimensions()
         && reference.pixels().zip(actual.pixels()).all(|(a, b)| same(a, b));
     if same_colours {
-        let zero = Comparison { mean: 0.0, p99: 0.0, max: 0.0, outliers: 0.0 };
-        return (zero, image::RgbImage::new(actual.width(), actual.height()));
+        return (Comparison::SAME, image::RgbImage::new(actual.width(), actual.height()));
     }
     // FLIP sees the differences that are more than rounding.
     let mut rounded = actual.clone();
@@ -162,11 +169,81 @@ fn flip(reference: &image::RgbaImage, actual: &image::RgbaImage) -> (Comparison,
         p99: pool.get_percentile(0.99, false),
         max: pool.max_value(),
         outliers: values.iter().filter(|&&e| e > Tolerance::OUTLIER_ERROR).count() as f32 / values.len() as f32,
+        patch: worst_patch(&values, error.width(), error.height()),
     };
     let heat = error.apply_color_lut(&nv_flip::magma_lut());
     let diff = image::RgbImage::from_raw(heat.width(), heat.height(), heat.to_vec()).expect("FLIP returns w*h*3 bytes");
     (comparison, diff)
 }
+
+/// The largest mean of `error` (a `width` × `height` map, row by row) over
+/// any [`Tolerance::PATCH`]-pixel square, at every position: with a
+/// summed-area table each square's sum is four lookups.
+fn worst_patch(error: &[f32], width: u32, height: u32) -> f32 {
+    worst_square(error, width, height).0
+}
+
+/// [`worst_patch`], and where its square's top left corner is.
+fn worst_square(values: &[f32], width: u32, height: u32) -> (f32, u32, u32) {
+    let (w, h) = (width as usize, height as usize);
+    let side = (Tolerance::PATCH as usize).min(w).min(h);
+    if side == 0 {
+        return (0.0, 0, 0);
+    }
+    // sums[y][x]: the sum over the rectangle above and left of (x, y), in f64
+    // so that 360,000 small values add up without losing the small ones.
+    let mut sums = vec![0.0f64; (w + 1) * (h + 1)];
+    for y in 0..h {
+        let mut row = 0.0;
+        for x in 0..w {
+            row += f64::from(values[y * w + x]);
+            sums[(y + 1) * (w + 1) + x + 1] = sums[y * (w + 1) + x + 1] + row;
+        }
+    }
+    let at = |x: usize, y: usize| sums[y * (w + 1) + x];
+    let mut worst = (0.0f64, 0, 0);
+    for y in 0..=h - side {
+        for x in 0..=w - side {
+            let sum = at(x + side, y + side) - at(x, y + side) - at(x + side, y) + at(x, y);
+            if sum > worst.0 {
+                worst = (sum, x, y);
+            }
+        }
+    }
+    ((worst.0 / (side * side) as f64) as f32, worst.1 as u32, worst.2 as u32)
+}
+
+// ANCHOR: tells_apart
+/// Whether the snapshot test tells `a` from `b` (same size): would a view
+/// whose reference is `a` fail, drawing `b`? Two views that it cannot tell
+/// apart leave one of them unchecked.
+///
+/// FLIP on the whole picture takes about 0.2 s, and a chapter's twelve views
+/// make 66 pairs, so first the square where the colours differ most is
+/// scored with a margin around it (FLIP's filters reach a few pixels, the
+/// margin is 32): a patch there past the tolerance settles it. Otherwise
+/// the whole pictures are compared.
+pub fn tells_apart(a: &image::RgbaImage, b: &image::RgbaImage, tolerance: Tolerance) -> bool {
+    assert_eq!(a.dimensions(), b.dimensions(), "views are rendered at one size");
+    let colour_difference: Vec<f32> = a
+        .pixels()
+        .zip(b.pixels())
+        .map(|(p, q)| (0..3).map(|c| p.0[c].abs_diff(q.0[c])).max().unwrap_or(0) as f32)
+        .collect();
+    let (_, x, y) = worst_square(&colour_difference, a.width(), a.height());
+    const MARGIN: u32 = 32;
+    let (left, top) = (x.saturating_sub(MARGIN), y.saturating_sub(MARGIN));
+    let (right, bottom) =
+        ((x + Tolerance::PATCH + MARGIN).min(a.width()), (y + Tolerance::PATCH + MARGIN).min(a.height()));
+    let crop = |picture: &image::RgbaImage| {
+        image::imageops::crop_imm(picture, left, top, right - left, bottom - top).to_image()
+    };
+    if compare(&crop(a), &crop(b)).0.patch > tolerance.patch {
+        return true;
+    }
+    !compare(a, b).0.passes(tolerance)
+}
+// ANCHOR_END: tells_apart
 
 /// Checks `actual` against the reference PNG. On failure the rendered
 /// picture is written beside the reference as `<view>-actual.png`, with the
@@ -253,6 +330,48 @@ mod tests {
         moved.pixels_mut().for_each(|p| p.0[1] += 1);
         let (real, _) = compare(&scene(0), &moved);
         assert!(!real.passes(Tolerance::DEFAULT), "{real}");
+    }
+
+    /// An 800 × 450 dusk sky with a small bright disc of radius 6 (113
+    /// pixels), or without it.
+    fn sky(with_sun: bool) -> image::RgbaImage {
+        image::RgbaImage::from_fn(800, 450, |x, y| {
+            let (dx, dy) = (x as f32 - 600.0, y as f32 - 120.0);
+            let sun = with_sun && dx * dx + dy * dy <= 36.0;
+            if sun { image::Rgba([255, 236, 200, 255]) } else { image::Rgba([40 + (y / 6) as u8, 60, 110, 255]) }
+        })
+    }
+
+    #[test]
+    fn a_small_object_gone_fails_by_its_patch_alone() {
+        let (comparison, _) = compare(&sky(true), &sky(false));
+        // Too few pixels for the mean or the share of outliers…
+        assert!(comparison.mean <= Tolerance::DEFAULT.mean, "{comparison}");
+        assert!(comparison.outliers <= Tolerance::DEFAULT.outliers, "{comparison}");
+        // …but all in one place.
+        assert!(comparison.patch > Tolerance::DEFAULT.patch, "{comparison}");
+        assert!(!comparison.passes(Tolerance::DEFAULT));
+    }
+
+    #[test]
+    fn the_worst_patch_is_the_mean_over_the_worst_square() {
+        // A 16×16 square of error 1 at an odd place in a 40×30 map, and noise of 0.01.
+        let (w, h) = (40u32, 30u32);
+        let mut error = vec![0.01f32; (w * h) as usize];
+        for y in 7..23 {
+            for x in 13..29 {
+                error[(y * w + x) as usize] = 1.0;
+            }
+        }
+        assert!((worst_patch(&error, w, h) - 1.0).abs() < 1e-6);
+        // Half of it: the best square still holds 8 × 16 of the ones.
+        for y in 7..23 {
+            for x in 21..29 {
+                error[(y * w + x) as usize] = 0.01;
+            }
+        }
+        let expected = (128.0 + 128.0 * 0.01) / 256.0;
+        assert!((worst_patch(&error, w, h) - expected).abs() < 1e-6, "{}", worst_patch(&error, w, h));
     }
 
     #[test]

@@ -51,7 +51,8 @@ pub const VIEW_TABLE: [ViewRow<Setup, CameraPreset>; 7] = [
         "naive-10k",
         "bench: 10,000 rocks, one draw call each, no terrain",
         Setup { rocks: 10_000, mode: Mode::OnePerDraw, terrain: false },
-    ),
+    )
+    .same_picture_as("rocks-10k"),
     ViewRow::mode(
         "flat-1m",
         "bench: 1,000,000 rocks, instanced, flat colour: the cost floor",

@@ -15,7 +15,7 @@ use common::{Gpu, PassTimer, Reloadable, ShaderError, ShaderFile, fullscreen, sh
 /// What the overlay changes.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct BloomSettings {
-    /// Light below this luminance does not bloom.
+    /// Light whose largest channel is below this does not bloom.
     pub threshold: f32,
     /// Width of the soft knee around the threshold, so that the cut is not hard.
     pub knee: f32,
@@ -67,6 +67,30 @@ struct Params {
 fn bloom_shader() -> ShaderFile {
     shader!("lighting/bloom.wgsl", imports: ["common/fullscreen.wgsl"])
 }
+
+// ANCHOR: downsample_taps
+/// The 13 bilinear taps of `fs_downsample` in bloom.wgsl, which makes every
+/// level after the first: (offset in texels of the level it reads, weight).
+/// Each tap lands where four texels meet and averages them, so the taps
+/// form five overlapping 2 × 2 boxes: the middle one, of the four inner
+/// taps, weighs 1/2, and the four corner boxes 1/8 each. The weights sum
+/// to 1. For the book's figure; a test holds it to the shader.
+pub const DOWNSAMPLE_TAPS: [([f32; 2], f32); 13] = [
+    ([0.0, 0.0], 0.125),
+    ([-1.0, -1.0], 0.125),
+    ([1.0, -1.0], 0.125),
+    ([-1.0, 1.0], 0.125),
+    ([1.0, 1.0], 0.125),
+    ([-2.0, -2.0], 0.03125),
+    ([2.0, -2.0], 0.03125),
+    ([-2.0, 2.0], 0.03125),
+    ([2.0, 2.0], 0.03125),
+    ([0.0, -2.0], 0.0625),
+    ([-2.0, 0.0], 0.0625),
+    ([2.0, 0.0], 0.0625),
+    ([0.0, 2.0], 0.0625),
+];
+// ANCHOR_END: downsample_taps
 
 /// The most halvings; beyond six, a 1280-wide picture's blur is already
 /// wider than a tenth of the screen.
@@ -307,6 +331,36 @@ mod tests {
         for (w, h) in [(1, 900), (900, 1), (2, 2), (9, 9)] {
             assert!(level_sizes(w, h).iter().all(|&(a, b)| a > 0 && b > 0));
         }
+    }
+
+    #[test]
+    fn the_downsample_taps_are_the_shaders_and_keep_the_light() {
+        let weight = |offset: [f32; 2]| DOWNSAMPLE_TAPS.iter().find(|(o, _)| *o == offset).map(|(_, w)| *w).unwrap();
+        let total: f32 = DOWNSAMPLE_TAPS.iter().map(|(_, w)| w).sum();
+        assert_eq!(total, 1.0);
+        // Taps of one kind (centre, inner, corners, sides) weigh the same, as
+        // the shader sums each kind before weighting it.
+        for (offset, w) in DOWNSAMPLE_TAPS {
+            let [x, y] = offset.map(f32::abs);
+            let kind = if x == y { [x, y] } else { [0.0, 2.0] };
+            assert_eq!(w, weight(kind), "{offset:?}");
+        }
+        let line = format!(
+            "centre * {} + inner * {} + corners * {} + sides * {}",
+            weight([0.0, 0.0]),
+            weight([1.0, 1.0]),
+            weight([2.0, 2.0]),
+            weight([0.0, 2.0])
+        );
+        let shader = bloom_shader().embedded;
+        assert!(shader.contains(&line), "bloom.wgsl no longer weighs its taps as {line}");
+        let downsample =
+            &shader[shader.find("fn fs_downsample").unwrap()..shader.find("ANCHOR_END: downsample").unwrap()];
+        for ([x, y], _) in DOWNSAMPLE_TAPS {
+            let tap = format!("tap(uv, texel, {x:?}, {y:?})");
+            assert!(downsample.contains(&tap), "fs_downsample has no {tap}");
+        }
+        assert_eq!(downsample.matches("tap(uv, texel,").count(), DOWNSAMPLE_TAPS.len());
     }
 
     #[test]

@@ -38,7 +38,9 @@ impl HdrTarget {
             })
         };
         let attach = wgpu::TextureUsages::RENDER_ATTACHMENT;
-        let colour = texture("hdr", HDR_FORMAT, attach | wgpu::TextureUsages::TEXTURE_BINDING);
+        // Copied out only by tests, which read the light itself.
+        let readable = wgpu::TextureUsages::TEXTURE_BINDING | wgpu::TextureUsages::COPY_SRC;
+        let colour = texture("hdr", HDR_FORMAT, attach | readable);
         let depth_texture = texture("depth", common::texture::DEPTH_FORMAT, attach | wgpu::TextureUsages::COPY_SRC);
         Self {
             colour: colour.create_view(&Default::default()),
@@ -137,6 +139,16 @@ impl PostChain {
     }
 }
 // ANCHOR_END: post
+
+// ANCHOR: aces_fit
+/// Narkowicz's fit of the ACES filmic curve (2016), for one channel: the
+/// same formula and constants as `aces` in tonemap.wgsl, here for the
+/// book's plot of it and for the test that runs the real tone map pass
+/// against it. The fit is already pre-exposed: 1 maps to about 0.8.
+pub fn aces_fit(x: f32) -> f32 {
+    ((x * (2.51 * x + 0.03)) / (x * (2.43 * x + 0.59) + 0.14)).clamp(0.0, 1.0)
+}
+// ANCHOR_END: aces_fit
 
 /// `Composite` in tonemap.wgsl.
 #[repr(C)]

@@ -28,7 +28,7 @@ use crate::textured_renderer::{Draw, DrawList, SurfaceOptions, TexturedRenderer,
 
 // ANCHOR: views
 /// Every view, once: what it shows, and for a preset where the camera goes.
-pub const VIEW_TABLE: [ViewRow<Settings, CameraPreset>; 12] = [
+pub const VIEW_TABLE: [ViewRow<Settings, CameraPreset>; 13] = [
     ViewRow::mode("day", "the textured city at noon, from above", Settings::DAY),
     ViewRow::mode(
         "night",
@@ -54,10 +54,16 @@ pub const VIEW_TABLE: [ViewRow<Settings, CameraPreset>; 12] = [
         CameraPreset::Wall,
     ),
     ViewRow::preset(
+        "vertex-tangents",
+        "close over the sphere's pole in a low evening sun, one tangent per vertex: the joints' bevels shade smoothly",
+        Settings { time_of_day: TimeOfDay::Evening, ..Settings::STAGE },
+        CameraPreset::SphereTop,
+    ),
+    ViewRow::preset(
         "face-tangents",
-        "normal maps with one tangent per triangle, as the seed did: the frame jumps at edges",
-        Settings { tangents: Tangents::PerFace, ..Settings::STAGE },
-        CameraPreset::Wall,
+        "the same with one tangent per triangle, as the seed did: the bevels' shading jumps at every edge",
+        Settings { time_of_day: TimeOfDay::Evening, tangents: Tangents::PerFace, ..Settings::STAGE },
+        CameraPreset::SphereTop,
     ),
     ViewRow::preset(
         "tbn",
@@ -172,6 +178,10 @@ pub enum CameraPreset {
     Wall,
     /// The whole stage from the front, a little above.
     WholeStage,
+    /// Close over the top of the stage's sphere, where its texture's u
+    /// lines circle the pole: where one tangent per triangle strays
+    /// furthest from one per vertex.
+    SphereTop,
     /// Standing on the sampling lab's checkerboard, looking to the horizon.
     Lab,
 }
@@ -185,6 +195,7 @@ impl CameraPreset {
             Self::Car => (Scene::Stage, at(Vec3::new(-3.3, 1.9, 4.3), Vec3::new(0.2, 0.7, 0.0))),
             Self::Wall => (Scene::Stage, at(Vec3::new(-2.2, 1.5, 0.9), Vec3::new(-6.4, 0.9, -3.6))),
             Self::WholeStage => (Scene::Stage, at(Vec3::new(0.0, 4.2, 10.5), Vec3::new(0.0, 1.0, -2.0))),
+            Self::SphereTop => (Scene::Stage, at(Vec3::new(-3.95, 2.15, -2.85), Vec3::new(-3.8, 1.5, -3.3))),
             Self::Lab => (
                 Scene::Lab,
                 Camera {
@@ -411,7 +422,7 @@ enum Which {
 impl Chapter for TexturesChapter {
     const NAME: &'static str = env!("CARGO_PKG_NAME");
     // Measured mean FLIP 0.0258: the textures' mip levels differ most; outliers at most 0.1%.
-    const BROWSER_TOLERANCE: common::Tolerance = common::Tolerance { mean: 0.04, outliers: 0.002 };
+    const BROWSER_TOLERANCE: common::Tolerance = common::Tolerance { mean: 0.04, outliers: 0.002, patch: 1.0 };
     const TITLE: &'static str = "09 · Textures";
     const VIEWS: &'static [View] = &views_of(&VIEW_TABLE);
     const SNAPSHOT_TIME: f32 = 6.0;

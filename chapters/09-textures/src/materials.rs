@@ -376,11 +376,44 @@ impl Materials {
     }
 }
 
+// ANCHOR: transfer
+/// The sRGB transfer function (IEC 61966-2-1), decoding: a stored value
+/// `v` (0..1, a byte over 255) to the light it stands for (0..1).
+pub fn srgb_to_linear(v: f32) -> f32 {
+    if v <= 0.040_45 { v / 12.92 } else { ((v + 0.055) / 1.055).powf(2.4) }
+}
+
+/// The sRGB transfer function, encoding: light `l` (0..1) to the value
+/// stored for it (0..1).
+pub fn linear_to_srgb(l: f32) -> f32 {
+    if l <= 0.003_130_8 { 12.92 * l } else { 1.055 * l.powf(1.0 / 2.4) - 0.055 }
+}
+// ANCHOR_END: transfer
+
 /// A colour as a person picks it (sRGB, 0..255) to linear light, for
 /// material colours written in code.
 pub fn srgb(r: u8, g: u8, b: u8) -> Vec3 {
-    Vec3::new(r as f32, g as f32, b as f32).map(|c| {
-        let c = c / 255.0;
-        if c <= 0.040_45 { c / 12.92 } else { ((c + 0.055) / 1.055).powf(2.4) }
-    })
+    Vec3::new(r as f32, g as f32, b as f32).map(|c| srgb_to_linear(c / 255.0))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn the_srgb_curve_has_its_known_values() {
+        // Half the stored range is a fifth of the light; half the light is
+        // stored as 0.735 (188 of 255).
+        assert!((srgb_to_linear(0.5) - 0.214_04).abs() < 1e-5);
+        assert!((linear_to_srgb(0.5) - 0.735_36).abs() < 1e-5);
+        // The two pieces meet where the standard says, from either side.
+        assert!((srgb_to_linear(0.040_45) - 0.003_130_8).abs() < 1e-6);
+        assert!((linear_to_srgb(0.003_130_8) - 0.040_45).abs() < 1e-5);
+        assert_eq!((srgb_to_linear(0.0), srgb_to_linear(1.0)), (0.0, 1.0));
+        // Every byte survives the round trip.
+        for byte in 0..=255u8 {
+            let back = linear_to_srgb(srgb_to_linear(byte as f32 / 255.0)) * 255.0;
+            assert_eq!(back.round() as u8, byte);
+        }
+    }
 }

@@ -146,14 +146,9 @@ impl MipMaker {
 /// of a 2 × 2 block of the level above, averaged in linear light (alpha as
 /// it is). The test compares the GPU's levels with this.
 pub fn box_filter_srgb(above: &common::image::RgbaImage) -> common::image::RgbaImage {
-    let decode = |c: u8| {
-        let c = c as f32 / 255.0;
-        if c <= 0.040_45 { c / 12.92 } else { ((c + 0.055) / 1.055).powf(2.4) }
-    };
-    let encode = |c: f32| {
-        let c = if c <= 0.003_130_8 { 12.92 * c } else { 1.055 * c.powf(1.0 / 2.4) - 0.055 };
-        (c.clamp(0.0, 1.0) * 255.0).round() as u8
-    };
+    use crate::materials::{linear_to_srgb, srgb_to_linear};
+    let decode = |c: u8| srgb_to_linear(c as f32 / 255.0);
+    let encode = |c: f32| (linear_to_srgb(c).clamp(0.0, 1.0) * 255.0).round() as u8;
     let (width, height) = ((above.width() / 2).max(1), (above.height() / 2).max(1));
     common::image::RgbaImage::from_fn(width, height, |x, y| {
         let texels = [(0, 0), (1, 0), (0, 1), (1, 1)].map(|(dx, dy)| above.get_pixel(2 * x + dx, 2 * y + dy).0);

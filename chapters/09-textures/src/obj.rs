@@ -316,8 +316,7 @@ fn numbers<const N: usize>(words: &[&str], what: &str) -> Result<Option<[f32; N]
 
 /// An sRGB component (as vertex colours are written) to linear light.
 fn srgb_to_linear(c: f32) -> f32 {
-    let c = c.clamp(0.0, 1.0);
-    if c <= 0.040_45 { c / 12.92 } else { ((c + 0.055) / 1.055).powf(2.4) }
+    crate::materials::srgb_to_linear(c.clamp(0.0, 1.0))
 }
 
 /// What pass 1 reads: every element, in file order. Elements that are not

@@ -266,8 +266,16 @@ mod tests {
         let p = g.sunlight.0.get_pixel(10, 0);
         let centre = g.sunlight.at((10.5) / w as f32, 0.5);
         assert!((centre.x - textures::materials::srgb(p[0], p[1], p[2]).x).abs() < 1e-6);
-        // Beyond the ends, the end texels.
-        assert_eq!(g.sunlight.at(-1.0, 0.5), g.sunlight.at(0.0, 0.5));
+        // Beyond the ends, the end texels, decoded: not a blend with the
+        // other end, as a wrapping read would give (and give at u = 0 too).
+        let end = |x: u32| {
+            let p = g.sunlight.0.get_pixel(x, 0);
+            textures::materials::srgb(p[0], p[1], p[2])
+        };
+        assert_eq!(g.sunlight.at(-1.0, 0.0), end(0));
+        assert_eq!(g.sunlight.at(0.0, 0.0), end(0));
+        assert_eq!(g.sunlight.at(2.0, 0.0), end(w - 1));
+        assert_ne!(end(0), end(w - 1), "the test needs ends that differ");
     }
 
     #[test]

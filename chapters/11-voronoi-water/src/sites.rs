@@ -162,7 +162,21 @@ mod tests {
 
     #[test]
     fn sites_are_a_pure_function_of_time_even_after_a_million_seconds() {
-        assert_eq!(positions(1e6), positions(1e6));
+        // What was asked before, and on which thread, changes nothing: a
+        // cache or an integrator carried from call to call would.
+        let first = positions(1e6);
+        for t in [3.0, 1e6 - 1.0, 0.0, 2e6] {
+            positions(t);
+        }
+        assert_eq!(positions(1e6), first, "after other times");
+        assert_eq!(std::thread::spawn(|| positions(1e6)).join().unwrap(), first, "on another thread");
+        // At 0 s both circles are at their starting angles: every site is
+        // where its seed put it, (h(0), h(1)) of the hash.
+        for (i, p) in positions(0.0).iter().enumerate() {
+            let h =
+                |k: u32| hash(DEFAULT_SEED.wrapping_mul(0x9e37_79b9) ^ (i as u32 * 8) ^ k.wrapping_mul(0x85eb_ca6b));
+            assert!(p.distance(Vec2::new(h(0) as f32, h(1) as f32)) < 1e-6, "site {i} at 0 s: {p}");
+        }
         // Still moving smoothly: 1/16 s (f32's step at 10⁶) moves a site a
         // tiny distance, not a jump.
         let (a, b) = (positions(1e6), positions(1e6 + 0.0625));

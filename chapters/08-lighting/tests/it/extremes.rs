@@ -5,7 +5,7 @@
 
 use common::headless::{OFFSCREEN_FORMAT, Offscreen, draw_frame, read_floats};
 use common::{Chapter, Gpu, PassTimer, Target, chapter::view_index};
-use lighting::{Display, LightCount, LightingChapter, MAX_LIGHTS, Settings, Shading};
+use lighting::{Display, LightCount, LightTerm, LightingChapter, MAX_LIGHTS, Settings, Shading};
 
 /// Draws one frame with `settings` at `width` × `height`, inside a
 /// validation error scope, and checks the bloom for NaNs.
@@ -32,7 +32,14 @@ fn sliders_at_their_ends_draw_without_errors_or_nans() {
         }
     }
     for (threshold, strength, spread, exposure) in [(0.2, 2.0, 0.0, 0.1), (4.0, 0.0, 1.0, 4.0), (0.2, 2.0, 1.0, 4.0)] {
-        for display in [Display::Scene, Display::BloomOnly, Display::LightTiles] {
+        for display in [
+            Display::Scene,
+            Display::Term(LightTerm::Ambient),
+            Display::Term(LightTerm::Diffuse),
+            Display::Term(LightTerm::Specular),
+            Display::BloomOnly,
+            Display::LightTiles,
+        ] {
             let mut s = Settings { display, exposure, ..night };
             (s.bloom.threshold, s.bloom.strength, s.bloom.spread) = (threshold, strength, spread);
             draw(&gpu, small, s, &format!("{display:?}, bloom {threshold}/{strength}/{spread}, exposure {exposure}"));

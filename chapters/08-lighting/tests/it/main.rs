@@ -1,6 +1,7 @@
 //! Chapter 08's integration tests, one binary: the bloom chain, light
-//! extremes, the three shading models, and the worked solutions to the
-//! page's exercises.
+//! extremes, the three shading models and the three terms of the light,
+//! the worked solutions to the page's exercises, and the tone map pass
+//! against its Rust mirror.
 //!
 //! One test binary per crate: each links wgpu, naga, egui and winit, so
 //! every extra file here would be another link of all of them.
@@ -9,3 +10,4 @@ mod bloom;
 mod extremes;
 mod shading;
 mod solutions;
+mod tone_map;

@@ -2,10 +2,11 @@
 //! one light, the morning sun, seen with the sun behind the camera so that
 //! the whole visible side is lit. Lit per fragment, the highlight peaks far
 //! higher than lit per vertex, where it is averaged away between vertices
-//! 15° apart; with highlights off, the two agree.
+//! 15° apart; with highlights off, the two agree. And the `ambient`,
+//! `diffuse` and `specular` views add up to the `phong` view's light.
 
 use common::glam::Vec3;
-use common::headless::{OFFSCREEN_FORMAT, capture};
+use common::headless::{OFFSCREEN_FORMAT, capture, read_floats};
 use common::{Camera, Chapter, Gpu, Target, chapter::view_index, image};
 use lighting::LightingChapter;
 use lighting::lights::{TimeOfDay, daylight};
@@ -58,7 +59,14 @@ fn phong_peaks_higher_than_gouraud_and_their_diffuse_light_agrees() {
     let phong = peak(&render(&gpu, &mut chapter, "phong", true, dim));
     let gouraud = peak(&render(&gpu, &mut chapter, "gouraud", true, dim));
     eprintln!("highlight peak: Phong {phong:.1}, Gouraud {gouraud:.1} (of 255, at 1/200 exposure)");
-    assert!(phong > 2.0 * gouraud, "Phong's highlight peak ({phong:.1}) should be well above Gouraud's ({gouraud:.1})");
+    // The page's figures, measured on lavapipe: 196.0 against 17.4. At its
+    // peak a highlight is flat, so where the pixel centres fall moves it by
+    // a fraction of a level; what another GPU may change is its pow and exp
+    // by a few ulps and the rounding of each channel to 8 bits: a level or
+    // two. 3 levels for Phong's, 1 for Gouraud's (a light 10 % brighter
+    // moves them by 5 and 2).
+    assert!((phong - 196.0).abs() <= 3.0, "Phong's highlight peaks at {phong:.1}, not 196");
+    assert!((gouraud - 17.4).abs() <= 1.0, "Gouraud's highlight peaks at {gouraud:.1}, not 17");
 
     let phong = on_the_sphere(&render(&gpu, &mut chapter, "phong", false, 1.0));
     let gouraud = on_the_sphere(&render(&gpu, &mut chapter, "gouraud", false, 1.0));
@@ -74,6 +82,49 @@ fn phong_peaks_higher_than_gouraud_and_their_diffuse_light_agrees() {
         differences.len()
     );
     // Interpolating N · L between vertices 15° apart instead of per pixel
-    // changes it by at most 1 − cos 7.5° ≈ 0.9 %: a level or two of 255.
-    assert!(mean < 1.0 && max <= 3.0, "diffuse light should agree: mean {mean}, largest difference {max}");
+    // changes it by at most 1 − cos 7.5° ≈ 0.9 %: a level or two of 255
+    // (measured: 0.89 on average, 2 at most, the page's figure).
+    assert!(mean < 1.0 && max <= 2.0, "diffuse light should agree: mean {mean}, largest difference {max}");
+}
+
+/// The `phong` view's HDR light, pixel by pixel, and its depth (1 where
+/// the sky is), after drawing `view` at the snapshot's time and camera.
+fn hdr_light(gpu: &Gpu, chapter: &mut LightingChapter, view: &str) -> (Vec<[f32; 4]>, Vec<f32>) {
+    let target = Target { format: OFFSCREEN_FORMAT, width: SIZE.0, height: SIZE.1 };
+    let index = view_index::<LightingChapter>(view).unwrap();
+    chapter.select_view(index);
+    capture(gpu, chapter, target, LightingChapter::SNAPSHOT_TIME, index).unwrap();
+    let light = read_floats(gpu, chapter.post.hdr().colour.texture()).unwrap();
+    let depth = read_floats(gpu, &chapter.post.hdr().depth_texture).unwrap().iter().map(|d| d[0]).collect();
+    (light, depth)
+}
+
+#[test]
+fn the_ambient_diffuse_and_specular_views_add_up_to_the_picture() {
+    let gpu = Gpu::headless(LightingChapter::gpu_needs()).expect("an adapter (lavapipe will do)");
+    let target = Target { format: OFFSCREEN_FORMAT, width: SIZE.0, height: SIZE.1 };
+    let mut chapter = LightingChapter::new(&gpu, target, ()).unwrap();
+    let (picture, depth) = hdr_light(&gpu, &mut chapter, "phong");
+    let terms = ["ambient", "diffuse", "specular"].map(|view| hdr_light(&gpu, &mut chapter, view).0);
+
+    // Where the city is (not the sky), the picture is the three terms plus
+    // the glow of emissive materials, and nothing else: equal within the
+    // rounding of 16-bit floats (three sums rounded against one), or
+    // brighter where something glows.
+    let (mut city, mut equal, mut brighter) = (0, 0, 0);
+    for (i, full) in picture.iter().enumerate().filter(|(i, _)| depth[*i] < 1.0) {
+        city += 1;
+        let parts: Vec<f32> = (0..3).map(|c| terms.iter().map(|t| t[i][c]).sum()).collect();
+        let close = (0..3).all(|c| (full[c] - parts[c]).abs() <= 2e-3 * full[c].abs() + 1e-4);
+        if close {
+            equal += 1;
+        } else if (0..3).all(|c| full[c] >= parts[c]) {
+            brighter += 1;
+        } else {
+            panic!("pixel {i}: the picture {full:?} is darker than its three terms {parts:?}");
+        }
+    }
+    let share = equal as f32 / city as f32;
+    eprintln!("{city} pixels of city: {equal} are the sum of the three terms ({share:.4}), {brighter} brighter (glow)");
+    assert!(share > 0.9, "only {share} of the city's pixels are the sum of their terms");
 }

@@ -29,9 +29,30 @@ fn the_scripted_run_crosses_the_level_without_getting_stuck() {
 fn the_same_time_gives_the_same_game() {
     let level = game::level();
     let solids = level.solids();
-    for time in [0.0, 1.3, 7.77, 20.0] {
-        assert_eq!(game::demo_at(&level, &solids, time), game::demo_at(&level, &solids, time));
+    // `demo_at` replays from the start for each time; one game played on
+    // step by step, as a window plays it, must be at the same state when
+    // it reaches each of those times, whatever was asked for before (the
+    // times go back and forth, so a replay that kept state from the last
+    // call would drift).
+    let mut played = Game::new(&level);
+    assert_eq!(game::demo_at(&level, &solids, 0.0), played, "at 0 s, the game as it starts");
+    let times = [1.3, 7.77, 20.0];
+    for (n, &time) in times.iter().enumerate() {
+        let steps = (time / STEP).round() as u64;
+        while played.steps < steps {
+            let controls = game::script(played.time());
+            played.step(&solids, controls);
+        }
+        for earlier in &times[..n] {
+            game::demo_at(&level, &solids, *earlier);
+        }
+        let replayed = game::demo_at(&level, &solids, time);
+        assert_eq!(replayed.steps, steps, "at {time} s");
+        assert!((replayed.time() - time).abs() <= STEP / 2.0, "at {time} s the game says {} s", replayed.time());
+        assert_eq!(replayed, played, "at {time} s");
     }
+    // And the game does move: 20 s in, the player is far along.
+    assert!(played.player.aabb.min.x > game::demo_at(&level, &solids, 1.3).player.aabb.min.x + 20.0);
 }
 
 #[test]

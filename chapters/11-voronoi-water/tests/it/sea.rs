@@ -31,6 +31,7 @@ fn the_vertex_shader_lifts_the_grid_as_the_wave_function_says() {
     let gpu = Gpu::headless(VoronoiWaterChapter::gpu_needs()).unwrap();
     let mut chapter = chapter(&gpu);
     let waves = sea::sea_waves();
+    let software = gpu.adapter.get_info().device_type == common::wgpu::DeviceType::Cpu;
     for (position, time) in [(Vec2::new(2048.0, 2048.0), 20.0), (Vec2::new(13.7, 4090.2), 1e6)] {
         let points = probe(&gpu, &mut chapter, position, time);
         assert_eq!(points.len(), (GRID_VERTICES * GRID_VERTICES) as usize);
@@ -40,7 +41,14 @@ fn the_vertex_shader_lifts_the_grid_as_the_wave_function_says() {
             worst = worst.max((cpu - p[1]).abs());
         }
         println!("at {time} s: the GPU's heights are within {worst:.2e} m of the CPU's");
-        assert!(worst < 1e-3, "at {time} s a vertex is {worst} m from the wave function");
+        // Lavapipe's sin and cos are LLVM's full-precision ones: the heights
+        // (up to a few metres, where an f32 step is 2.4 × 10⁻⁷ m) agree to
+        // 4.8 × 10⁻⁷ m, two steps; 10⁻⁶ m allows four. WGSL lets a GPU's
+        // sin and cos be off by 2⁻¹¹ (absolute, for angles in −π..π): over
+        // the eight waves' amplitudes (3.07 m in all), up to 1.5 × 10⁻³ m
+        // on hardware.
+        let allowed = if software { 1e-6 } else { 2e-3 };
+        assert!(worst < allowed, "at {time} s a vertex is {worst} m from the wave function (allowed {allowed} m)");
         // Vertices sit on whole cells, around the boat.
         let first = Vec2::new(points[0][0], points[0][2]) / CELL;
         assert_eq!(first, sea::grid_origin(position, true));

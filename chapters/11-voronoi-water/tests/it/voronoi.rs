@@ -30,39 +30,59 @@ fn centre(x: u32, y: u32, width: u32, height: u32) -> Vec2 {
     Vec2::new((x as f32 + 0.5) / width as f32, (y as f32 + 0.5) / height as f32)
 }
 
-/// Whether `found` is as near to `p` as the nearest site, give or take
-/// `slack` (tile units).
-fn near_enough(sites: &[Vec2], p: Vec2, found: u32, slack: f32) -> bool {
-    let Some(site) = sites.get(found as usize) else { return false };
-    let best = sites[nearest(sites, p).unwrap()];
-    torus_offset(p, *site).length() - torus_offset(p, best).length() <= slack
-}
-
 // ANCHOR: cells_test
 #[test]
 fn every_pixel_of_the_cells_view_holds_its_nearest_site() {
     let gpu = Gpu::headless(VoronoiWaterChapter::gpu_needs()).unwrap();
     let mut chapter = chapter(&gpu, "cells");
     let view = common::chapter::view_index::<VoronoiWaterChapter>("cells").unwrap();
-    // A pixel's width, in tile units: ties closer than this may go either way.
-    let pixel = 1.0 / WIDTH.min(HEIGHT) as f32;
+    let software = gpu.adapter.get_info().device_type == common::wgpu::DeviceType::Cpu;
     for time in [3.0, 1234.5] {
         let target = Target { format: OFFSCREEN_FORMAT, width: WIDTH, height: HEIGHT };
         let picture = capture(&gpu, &mut chapter, target, time, view).unwrap();
         let sites = sites::positions(time);
-        let (mut exact, mut ties) = (0, 0);
+        // The exact cones' depth is the distance in f32 (a depth of 0..1,
+        // steps near 10⁻⁷ of the cone's radius; the interpolated offset
+        // from the site is as close): a rasteriser may pick the other site
+        // only where two are equidistant to within rounding. Within 10⁻⁶
+        // tile units (a 4,000th of a pixel, ten times that rounding) either
+        // answer is fair; everywhere else the pixel must hold its nearest.
+        let tie = 1e-6;
+        let (mut near_ties, mut off, mut wrong) = (0, 0, Vec::new());
         for (i, id) in ids_of(&picture).into_iter().enumerate() {
             let (x, y) = (i as u32 % WIDTH, i as u32 / WIDTH);
             let p = centre(x, y, WIDTH, HEIGHT);
-            if Some(id as usize) == nearest(&sites, p) {
-                exact += 1;
-            } else {
-                assert!(near_enough(&sites, p, id, pixel), "at {time} s, pixel ({x}, {y}) holds {id}");
-                ties += 1;
+            let (first, second) = sites
+                .iter()
+                .map(|s| torus_offset(p, *s).length())
+                .fold((f32::INFINITY, f32::INFINITY), |(a, b), d| if d < a { (d, a) } else { (a, b.min(d)) });
+            let near_tie = second - first < tie;
+            near_ties += usize::from(near_tie);
+            if Some(id as usize) != nearest(&sites, p) {
+                off += 1;
+                if !near_tie {
+                    wrong.push((x, y, id));
+                }
             }
         }
-        println!("at {time} s: {exact} pixels exact, {ties} ties within a pixel");
-        assert!(ties < 200, "{ties} ties: too many to be ties");
+        println!(
+            "at {time} s: {off} pixels hold another site than their nearest; {near_ties} are within {tie:e} of a tie"
+        );
+        assert!(
+            wrong.is_empty(),
+            "at {time} s, {off} pixels hold another site, e.g. {:?}",
+            &wrong[..wrong.len().min(5)]
+        );
+        // Few enough near ties that "no ties needed" means something: cones
+        // of 64 segments put 42 pixels on another site, by up to 0.01
+        // pixels (4 × 10⁻⁵ tile units), and would fail.
+        assert!(near_ties <= 5, "{near_ties} pixels within {tie:e} of a tie: the test needs another time");
+        // On lavapipe, which the project's tests run on, every one of the
+        // 96,000 pixels was right, near ties too (at both times, as the page
+        // says).
+        if software {
+            assert_eq!(off, 0, "at {time} s on a software rasteriser");
+        }
     }
 }
 // ANCHOR_END: cells_test
@@ -76,20 +96,26 @@ fn jump_flooding_agrees_with_the_cones() {
     let target = Target { format: OFFSCREEN_FORMAT, width: WIDTH, height: HEIGHT };
     let time = 3.0;
     let cones = ids_of(&capture(&gpu, &mut chapter, target, time, view).unwrap());
-    let mut share = |extra_pass| {
+    let mut misses = |extra_pass| {
         chapter.settings.voronoi = VoronoiSettings { method: Method::JumpFlooding, extra_pass, ..Default::default() };
         let flooded = ids_of(&capture(&gpu, &mut chapter, target, time, view).unwrap());
-        let same = cones.iter().zip(&flooded).filter(|(a, b)| a == b).count();
-        same as f64 / cones.len() as f64
+        cones.iter().zip(&flooded).filter(|(a, b)| a != b).count()
     };
-    let (plain, plus_one) = (share(false), share(true));
+    let (plain, plus_one) = (misses(false), misses(true));
+    let share = |misses: usize| 100.0 * (1.0 - misses as f64 / cones.len() as f64);
     println!(
-        "jump flooding agrees with the exact cones on {:.3} % of pixels ({:.3} % with JFA+1)",
-        plain * 100.0,
-        plus_one * 100.0
+        "jump flooding agrees with the exact cones on {:.3} % of pixels ({plain} differ), with JFA+1 on {:.3} % ({plus_one})",
+        share(plain),
+        share(plus_one)
     );
-    assert!(plain >= 0.99, "only {:.3} %", plain * 100.0);
-    assert!(plus_one >= plain);
+    // Which pixels jump flooding misses is decided by the algorithm, not by
+    // rounding (it compares f32 distances, as the cones do, and the cells
+    // test finds no pixel near a tie): 2 of 96,000 here, 99.998 %. One
+    // more or fewer is allowed for a comparison that another GPU rounds
+    // the other way; none is not, or the page's point, that jump flooding
+    // is not exact, would go unchecked. JFA+1 repairs them all.
+    assert!((1..=3).contains(&plain), "jump flooding misses {plain} pixels, not 2");
+    assert_eq!(plus_one, 0, "JFA+1 misses {plus_one} pixels");
 }
 // ANCHOR_END: jfa_test
 
@@ -127,18 +153,28 @@ fn the_diagram_wraps_at_the_tile_edges() {
     let boundaries =
         (0..size).filter(|&y| nearest(&sites, centre(0, y)) != nearest(&sites, centre(size - 1, y))).count()
             + (0..size).filter(|&x| nearest(&sites, centre(x, 0)) != nearest(&sites, centre(x, size - 1))).count();
-    for method in [Method::Cones, Method::ExactCones, Method::JumpFlooding] {
+    assert_eq!(boundaries, 20, "the exact diagram at 7 s changes cell at 20 edge pixels");
+    // Exact cones and jump flooding change cell where the exact diagram
+    // does. Cones of 8 segments move boundaries by up to 2.3 pixels (the
+    // exercise's table), which here leaves 17. Which pixels they cover is
+    // geometry, not rounding; 2 more or fewer allows for pixel centres that
+    // another rasteriser puts on the other side of a cone's edge.
+    for (method, expected, slack) in
+        [(Method::Cones, 17, 2), (Method::ExactCones, boundaries, 0), (Method::JumpFlooding, boundaries, 0)]
+    {
         let settings = VoronoiSettings { method, ..Default::default() };
         let ids = diagram(&gpu, &sites, size as u32, &settings);
         let found = seams(&ids, size);
         println!("{}: {found} edge pixels change cell across the seam, the exact diagram {boundaries}", method.label());
-        // Eight-segment cones move boundaries by a few pixels: allow a few.
-        assert!(found <= boundaries + 6, "{}: {found} seams against {boundaries}", method.label());
+        assert!(found.abs_diff(expected) <= slack, "{}: {found} seams, not {expected}", method.label());
     }
-    // Without the copies the edges do not meet: the test can tell.
+    // Without the copies the edges do not meet, and the test can tell: no
+    // cell of 64 reaches across the whole tile, so each edge pixel's site is
+    // on its own side, and all 1,024 change cell.
     let settings = VoronoiSettings { tile_copies: false, ..Default::default() };
     let found = seams(&diagram(&gpu, &sites, size as u32, &settings), size);
-    assert!(found > boundaries + 50, "without copies only {found} seams");
+    println!("without the copies: {found} edge pixels change cell across the seam");
+    assert_eq!(found, 2 * size, "without copies only {found} seams");
 }
 // ANCHOR_END: tiling_test
 
