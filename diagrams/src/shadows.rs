@@ -240,7 +240,7 @@ pub fn shadow_test() -> String {
     let sun = f.towards_sun;
     let light = f.light;
     // The section: the vertical plane along the sun's rays through the
-    // ground at the right-hand edge of the first platform; u metres along
+    // ground at x = 25.6 m, under the third platform (23–26 m); u metres along
     // the ground towards the sun, y up. Every ray towards the sun from a
     // point of the plane stays in the plane.
     let towards = Vec3::new(sun.x, 0.0, sun.z).normalize();
