@@ -64,8 +64,10 @@ fn exercise_1_one_call_per_rock_draws_the_same_picture_and_the_page_gives_its_co
         format!("{slider_ms:.0} ms, {:.0} %", 100.0 * slider_ms / default),
         format!("about {} calls", thousands((on_a_gpu / 100.0).round() * 100.0)),
     ];
-    let page = std::fs::read_to_string(concat!(env!("CARGO_MANIFEST_DIR"), "/../../book/src/05-instancing.md")).unwrap();
-    let solution = page.split("What does one draw call cost").nth(1).and_then(|s| s.split("</details>").next()).unwrap();
+    let page =
+        std::fs::read_to_string(concat!(env!("CARGO_MANIFEST_DIR"), "/../../book/src/05-instancing.md")).unwrap();
+    let solution =
+        page.split("What does one draw call cost").nth(1).and_then(|s| s.split("</details>").next()).unwrap();
     for figure in &quoted {
         assert!(solution.contains(figure.as_str()), "page 05's solution should say `{figure}` (from the bench table)");
     }

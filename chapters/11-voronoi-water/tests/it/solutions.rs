@@ -123,8 +123,10 @@ fn exercise_2_jump_flooding_wins_past_a_crossover_that_moves_with_the_size() {
     assert!(at_512.is_some_and(|n| n > 16_384.0), "{at_512:?}");
     // The page's solution must quote what the table gives, so a bench run
     // that moves the figures fails here until the page follows.
-    let page = std::fs::read_to_string(std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("../../book/src/11-voronoi-water.md"))
-        .unwrap();
+    let page = std::fs::read_to_string(
+        std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("../../book/src/11-voronoi-water.md"),
+    )
+    .unwrap();
     let solution = page.split("Does the crossover move?").nth(1).and_then(|s| s.split("</details>").next()).unwrap();
     let crossing = |n: Option<f64>| match n {
         Some(n) if n > 0.0 => format!("cross at about {} sites", thousands((n / 1000.0).round() * 1000.0)),
@@ -141,7 +143,10 @@ fn exercise_2_jump_flooding_wins_past_a_crossover_that_moves_with_the_size() {
         crossing(at_512),
         crossing(at_1024),
     ] {
-        assert!(solution.contains(&figure), "page 11's solution to exercise 2 should say `{figure}` (from the bench table)");
+        assert!(
+            solution.contains(&figure),
+            "page 11's solution to exercise 2 should say `{figure}` (from the bench table)"
+        );
     }
     // The 256² figure on the page was one measurement, not a test: timings
     // belong in `cargo xtask bench`, never in a test that can fail on a
