@@ -421,8 +421,8 @@ enum Which {
 
 impl Chapter for TexturesChapter {
     const NAME: &'static str = env!("CARGO_PKG_NAME");
-    // Measured mean FLIP 0.0258: the textures' mip levels differ most; outliers at most 0.1%.
-    const BROWSER_TOLERANCE: common::Tolerance = common::Tolerance { mean: 0.04, outliers: 0.002, patch: 1.0 };
+    // Measured mean FLIP 0.0258: the textures' mip levels differ most; outliers at most 0.1%. Worst 16×16 patch 0.241 (SwiftShader against lavapipe, 2026-11-26).
+    const BROWSER_TOLERANCE: common::Tolerance = common::Tolerance { mean: 0.04, outliers: 0.002, patch: 0.36 };
     const TITLE: &'static str = "09 · Textures";
     const VIEWS: &'static [View] = &views_of(&VIEW_TABLE);
     const SNAPSHOT_TIME: f32 = 6.0;

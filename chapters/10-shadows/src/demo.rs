@@ -330,8 +330,8 @@ impl ShadowsChapter {
 
 impl Chapter for ShadowsChapter {
     const NAME: &'static str = env!("CARGO_PKG_NAME");
-    // Measured mean FLIP 0.0187; outliers at most 0.1%.
-    const BROWSER_TOLERANCE: common::Tolerance = common::Tolerance { mean: 0.028, outliers: 0.002, patch: 1.0 };
+    // Measured mean FLIP 0.0187; outliers at most 0.1%. Worst 16×16 patch 0.1 (SwiftShader against lavapipe, 2026-11-26).
+    const BROWSER_TOLERANCE: common::Tolerance = common::Tolerance { mean: 0.028, outliers: 0.002, patch: 0.2 };
     const TITLE: &'static str = "10 · Shadows";
     const VIEWS: &'static [View] = &views_of(&VIEW_TABLE);
     /// Mid-jump: the player is in the air over the first wall.
