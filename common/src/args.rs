@@ -87,13 +87,21 @@ impl Args {
             .about(format!("{}: opens a window; with --screenshot or --bench, renders headless.", C::TITLE))
             .mut_arg("view", |arg| arg.value_parser(clap::builder::PossibleValuesParser::new(names)));
         for flag in C::FLAGS {
-            command =
-                command.arg(clap::Arg::new(flag.name).long(flag.name).value_name(flag.value_name).help(flag.help));
+            let arg = clap::Arg::new(flag.name).long(flag.name).help(flag.help);
+            command = command.arg(if flag.is_switch() {
+                arg.action(clap::ArgAction::SetTrue)
+            } else {
+                arg.value_name(flag.value_name)
+            });
         }
         let matches = command.try_get_matches_from(args)?;
         let mut parsed = Self::from_arg_matches(&matches)?;
         for flag in C::FLAGS {
-            if let Some(value) = matches.get_one::<String>(flag.name) {
+            if flag.is_switch() {
+                if matches.get_flag(flag.name) {
+                    parsed.chapter_flags.0.push((flag.name, "true".into()));
+                }
+            } else if let Some(value) = matches.get_one::<String>(flag.name) {
                 parsed.chapter_flags.0.push((flag.name, value.clone()));
             }
         }

@@ -186,8 +186,17 @@ impl Frame<'_> {
 pub struct ChapterFlag {
     /// Without the dashes: `"model"` for `--model`.
     pub name: &'static str,
+    /// What the value is called in `--help`; empty for a switch that takes
+    /// no value (`--walk`), whose value is then `"true"` when given.
     pub value_name: &'static str,
     pub help: &'static str,
+}
+
+impl ChapterFlag {
+    /// A flag without a value (see [`ChapterFlag::value_name`]).
+    pub const fn is_switch(&self) -> bool {
+        self.value_name.is_empty()
+    }
 }
 
 /// The values given for a chapter's own flags, by flag name.

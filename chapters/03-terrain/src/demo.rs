@@ -6,12 +6,13 @@ use std::sync::Arc;
 
 use common::texture::depth_view;
 use common::{
-    Camera, Chapter, FlyController, Frame, Gpu, Input, Preparation, Reloadable, ShaderFile, Target, View, ViewRow,
-    anyhow, egui, shader, views_of, wgpu,
+    Camera, Chapter, ChapterFlag, FlagValues, FlyController, Frame, Gpu, Input, Preparation, Reloadable, ShaderFile,
+    Target, View, ViewRow, anyhow, egui, shader, views_of, wgpu,
 };
 
 use crate::cameras::{close_up_camera, overhead_camera, start_camera};
 use crate::culling::Frustum;
+use crate::ground::{self, Movement};
 use crate::heightfield::{HeightField, TerrainSettings};
 use crate::terrain_data::TerrainData;
 use crate::terrain_renderer::{KEEP_ALL, SKY, Shading, Sun, TerrainRenderer, Viewpoint, gpu_needs};
@@ -76,6 +77,8 @@ pub struct TerrainChapter {
     pub terrain: TerrainRenderer,
     pub camera: Camera,
     pub controller: FlyController,
+    /// Flying (the default) or walking on the ground (G, `--walk`).
+    pub movement: Movement,
     viewpoint: Viewpoint,
     /// Rebuilt when terrain.wgsl is saved (hot reload).
     pipeline: Reloadable<wgpu::RenderPipeline>,
@@ -96,7 +99,8 @@ impl Chapter for TerrainChapter {
     const PREPARES_IN_STEPS: bool = true;
     const TITLE: &'static str = "03 · Terrain from noise";
     const VIEWS: &'static [View] = &views_of(&VIEW_TABLE);
-    const KEYS: &'static [(&'static str, &'static str)] = FlyController::KEYS;
+    const KEYS: &'static [(&'static str, &'static str)] = ground::KEYS;
+    const FLAGS: &'static [ChapterFlag] = &[ground::WALK_FLAG];
     const BENCH_FRAMES: u32 = 10;
 
     fn gpu_needs() -> common::GpuNeeds {
@@ -125,6 +129,7 @@ impl Chapter for TerrainChapter {
             settings: Settings::DEFAULT,
             camera: start_camera(terrain.field(), target.aspect()),
             controller: FlyController { speed: 40.0, ..Default::default() },
+            movement: Movement::Fly,
             viewpoint: terrain.viewpoint(&gpu.device),
             terrain,
             pipeline,
@@ -133,6 +138,11 @@ impl Chapter for TerrainChapter {
             drawn: 0,
             regenerate_requested: false,
         })
+    }
+
+    fn apply_flags(&mut self, _gpu: &Gpu, flags: &FlagValues) -> anyhow::Result<()> {
+        self.movement = ground::movement_from_flags(flags);
+        Ok(())
     }
 
     fn resize(&mut self, gpu: &Gpu, target: Target) {
@@ -158,7 +168,8 @@ impl Chapter for TerrainChapter {
     }
 
     fn update(&mut self, input: &Input, dt: f32) {
-        self.controller.update(&mut self.camera, input, dt);
+        let field = self.terrain.field();
+        ground::step(&self.controller, &mut self.camera, &mut self.movement, field, input, dt);
     }
 
     // ANCHOR: render
@@ -190,6 +201,7 @@ impl Chapter for TerrainChapter {
         ui.label(format!("chunks drawn: {} / {}", self.drawn, self.terrain.mesh().bounds.len()));
         self.regenerate_requested |= self.terrain.settings_ui(ui);
         ui.add(egui::Slider::new(&mut self.controller.speed, 5.0..=400.0).logarithmic(true).text("speed (m/s)"));
+        ground::movement_switch(ui, &mut self.movement);
     }
 
     fn stats(&mut self, _gpu: &Gpu) -> String {

@@ -19,6 +19,8 @@ pub mod terrain_data;
 pub mod terrain_renderer;
 // Which chunks the camera can see.
 pub mod culling;
+// Walking on the ground, and never flying below it.
+pub mod ground;
 // The start camera, the close-up and the view from overhead.
 pub mod cameras;
 // The chapter itself: its settings, views and frame.

@@ -4,8 +4,10 @@
 
 use common::texture::depth_view;
 use common::{
-    Camera, Chapter, FlyController, Frame, Gpu, Input, Reloadable, Target, View, ViewRow, anyhow, egui, views_of, wgpu,
+    Camera, Chapter, ChapterFlag, FlagValues, FlyController, Frame, Gpu, Input, Reloadable, Target, View, ViewRow,
+    anyhow, egui, views_of, wgpu,
 };
+use terrain::ground::{self, Movement};
 use terrain::heightfield::{HeightField, TerrainSettings};
 use terrain::{KEEP_ALL, SKY, Shading, Sun, TerrainRenderer, Viewpoint, start_camera};
 
@@ -35,6 +37,8 @@ pub struct FogChapter {
     pub fog: FogSettings,
     pub camera: Camera,
     pub controller: FlyController,
+    /// Flying (the default) or walking on the ground (G, `--walk`).
+    pub movement: Movement,
     fog_binding: FogBinding,
     viewpoint: Viewpoint,
     /// Rebuilt when fog.wgsl or terrain.wgsl is saved (hot reload).
@@ -50,7 +54,8 @@ impl Chapter for FogChapter {
     const PREPARES_IN_STEPS: bool = true;
     const TITLE: &'static str = "04 · Fog";
     const VIEWS: &'static [View] = &views_of(&VIEW_TABLE);
-    const KEYS: &'static [(&'static str, &'static str)] = FlyController::KEYS;
+    const KEYS: &'static [(&'static str, &'static str)] = ground::KEYS;
+    const FLAGS: &'static [ChapterFlag] = &[ground::WALK_FLAG];
     const BENCH_FRAMES: u32 = 10;
 
     fn gpu_needs() -> common::GpuNeeds {
@@ -79,6 +84,7 @@ impl Chapter for FogChapter {
         Ok(Self {
             camera: start_camera(terrain.field(), target.aspect()),
             controller: FlyController { speed: 40.0, ..Default::default() },
+            movement: Movement::Fly,
             fog: FogSettings::HAZE,
             viewpoint: terrain.viewpoint(device),
             terrain,
@@ -89,6 +95,11 @@ impl Chapter for FogChapter {
             drawn: 0,
             regenerate_requested: false,
         })
+    }
+
+    fn apply_flags(&mut self, _gpu: &Gpu, flags: &FlagValues) -> anyhow::Result<()> {
+        self.movement = ground::movement_from_flags(flags);
+        Ok(())
     }
 
     fn resize(&mut self, gpu: &Gpu, target: Target) {
@@ -114,7 +125,8 @@ impl Chapter for FogChapter {
     }
 
     fn update(&mut self, input: &Input, dt: f32) {
-        self.controller.update(&mut self.camera, input, dt);
+        let field = self.terrain.field();
+        ground::step(&self.controller, &mut self.camera, &mut self.movement, field, input, dt);
     }
 
     // ANCHOR: render
@@ -150,6 +162,7 @@ impl Chapter for FogChapter {
             self.regenerate_requested |= self.terrain.settings_ui(ui);
         });
         ui.add(egui::Slider::new(&mut self.controller.speed, 5.0..=400.0).logarithmic(true).text("speed (m/s)"));
+        ground::movement_switch(ui, &mut self.movement);
     }
 
     fn stats(&mut self, _gpu: &Gpu) -> String {

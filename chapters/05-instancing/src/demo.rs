@@ -3,8 +3,12 @@
 //! camera standing on it.
 
 use common::texture::depth_view;
-use common::{Camera, Chapter, FlyController, Frame, Gpu, Input, Target, View, ViewRow, anyhow, egui, views_of, wgpu};
+use common::{
+    Camera, Chapter, ChapterFlag, FlagValues, FlyController, Frame, Gpu, Input, Target, View, ViewRow, anyhow, egui,
+    views_of, wgpu,
+};
 use fog::FogSettings;
+use terrain::ground::{self, Movement};
 use terrain::heightfield::{HeightField, TerrainSettings};
 use terrain::{KEEP_ALL, SKY, Sun, Viewpoint};
 
@@ -66,6 +70,8 @@ pub struct InstancingChapter {
     pub setup: Setup,
     pub camera: Camera,
     pub controller: FlyController,
+    /// Flying (the default) or walking on the ground (G, `--walk`).
+    pub movement: Movement,
     viewpoint: Viewpoint,
     depth: wgpu::TextureView,
     target: Target,
@@ -79,7 +85,8 @@ impl Chapter for InstancingChapter {
     const PREPARES_IN_STEPS: bool = true;
     const TITLE: &'static str = "05 · Instancing";
     const VIEWS: &'static [View] = &views_of(&VIEW_TABLE);
-    const KEYS: &'static [(&'static str, &'static str)] = FlyController::KEYS;
+    const KEYS: &'static [(&'static str, &'static str)] = ground::KEYS;
+    const FLAGS: &'static [ChapterFlag] = &[ground::WALK_FLAG];
     const BENCH_FRAMES: u32 = 10;
 
     fn gpu_needs() -> common::GpuNeeds {
@@ -99,6 +106,7 @@ impl Chapter for InstancingChapter {
         Ok(Self {
             camera: plain_camera(plain.terrain.field(), target.aspect()),
             controller: FlyController { speed: 20.0, ..Default::default() },
+            movement: Movement::Fly,
             fog: FogSettings::HAZE,
             setup: Setup::DEFAULT,
             viewpoint: plain.terrain.viewpoint(&gpu.device),
@@ -108,6 +116,11 @@ impl Chapter for InstancingChapter {
             draw_calls: DrawCalls::default(),
             regenerate_requested: false,
         })
+    }
+
+    fn apply_flags(&mut self, _gpu: &Gpu, flags: &FlagValues) -> anyhow::Result<()> {
+        self.movement = ground::movement_from_flags(flags);
+        Ok(())
     }
 
     fn resize(&mut self, gpu: &Gpu, target: Target) {
@@ -133,7 +146,8 @@ impl Chapter for InstancingChapter {
     }
 
     fn update(&mut self, input: &Input, dt: f32) {
-        self.controller.update(&mut self.camera, input, dt);
+        let field = self.plain.terrain.field();
+        ground::step(&self.controller, &mut self.camera, &mut self.movement, field, input, dt);
     }
 
     // ANCHOR: render
@@ -177,6 +191,7 @@ impl Chapter for InstancingChapter {
             self.regenerate_requested |= self.plain.terrain.settings_ui(ui);
         });
         ui.add(egui::Slider::new(&mut self.controller.speed, 2.0..=200.0).logarithmic(true).text("speed (m/s)"));
+        ground::movement_switch(ui, &mut self.movement);
     }
 
     fn stats(&mut self, _gpu: &Gpu) -> String {

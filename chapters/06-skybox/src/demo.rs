@@ -3,9 +3,13 @@
 //! chapter 05's plain lit by the sun and then the sky in the same pass.
 
 use common::texture::depth_view;
-use common::{Camera, Chapter, FlyController, Frame, Gpu, Input, Target, View, ViewRow, anyhow, egui, views_of, wgpu};
+use common::{
+    Camera, Chapter, ChapterFlag, FlagValues, FlyController, Frame, Gpu, Input, Target, View, ViewRow, anyhow, egui,
+    views_of, wgpu,
+};
 use fog::FogSettings;
 use instancing::{DrawCalls, MarsPlain, Setup, plain_camera};
+use terrain::ground::{self, Movement};
 use terrain::heightfield::HeightField;
 use terrain::{KEEP_ALL, Viewpoint};
 
@@ -63,6 +67,8 @@ pub struct SkyboxChapter {
     pub sky: Sky,
     pub camera: Camera,
     pub controller: FlyController,
+    /// Flying (the default) or walking on the ground (G, `--walk`).
+    pub movement: Movement,
     pub fog: FogSettings,
     pub rocks: Setup,
     /// What the view decides: the time of day at scene time 0.
@@ -94,7 +100,8 @@ impl Chapter for SkyboxChapter {
     const TITLE: &'static str = "06 · Sky box";
     const VIEWS: &'static [View] = &views_of(&VIEW_TABLE);
     const SNAPSHOT_TIME: f32 = 0.0;
-    const KEYS: &'static [(&'static str, &'static str)] = FlyController::KEYS;
+    const KEYS: &'static [(&'static str, &'static str)] = ground::KEYS;
+    const FLAGS: &'static [ChapterFlag] = &[ground::WALK_FLAG];
     const BENCH_FRAMES: u32 = 10;
 
     fn gpu_needs() -> common::GpuNeeds {
@@ -115,6 +122,7 @@ impl Chapter for SkyboxChapter {
         Ok(Self {
             camera: plain_camera(plain.terrain.field(), target.aspect()),
             controller: FlyController { speed: 20.0, ..Default::default() },
+            movement: Movement::Fly,
             fog: FogSettings::HAZE,
             rocks: instancing::Setup { rocks: 200_000, mode: instancing::Mode::Instanced, terrain: true },
             settings: Settings::DEFAULT,
@@ -127,6 +135,11 @@ impl Chapter for SkyboxChapter {
             target,
             draw_calls: DrawCalls::default(),
         })
+    }
+
+    fn apply_flags(&mut self, _gpu: &Gpu, flags: &FlagValues) -> anyhow::Result<()> {
+        self.movement = ground::movement_from_flags(flags);
+        Ok(())
     }
 
     fn resize(&mut self, gpu: &Gpu, target: Target) {
@@ -152,7 +165,8 @@ impl Chapter for SkyboxChapter {
     }
 
     fn update(&mut self, input: &Input, dt: f32) {
-        self.controller.update(&mut self.camera, input, dt);
+        let field = self.plain.terrain.field();
+        ground::step(&self.controller, &mut self.camera, &mut self.movement, field, input, dt);
     }
 
     // ANCHOR: render
@@ -180,6 +194,7 @@ impl Chapter for SkyboxChapter {
         let max = self.plain.rocks_placed();
         ui.add(egui::Slider::new(&mut self.rocks.rocks, 0..=max).logarithmic(true).text("rocks"));
         ui.add(egui::Slider::new(&mut self.controller.speed, 2.0..=200.0).logarithmic(true).text("speed (m/s)"));
+        ground::movement_switch(ui, &mut self.movement);
     }
 
     fn stats(&mut self, _gpu: &Gpu) -> String {
