@@ -10,7 +10,8 @@
 //! - `serve [PORT]`: the built book on http://127.0.0.1:PORT/.
 //! - `browser [CHAPTER...]`: only the browser test, on the built book.
 //! - `window [CHAPTER...]`: only the window test.
-//! - `bench [CHAPTER...]`: release build, frame times per view, written into the book.
+//! - `bench [CHAPTER...]`: release build, frame times per view, written into the book
+//!   (`bench sizes`: every default view at three sizes; `bench web`: in Chromium).
 //! - `assets`: paint every texture under `assets/` from code (deterministic).
 
 use std::path::{Path, PathBuf};
@@ -63,6 +64,7 @@ cargo xtask browser [CHAPTER..]            open every chapter's page in headless
 cargo xtask window [CHAPTER..]             drive every chapter's window under Xvfb with xdotool
 cargo xtask bench [CHAPTER..]              release build; frame times at 1280x720 into book/src/bench/
 cargo xtask bench web                      wasm sizes, first frames and frame times in Chromium into book/src/bench/web.md
+cargo xtask bench sizes                    every default view at 1280x720, 1920x1080, 2560x1440 into book/src/bench/sizes.md
 cargo xtask assets                         paint every texture under assets/ from code
 ";
 
@@ -205,6 +207,61 @@ fn extra_bench_runs(chapter: &str) -> anyhow::Result<Vec<(String, Vec<String>)>>
     ])
 }
 
+/// The sizes the seed projects measured their frame rates at (seed 001:
+/// 1280 × 720 and 1920 × 1080), and one larger, 2560 × 1440.
+const SEED_SIZES: [(u32, u32); 3] = [(1280, 720), (1920, 1080), (2560, 1440)];
+
+/// Every chapter's default view at each of [`SEED_SIZES`], median frame
+/// and frames per second, from the release binaries already built, written
+/// to `book/src/bench/sizes.md` for the book's page on frame rates.
+fn bench_sizes() -> anyhow::Result<()> {
+    let chapters = chapter_names()?;
+    let mut rows = String::new();
+    let mut adapter = String::new();
+    for chapter in &chapters {
+        let binary = target_dir().join("release").join(chapter);
+        // The first view listed is the default.
+        let views = run_bench(&binary, &["--list-views"])?;
+        let view = views.split_whitespace().next().context("no views listed")?.to_string();
+        let mut cells = Vec::new();
+        for (width, height) in SEED_SIZES {
+            let size = format!("{width}x{height}");
+            println!("$ {chapter} --bench --frames 10 --view {view} --size {size}");
+            let table = run_bench(&binary, &["--bench", "--frames", "10", "--view", &view, "--size", &size])?;
+            // "triangle on ADAPTER, 1920x1080, 10 frames per view"
+            let heading = table.lines().next().unwrap_or_default();
+            let on = heading.split_once(" on ").map_or("", |(_, rest)| rest);
+            adapter = on.split(&format!(", {size}")).next().unwrap_or_default().to_string();
+            let row = table.lines().find(|l| l.contains("| frame (CPU+GPU) |")).context("no frame row")?;
+            let median: f64 = row.split('|').nth(4).context("no median")?.trim().parse()?;
+            cells.push(format!("{median:.1} ms, {:.1} FPS", 1000.0 / median));
+        }
+        rows.push_str(&format!("| {chapter} (`{view}`) | {} |\n", cells.join(" | ")));
+    }
+    let heading: Vec<String> = SEED_SIZES.iter().map(|(w, h)| format!("{w} × {h}")).collect();
+    let page = format!(
+        "Measured by `cargo xtask bench sizes` (release build, each chapter's first view, 10 frames at each \
+         size; median frame): {adapter}.\n\n| chapter | {} |\n|---|---:|---:|---:|\n{rows}",
+        heading.join(" | ")
+    );
+    let path = root().join("book/src/bench/sizes.md");
+    std::fs::write(&path, page)?;
+    println!("wrote {}", path.display());
+    Ok(())
+}
+
+/// Runs a chapter binary with `args` and returns what it printed.
+fn run_bench(binary: &Path, args: &[&str]) -> anyhow::Result<String> {
+    let output = Command::new(binary)
+        .current_dir(root())
+        .args(args)
+        .envs(quiet_env())
+        .output()
+        .with_context(|| format!("cannot run {}", binary.display()))?;
+    ensure!(output.status.success(), "{} failed: {}", binary.display(), String::from_utf8_lossy(&output.stderr));
+    Ok(String::from_utf8(output.stdout)?)
+}
+
 /// Package names of `chapters/*`, in book order.
 fn chapter_names() -> anyhow::Result<Vec<String>> {
     let mut dirs: Vec<PathBuf> =
@@ -222,6 +279,16 @@ fn chapter_names() -> anyhow::Result<Vec<String>> {
 fn bench(args: &[String]) -> anyhow::Result<()> {
     if args.first().map(String::as_str) == Some("web") {
         return web::bench(args.get(1).map(String::as_str) == Some("--tabulate"));
+    }
+    if args.first().map(String::as_str) == Some("sizes") {
+        prerequisites::ensure_adapter()?;
+        let mut build = vec!["build", "--release"];
+        let chapters = chapter_names()?;
+        for chapter in &chapters {
+            build.extend(["-p", chapter.as_str()]);
+        }
+        cargo(&build)?;
+        return bench_sizes();
     }
     prerequisites::ensure_adapter()?;
     let all = chapter_names()?;
@@ -281,5 +348,9 @@ fn bench(args: &[String]) -> anyhow::Result<()> {
         std::fs::write(out_dir.join(format!("{chapter}.md")), page)?;
     }
     println!("\nwrote {}", out_dir.display());
+    // The whole course measured: its default views at the seeds' sizes too.
+    if args.is_empty() {
+        bench_sizes()?;
+    }
     Ok(())
 }
