@@ -1,7 +1,9 @@
 // Chapter 09: textured, normal-mapped surfaces, lit by chapter 08's light
 // loop. The albedo map gives the colour (decoded from sRGB by the texture
 // format), the normal map bends the normal in the surface's own frame
-// (tangent, bitangent, normal), and `light_surface` does the rest.
+// (tangent, bitangent, normal), and `light_surface` does the rest. Lit per
+// fragment (Phong shading), per vertex (Gouraud) or per face (flat), as
+// chapter 08's city is; the textures are read per fragment in all three.
 #import lighting::lights::{frame, Surface, light_surface}
 #import textures::surface::{Vertex, Instance, Varyings, vary, material, albedo_map, normal_map, Frame3, surface_frame, mapped_normal}
 
@@ -31,18 +33,30 @@ fn fragment_frame(in: Varyings) -> Frame3 {
 
 
 // ANCHOR: fragment
-// The light a surface with normal n sends to the eye, and its own glow.
-fn shade(in: Varyings, n: vec3<f32>, albedo_texel: vec4<f32>) -> vec4<f32> {
+// The surface's colour at a fragment: the material's, times the albedo
+// map's texel there.
+fn albedo_at(colour: vec3<f32>, albedo_texel: vec4<f32>) -> vec3<f32> {
     var albedo = material.diffuse * albedo_texel.rgb;
     // Vertex colours (OBJ's `v x y z r g b`) tint it, where the model has them.
     if material.flags.w == 1u {
-        albedo *= in.colour;
+        albedo *= colour;
     }
-    let lit = light_surface(in.world, n, Surface(albedo, material.specular, material.shininess));
-    // An albedo map's alpha says where the material glows (lit windows).
+    return albedo;
+}
+
+// The light the surface gives off of its own at a fragment: an albedo
+// map's alpha says where the material glows (lit windows).
+fn glow_at(glow: f32, albedo_texel: vec4<f32>) -> vec3<f32> {
     let mask = select(1.0, albedo_texel.a, material.flags.y == 1u);
     let night = select(1.0, frame.depth.w, material.flags.z == 1u);
-    return vec4<f32>(lit + material.emissive * mask * night * in.glow, 1.0);
+    return material.emissive * mask * night * glow;
+}
+
+// The light a surface with normal n sends to the eye, and its own glow.
+fn shade(in: Varyings, n: vec3<f32>, albedo_texel: vec4<f32>) -> vec4<f32> {
+    let albedo = albedo_at(in.colour, albedo_texel);
+    let lit = light_surface(in.world, n, Surface(albedo, material.specular, material.shininess));
+    return vec4<f32>(lit + glow_at(in.glow, albedo_texel), 1.0);
 }
 
 // With normal maps. The material decides whether it has one: a uniform,
@@ -65,6 +79,82 @@ fn fs_plain(in: Varyings) -> @location(0) vec4<f32> {
     return shade(in, normalize(in.normal), textureSample(albedo_map, surface_sampler, in.uv));
 }
 // ANCHOR_END: fragment
+
+// ANCHOR: gouraud
+// Gouraud shading: each vertex is lit, and the light is interpolated. The
+// texture is still read per fragment, so the vertex hands on the light,
+// not a colour: what arrives per unit of albedo (the sky's and the
+// diffuse light) and the highlights, which do not depend on the albedo.
+// The fragment multiplies the first by its texel and adds the second.
+// There is no normal at a texel to bend here: normal maps are left out.
+struct LitVaryings {
+    @builtin(position) clip_position: vec4<f32>,
+    @location(0) uv: vec2<f32>,
+    @location(1) glow: f32,
+    @location(2) colour: vec3<f32>,
+    @location(3) received: vec3<f32>,
+    @location(4) highlights: vec3<f32>,
+};
+
+@vertex
+fn vs_gouraud(vertex: Vertex, instance: Instance) -> LitVaryings {
+    let v = vary(vertex, instance, frame.view_proj);
+    let n = normalize(v.normal);
+    // light_surface adds albedo × (sky + diffuse) and specular × highlights:
+    // with albedo 1 and no specular it returns the first light, with albedo
+    // 0 the second. Two loops, and chapter 08's lights.wgsl as it is.
+    let received = light_surface(v.world, n, Surface(vec3<f32>(1.0), 0.0, material.shininess));
+    let highlights = light_surface(v.world, n, Surface(vec3<f32>(0.0), material.specular, material.shininess));
+    return LitVaryings(v.clip_position, v.uv, v.glow, v.colour, received, highlights);
+}
+
+@fragment
+fn fs_gouraud(in: LitVaryings) -> @location(0) vec4<f32> {
+    let texel = textureSample(albedo_map, surface_sampler, in.uv);
+    let lit = albedo_at(in.colour, texel) * in.received + in.highlights;
+    return vec4<f32>(lit + glow_at(in.glow, texel), 1.0);
+}
+// ANCHOR_END: gouraud
+
+// ANCHOR: flat
+// Flat shading: one light per face. Chapter 08 gives each face vertices of
+// its own carrying the face's normal; a model of a million triangles would
+// need three million vertices for that. Here every fragment of a face asks
+// the loop the same question instead: the light at the face's first
+// corner (the provoking vertex's position, not interpolated), for the
+// plane the face lies in. That plane's normal comes from how the world
+// position changes from one pixel to the next, `dpdx` and `dpdy` (the
+// sampler takes the same derivatives of the texture coordinates to pick a
+// mip level). Only the albedo, read per fragment, changes across the face.
+struct FlatVaryings {
+    @builtin(position) clip_position: vec4<f32>,
+    @location(0) world: vec3<f32>,
+    @location(1) normal: vec3<f32>,
+    @location(2) uv: vec2<f32>,
+    @location(3) glow: f32,
+    @location(4) colour: vec3<f32>,
+    @location(5) @interpolate(flat) corner: vec3<f32>,
+};
+
+@vertex
+fn vs_flat(vertex: Vertex, instance: Instance) -> FlatVaryings {
+    let v = vary(vertex, instance, frame.view_proj);
+    return FlatVaryings(v.clip_position, v.world, v.normal, v.uv, v.glow, v.colour, v.world);
+}
+
+@fragment
+fn fs_flat(in: FlatVaryings) -> @location(0) vec4<f32> {
+    // Two directions along the face; across them, its normal, turned to
+    // the side the model's own normals face. (A face seen exactly edge-on
+    // has no width to measure: it keeps the interpolated normal.)
+    let across = cross(dpdx(in.world), dpdy(in.world));
+    let outwards = select(across, -across, dot(across, in.normal) < 0.0);
+    let face = select(normalize(in.normal), normalize(outwards), dot(across, across) > 1e-30);
+    let texel = textureSample(albedo_map, surface_sampler, in.uv);
+    let lit = light_surface(in.corner, face, Surface(albedo_at(in.colour, texel), material.specular, material.shininess));
+    return vec4<f32>(lit + glow_at(in.glow, texel), 1.0);
+}
+// ANCHOR_END: flat
 
 // The tangent frame as colours: the left third of the picture shows the
 // tangent, the middle the bitangent, the right the normal.

@@ -238,6 +238,19 @@ impl City {
 }
 // ANCHOR_END: layout
 
+impl City {
+    /// The tallest square tower (a box of facade or brick): the rooftop
+    /// camera stands on it. Round towers have cone roofs, no place to stand.
+    pub fn tallest_tower(&self) -> &Piece {
+        let top = |piece: &Piece| piece.model.transform_point3(Vec3::Y * 0.5).y;
+        self.pieces
+            .iter()
+            .filter(|p| p.shape == Shape::Cube && matches!(p.material, Material::Facade | Material::Brick))
+            .max_by(|a, b| top(a).total_cmp(&top(b)))
+            .expect("the city has square towers")
+    }
+}
+
 impl Default for City {
     fn default() -> Self {
         Self::new()
@@ -397,6 +410,8 @@ pub struct Traffic {
     pub lights: Vec<Light>,
     /// Where each car is, for a camera that follows one.
     pub cars: Vec<Pose>,
+    /// Where each drone's body is, for a camera that rides with one.
+    pub drones: Vec<Vec3>,
 }
 
 impl Traffic {
@@ -412,6 +427,7 @@ impl City {
         let mut drone_parts = Vec::new();
         let mut lights = Vec::new();
         let mut poses = Vec::new();
+        let mut drones = Vec::new();
         for car in &self.cars {
             let pose = car.path.at(car_time);
             let place = Mat4::from_rotation_translation(Quat::from_rotation_y(pose.heading), pose.position);
@@ -494,8 +510,9 @@ impl City {
                 ));
             }
             lights.push(point(centre - Vec3::Y * 0.8, Vec3::new(0.3, 0.8, 1.0) * 25.0, 12.0));
+            drones.push(centre);
         }
-        Traffic { car_parts: pieces, drone_parts, lights, cars: poses }
+        Traffic { car_parts: pieces, drone_parts, lights, cars: poses, drones }
     }
 }
 // ANCHOR_END: moving

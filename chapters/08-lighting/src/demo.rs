@@ -23,7 +23,7 @@ use crate::scene_lights::{Highlight, LoopOptions, MAX_LIGHTS, SceneLights};
 
 // ANCHOR: views
 /// Every view, once: what it shows, and for a preset where the camera goes.
-pub const VIEW_TABLE: [ViewRow<Settings, CameraPreset>; 22] = [
+pub const VIEW_TABLE: [ViewRow<Settings, CameraPreset>; 28] = [
     ViewRow::mode("day", "the city at noon, from above", Settings::DAY),
     ViewRow::mode("night", "the city at night: street lamps, lit buildings, headlights, bloom", Settings::NIGHT),
     ViewRow::preset(
@@ -89,6 +89,42 @@ pub const VIEW_TABLE: [ViewRow<Settings, CameraPreset>; 22] = [
         Settings::NIGHT,
         CameraPreset::Follow,
     ),
+    ViewRow::preset(
+        "street",
+        "at eye height in the avenue at evening, looking north: lamps coming on, towers against the sky",
+        Settings { time_of_day: TimeOfDay::Evening, ..Settings::DAY },
+        CameraPreset::Street,
+    ),
+    ViewRow::preset(
+        "rooftop",
+        "on the roof of the tallest tower in the morning, looking over the middle of the city",
+        Settings { time_of_day: TimeOfDay::Morning, ..Settings::DAY },
+        CameraPreset::Rooftop,
+    ),
+    ViewRow::preset(
+        "lollipop",
+        "at night beside the lollipop's glowing ball, 74 m up, looking down on the blocks it lights",
+        Settings::NIGHT,
+        CameraPreset::Lollipop,
+    ),
+    ViewRow::preset(
+        "hill",
+        "on the hill at the city's north-east corner in the morning, looking south along its edge",
+        Settings { time_of_day: TimeOfDay::Morning, ..Settings::DAY },
+        CameraPreset::Hill,
+    ),
+    ViewRow::preset(
+        "drone",
+        "at noon, riding beside a drone as it bobs, looking past it into the city",
+        Settings::DAY,
+        CameraPreset::Drone,
+    ),
+    ViewRow::preset(
+        "skyline",
+        "at night from the south-east edge of the city, at eye height: the skyline",
+        Settings::NIGHT,
+        CameraPreset::Skyline,
+    ),
     ViewRow::bench("lights-1", "bench: the night city with 1 light, culled", Settings::bench(1, true)),
     ViewRow::bench("lights-16", "bench: 16 lights, culled per cluster", Settings::bench(16, true)),
     ViewRow::bench("lights-64", "bench: 64 lights, culled per cluster", Settings::bench(64, true)),
@@ -101,15 +137,80 @@ pub const VIEW_TABLE: [ViewRow<Settings, CameraPreset>; 22] = [
 ];
 
 /// Where a preset puts the camera; a mode leaves it, and the "reset
-/// camera" button takes it back to the aerial view.
+/// camera" button takes it back to the aerial view. The seed's city had
+/// camera buttons for places worth seeing; these are this city's.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum CameraPreset {
     /// Close to the glass sphere ([`sphere_camera`]).
     Sphere,
     /// Riding behind the first car ([`follow_camera`]) until the learner moves.
     Follow,
+    /// At eye height in the avenue along x = 0 ([`street_camera`]).
+    Street,
+    /// On the roof of the tallest tower ([`rooftop_camera`]).
+    Rooftop,
+    /// Beside the lollipop tower's ball ([`lollipop_camera`]).
+    Lollipop,
+    /// On the hill in the north-east corner ([`hill_camera`]).
+    Hill,
+    /// Riding beside the drone over the hill ([`drone_camera`]) until the learner moves.
+    Drone,
+    /// Outside the south-east corner, at eye height ([`skyline_camera`]).
+    Skyline,
 }
 // ANCHOR_END: views
+
+impl CameraPreset {
+    /// The overlay's camera buttons: every place but the sphere's close-up,
+    /// which the shading views use.
+    pub const PLACES: [(&'static str, CameraPreset); 7] = [
+        ("street", CameraPreset::Street),
+        ("rooftop", CameraPreset::Rooftop),
+        ("lollipop", CameraPreset::Lollipop),
+        ("hill", CameraPreset::Hill),
+        ("skyline", CameraPreset::Skyline),
+        ("follow a car", CameraPreset::Follow),
+        ("ride a drone", CameraPreset::Drone),
+    ];
+
+    /// The camera this preset places in `city` with its `traffic` now, and
+    /// what it then rides with, if anything.
+    pub fn place(self, city: &City, traffic: &Traffic, aspect: f32) -> (Camera, Option<Riding>) {
+        let still = |camera| (camera, None);
+        match self {
+            Self::Sphere => still(sphere_camera(city, aspect)),
+            Self::Street => still(street_camera(aspect)),
+            Self::Rooftop => still(rooftop_camera(city, aspect)),
+            Self::Lollipop => still(lollipop_camera(aspect)),
+            Self::Hill => still(hill_camera(aspect)),
+            Self::Skyline => still(skyline_camera(aspect)),
+            Self::Follow | Self::Drone => {
+                // The drone over the hill: nothing stands between it and the city.
+                let riding = if self == Self::Follow { Riding::Car(0) } else { Riding::Drone(3) };
+                (riding.camera(traffic, aspect), Some(riding))
+            }
+        }
+    }
+}
+
+/// Something moving that the camera rides with, placed anew every frame
+/// from where it is then, until the learner moves the camera.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Riding {
+    /// Behind this car ([`follow_camera`]).
+    Car(usize),
+    /// Beside this drone ([`drone_camera`]).
+    Drone(usize),
+}
+
+impl Riding {
+    pub fn camera(self, traffic: &Traffic, aspect: f32) -> Camera {
+        match self {
+            Riding::Car(car) => follow_camera(&traffic.cars[car], aspect),
+            Riding::Drone(drone) => drone_camera(traffic.drones[drone], aspect),
+        }
+    }
+}
 
 /// How surfaces are lit.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -269,6 +370,53 @@ pub fn follow_camera(car: &paths::Pose, aspect: f32) -> Camera {
 }
 // ANCHOR_END: cameras
 
+// ANCHOR: places
+/// A camera at `eye` looking at `target`, seeing as far as the city needs.
+fn city_camera(eye: Vec3, target: Vec3, aspect: f32) -> Camera {
+    Camera { near: 0.3, far: 900.0, ..Camera::looking_at(eye, target, aspect) }
+}
+
+/// On the roof of the tallest square tower, near the edge that faces the
+/// glass sphere (the roof's cap behind), looking down past the sphere
+/// across the city.
+pub fn rooftop_camera(city: &City, aspect: f32) -> Camera {
+    let tower = city.tallest_tower().model;
+    let roof = tower.transform_point3(Vec3::Y * 0.5);
+    let towards = (city.sphere_building - roof).with_y(0.0).normalize();
+    let eye = roof + towards * 0.4 * tower.x_axis.length() + Vec3::Y * 1.7;
+    city_camera(eye, roof.with_y(0.0) + towards * 170.0, aspect)
+}
+
+/// Beside the lollipop's glowing ball (at 74 m, block (−30, 30)), a little
+/// above it, looking down past it at the blocks to the south-east.
+pub fn lollipop_camera(aspect: f32) -> Camera {
+    let ball = Vec3::new(-30.0, 74.2, 30.0);
+    city_camera(ball + Vec3::new(-20.0, 4.0, -15.0), ball + Vec3::new(40.0, -60.0, 50.0), aspect)
+}
+
+/// Standing on the east slope of the hill that fills the north-east
+/// corner block, at the city's edge, looking south along it: the towers on
+/// the right, the ground ending on the left.
+pub fn hill_camera(aspect: f32) -> Camera {
+    city_camera(Vec3::new(172.0, 13.3, -150.0), Vec3::new(176.0, 6.0, 150.0), aspect)
+}
+
+/// Beside a drone, a little above it and further out from the middle of
+/// the city, looking past it at the towers.
+pub fn drone_camera(drone: Vec3, aspect: f32) -> Camera {
+    let outwards = Vec3::new(drone.x, 0.0, drone.z).normalize_or(Vec3::Z);
+    let aside = Vec3::Y.cross(outwards);
+    let eye = drone + outwards * 7.0 + aside * 3.0 + Vec3::Y * 1.5;
+    city_camera(eye, drone - outwards * 40.0 + aside * 8.0 - Vec3::Y * 12.0, aspect)
+}
+
+/// Far out past the south-east corner, 20 m up, looking at the middle of
+/// the city: its skyline.
+pub fn skyline_camera(aspect: f32) -> Camera {
+    city_camera(Vec3::new(235.0, 16.0, 235.0), Vec3::new(0.0, 30.0, 0.0), aspect)
+}
+// ANCHOR_END: places
+
 // ANCHOR: frame_lights
 /// The lights of this frame: the moving ones (cars, drones), then the
 /// still ones (street lamps and lit buildings, which come on as night falls,
@@ -309,8 +457,8 @@ pub struct LightingChapter {
     pub clocks: Clocks,
     pub camera: Camera,
     pub controller: FlyController,
-    /// The camera rides behind the first car (the `follow` preset).
-    pub follow: bool,
+    /// What the camera rides with (the `follow` and `drone` presets), if anything.
+    pub riding: Option<Riding>,
     /// Scene time of the last frame, for pausing and the follow camera.
     last_time: f32,
     beacons: Vec<Light>,
@@ -388,7 +536,7 @@ impl Chapter for LightingChapter {
             controller: FlyController { speed: 20.0, ..Default::default() },
             settings: Settings::DAY,
             clocks: Clocks::default(),
-            follow: false,
+            riding: None,
             last_time: 0.0,
             beacons: beacons(MAX_LIGHTS as usize),
             meshes: CityMeshes::new(device, &city),
@@ -416,17 +564,10 @@ impl Chapter for LightingChapter {
     }
 
     fn reset_camera(&mut self, view: usize) {
-        let aspect = self.target.aspect();
-        let preset = VIEW_TABLE[view].camera;
-        self.follow = preset == Some(CameraPreset::Follow);
-        self.camera = match preset {
-            Some(CameraPreset::Sphere) => sphere_camera(&self.city, aspect),
-            Some(CameraPreset::Follow) => {
-                let traffic = self.city.traffic(self.clocks.cars.time(self.last_time), 0.0);
-                follow_camera(&traffic.cars[0], aspect)
-            }
-            None => aerial_camera(aspect),
-        };
+        match VIEW_TABLE[view].camera {
+            Some(preset) => self.place_camera(preset),
+            None => (self.camera, self.riding) = (aerial_camera(self.target.aspect()), None),
+        }
     }
 
     fn camera_mut(&mut self) -> Option<&mut Camera> {
@@ -436,7 +577,7 @@ impl Chapter for LightingChapter {
     fn update(&mut self, input: &Input, dt: f32) {
         let moving = [KeyCode::KeyW, KeyCode::KeyA, KeyCode::KeyS, KeyCode::KeyD, KeyCode::ArrowUp, KeyCode::ArrowDown];
         if moving.iter().any(|&k| input.held(k)) {
-            self.follow = false;
+            self.riding = None;
         }
         if input.pressed(KeyCode::BracketLeft) {
             self.clocks.drones.set_paused(!self.clocks.drones.is_paused(), self.last_time);
@@ -453,8 +594,8 @@ impl Chapter for LightingChapter {
         let s = self.settings;
         let mut day = daylight(s.time_of_day.phase(frame.time, s.day_seconds));
         let traffic = self.city.traffic(self.clocks.cars.time(frame.time), self.clocks.drones.time(frame.time));
-        if self.follow {
-            self.camera = follow_camera(&traffic.cars[0], self.target.aspect());
+        if let Some(riding) = self.riding {
+            self.camera = riding.camera(&traffic, self.target.aspect());
         }
         let camera = self.camera;
 
@@ -572,16 +713,15 @@ impl Chapter for LightingChapter {
             }
         });
         let aspect = self.target.aspect();
-        ui.horizontal(|ui| {
+        ui.horizontal_wrapped(|ui| {
             ui.label("camera");
             if ui.button("aerial").clicked() {
-                (self.camera, self.follow) = (aerial_camera(aspect), false);
+                (self.camera, self.riding) = (aerial_camera(aspect), None);
             }
-            if ui.button("street").clicked() {
-                (self.camera, self.follow) = (street_camera(aspect), false);
-            }
-            if ui.button("follow a car").clicked() {
-                self.follow = true;
+            for (label, preset) in CameraPreset::PLACES {
+                if ui.button(label).clicked() {
+                    self.place_camera(preset);
+                }
             }
         });
         let listed = self.last_lists.indices.len();
@@ -611,6 +751,16 @@ impl Chapter for LightingChapter {
             per_pixel.map_or("n/a".into(), |v| format!("{v:.2}")),
             self.post.bloom().format
         )
+    }
+}
+
+impl LightingChapter {
+    /// Puts the camera where `preset` says, for the cars and drones where
+    /// the last frame had them (a riding camera follows them from there).
+    fn place_camera(&mut self, preset: CameraPreset) {
+        let (cars, drones) = (self.clocks.cars.time(self.last_time), self.clocks.drones.time(self.last_time));
+        let traffic = self.city.traffic(cars, drones);
+        (self.camera, self.riding) = preset.place(&self.city, &traffic, self.target.aspect());
     }
 }
 
@@ -652,4 +802,39 @@ fn lights_per_pixel(
         visited += u64::from(lists.ranges.get(cluster).map_or(0, |r| r[1]));
     }
     (pixels > 0).then(|| visited as f64 / pixels as f64)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::city::{Material, Shape};
+
+    #[test]
+    fn the_drone_camera_keeps_its_drone_in_view_as_it_bobs() {
+        let city = City::new();
+        let mut heights = Vec::new();
+        for drone_time in [0.0, 0.8, 1.7, 6.0] {
+            let traffic = city.traffic(0.0, drone_time);
+            let (camera, riding) = CameraPreset::Drone.place(&city, &traffic, 16.0 / 9.0);
+            assert_eq!(riding, Some(Riding::Drone(3)));
+            let clip = camera.view_projection() * traffic.drones[3].extend(1.0);
+            let (x, y) = (clip.x / clip.w, clip.y / clip.w);
+            assert!(clip.w > 0.0 && x.abs() < 0.8 && y.abs() < 0.8, "the drone is at ({x}, {y}) in the picture");
+            heights.push(camera.position.y);
+        }
+        assert!(heights.windows(2).all(|h| h[0] != h[1]), "the camera bobs with the drone: {heights:?}");
+    }
+
+    #[test]
+    fn the_rooftop_camera_stands_over_every_other_square_tower() {
+        let city = City::new();
+        let camera = rooftop_camera(&city, 16.0 / 9.0);
+        let roofs = city
+            .pieces
+            .iter()
+            .filter(|p| p.shape == Shape::Cube && matches!(p.material, Material::Facade | Material::Brick))
+            .map(|p| p.model.transform_point3(Vec3::Y * 0.5).y);
+        let highest = roofs.fold(0.0, f32::max);
+        assert!((camera.position.y - (highest + 1.7)).abs() < 1e-3, "{} over a roof at {highest}", camera.position.y);
+    }
 }

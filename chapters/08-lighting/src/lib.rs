@@ -32,8 +32,9 @@ pub mod demo;
 pub use city_meshes::{GpuInstance, GpuMaterial, faceted};
 pub use city_sky::CitySky;
 pub use demo::{
-    CameraPreset, Display, LightCount, LightTerm, LightingChapter, Settings, Shading, VIEW_TABLE, aerial_camera,
-    beacons, follow_camera, frame_lights, sphere_camera, street_camera,
+    CameraPreset, Display, LightCount, LightTerm, LightingChapter, Riding, Settings, Shading, VIEW_TABLE,
+    aerial_camera, beacons, drone_camera, follow_camera, frame_lights, hill_camera, lollipop_camera, rooftop_camera,
+    skyline_camera, sphere_camera, street_camera,
 };
 pub use post::{HDR_FORMAT, HdrTarget, PostChain, PostOutput, PostSettings, ToneMap};
 pub use scene_lights::{Highlight, LoopOptions, MAX_LIGHTS, SceneLights};

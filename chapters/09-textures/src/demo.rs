@@ -16,7 +16,9 @@ use lighting::bloom::BloomSettings;
 use lighting::city::{City, Clocks};
 use lighting::clusters;
 use lighting::lights::{Daylight, Light, TimeOfDay, daylight};
-use lighting::{CitySky, Highlight, LightCount, LoopOptions, PostChain, PostOutput, PostSettings, SceneLights};
+use lighting::{
+    CitySky, Highlight, LightCount, LoopOptions, PostChain, PostOutput, PostSettings, SceneLights, Shading,
+};
 
 use crate::builtin;
 use crate::materials::{self, Materials, SamplerMode, Uploader};
@@ -28,7 +30,7 @@ use crate::textured_renderer::{Draw, DrawList, SurfaceOptions, TexturedRenderer,
 
 // ANCHOR: views
 /// Every view, once: what it shows, and for a preset where the camera goes.
-pub const VIEW_TABLE: [ViewRow<Settings, CameraPreset>; 13] = [
+pub const VIEW_TABLE: [ViewRow<Settings, CameraPreset>; 15] = [
     ViewRow::mode("day", "the textured city at noon, from above", Settings::DAY),
     ViewRow::mode(
         "night",
@@ -51,6 +53,18 @@ pub const VIEW_TABLE: [ViewRow<Settings, CameraPreset>; 13] = [
         "no-normal-maps",
         "the same without normal maps: flat, as if painted",
         Settings { normal_maps: false, ..Settings::STAGE },
+        CameraPreset::Wall,
+    ),
+    ViewRow::preset(
+        "gouraud",
+        "the same stage lit per vertex, the textures still read per pixel: no relief, the lamp's pool smeared",
+        Settings { shading: Shading::Gouraud, ..Settings::STAGE },
+        CameraPreset::Wall,
+    ),
+    ViewRow::preset(
+        "flat",
+        "lit once per face: facets of one light each, the bricks still sharp within them",
+        Settings { shading: Shading::Flat, ..Settings::STAGE },
         CameraPreset::Wall,
     ),
     ViewRow::preset(
@@ -128,6 +142,8 @@ pub enum Tangents {
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Settings {
     pub time_of_day: TimeOfDay,
+    /// Lit per face, per vertex or per fragment (chapter 08's switch).
+    pub shading: Shading,
     pub sampler: SamplerMode,
     pub normal_maps: bool,
     /// Read normal maps' green as pointing down the image (DirectX's way).
@@ -145,6 +161,7 @@ impl Settings {
     /// The textured city at noon: what the chapter starts with.
     pub const DAY: Self = Self {
         time_of_day: TimeOfDay::Noon,
+        shading: Shading::Phong,
         // Trilinear: anisotropic filtering is sharper, and about twenty
         // times dearer on a software rasteriser (see the bench).
         sampler: SamplerMode::Mipmaps,
@@ -671,6 +688,7 @@ impl Chapter for TexturesChapter {
             pass.set_bind_group(0, &self.scene_lights.group, &[]);
             let list = DrawList { materials: &self.materials, instances: &self.instances, draws };
             let surfaces = SurfaceOptions {
+                shading: s.shading,
                 sampler: s.sampler,
                 normal_maps: s.normal_maps,
                 flip_green: s.flip_green,
@@ -710,6 +728,12 @@ impl Chapter for TexturesChapter {
                 ui.radio_value(&mut s.time_of_day, time, format!("{time:?}").to_lowercase());
             }
         });
+        ui.horizontal(|ui| {
+            ui.label("shading");
+            ui.radio_value(&mut s.shading, Shading::Flat, "flat");
+            ui.radio_value(&mut s.shading, Shading::Gouraud, "Gouraud");
+            ui.radio_value(&mut s.shading, Shading::Phong, "Phong");
+        });
         ui.horizontal_wrapped(|ui| {
             ui.label("sampler");
             for (mode, label) in [
@@ -724,7 +748,7 @@ impl Chapter for TexturesChapter {
         if !self.renderer.anisotropy {
             ui.label("this adapter cannot filter anisotropically: 'anisotropic' is trilinear here");
         }
-        ui.checkbox(&mut s.normal_maps, "normal maps");
+        ui.checkbox(&mut s.normal_maps, "normal maps (Phong shading only)");
         ui.checkbox(&mut s.flip_green, "read normal maps' green as down the image (DirectX)");
         ui.horizontal(|ui| {
             ui.label("tangents on the stage's primitives");

@@ -230,7 +230,8 @@ impl Materials {
                 texture_entry(0, FILTERABLE),
                 texture_entry(1, FILTERABLE),
                 // Storage, not uniform: the shader branches on `flags` (see `storage_entry`).
-                storage_entry(2, wgpu::ShaderStages::FRAGMENT),
+                // Gouraud shading reads the highlight's strength in the vertex shader.
+                storage_entry(2, wgpu::ShaderStages::VERTEX_FRAGMENT),
             ],
         });
         let one = |rgba: [u8; 4]| RgbaImage::from_pixel(1, 1, common::image::Rgba(rgba));

@@ -6,7 +6,7 @@
 
 use common::chapter::{mesh_pipeline, sampler_entry, storage_entry};
 use common::{Gpu, Reloadable, ShaderError, shader, wgpu};
-use lighting::{HDR_FORMAT, SceneLights};
+use lighting::{HDR_FORMAT, SceneLights, Shading};
 
 use crate::materials::{Materials, SamplerMode, Uploader};
 use crate::mesh::{GpuModel, ModelData, ModelInstance, TexturedVertex};
@@ -37,12 +37,15 @@ pub struct TexturedRenderer {
     pub anisotropy: bool,
 }
 
-/// The fragment shaders: with normal maps, without (no normal map read at
-/// all, so the bench sees what they cost), and the tangent frame view.
+/// Phong shading's fragment shaders: with normal maps, without (no normal
+/// map read at all, so the bench sees what they cost); Gouraud and flat
+/// shading, which have no use for normal maps; and the tangent frame view.
 #[derive(Clone)]
 struct Pipelines {
     normal_mapped: wgpu::RenderPipeline,
     plain: wgpu::RenderPipeline,
+    gouraud: wgpu::RenderPipeline,
+    flat: wgpu::RenderPipeline,
     frame: wgpu::RenderPipeline,
 }
 
@@ -129,12 +132,13 @@ impl TexturedRenderer {
         let module = shader!("textures/textured.wgsl", imports: ["lighting/lights.wgsl", "textures/surface.wgsl"])
             .module(gpu)?;
         let buffers = [Some(TexturedVertex::LAYOUT), Some(ModelInstance::LAYOUT)];
-        let pipeline =
-            |fragment| mesh_pipeline(&gpu.device, layout, &module, ("vs_main", fragment), &buffers, HDR_FORMAT.into());
+        let pipeline = |entries| mesh_pipeline(&gpu.device, layout, &module, entries, &buffers, HDR_FORMAT.into());
         gpu.catch_validation(|| Pipelines {
-            normal_mapped: pipeline("fs_normal_mapped"),
-            plain: pipeline("fs_plain"),
-            frame: pipeline("fs_frame"),
+            normal_mapped: pipeline(("vs_main", "fs_normal_mapped")),
+            plain: pipeline(("vs_main", "fs_plain")),
+            gouraud: pipeline(("vs_gouraud", "fs_gouraud")),
+            flat: pipeline(("vs_flat", "fs_flat")),
+            frame: pipeline(("vs_main", "fs_frame")),
         })
         .map_err(ShaderError)
     }
@@ -158,10 +162,12 @@ impl TexturedRenderer {
         gpu.queue.write_buffer(&self.options, 0, bytemuck::bytes_of(&options));
         let mode = SamplerMode::ALL.iter().position(|m| *m == settings.sampler).unwrap_or(0);
         let pipelines = self.pipelines.get();
-        pass.set_pipeline(match (settings.show_frame, settings.normal_maps) {
-            (true, _) => &pipelines.frame,
-            (false, true) => &pipelines.normal_mapped,
-            (false, false) => &pipelines.plain,
+        pass.set_pipeline(match (settings.show_frame, settings.shading, settings.normal_maps) {
+            (true, _, _) => &pipelines.frame,
+            (false, Shading::Flat, _) => &pipelines.flat,
+            (false, Shading::Gouraud, _) => &pipelines.gouraud,
+            (false, Shading::Phong, true) => &pipelines.normal_mapped,
+            (false, Shading::Phong, false) => &pipelines.plain,
         });
         pass.set_bind_group(2, &self.sampler_groups[mode], &[]);
         list.draw(pass, settings.swapped_colour_spaces);
@@ -173,7 +179,12 @@ impl TexturedRenderer {
 /// switch between.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub struct SurfaceOptions {
+    /// Where the light is worked out: per face, per vertex or per
+    /// fragment (chapter 08's switch). Textures are read per fragment in all three.
+    pub shading: Shading,
     pub sampler: SamplerMode,
+    /// Normal maps, where the material has them (Phong shading only: lit
+    /// per face or per vertex, there is no normal at a texel to bend).
     pub normal_maps: bool,
     /// Read normal maps' green as pointing down the image (DirectX's way).
     pub flip_green: bool,
