@@ -55,6 +55,7 @@ pub fn all() -> Vec<(&'static str, String)> {
         ("shadow-test.svg", shadows::shadow_test()),
         ("light-box-fit.svg", shadows::light_box_fit()),
         ("shadow-acne.svg", shadows::shadow_acne()),
+        ("cube-shadow-map.svg", shadows::cube_shadow_map()),
         ("voronoi-cones.svg", voronoi_water::voronoi_cones()),
         ("jump-flooding.svg", voronoi_water::jump_flooding()),
         ("moving-grid.svg", voronoi_water::moving_grid()),

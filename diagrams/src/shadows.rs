@@ -1,6 +1,7 @@
 //! Chapter 10's figures: the shadow test, how the sun's box is fitted
-//! (computed with the chapter's `fit_light` for its default picture), and
-//! shadow acne with the slope-scaled bias that ends it.
+//! (computed with the chapter's `fit_light` for its default picture),
+//! shadow acne with the slope-scaled bias that ends it, and the lantern's
+//! cube shadow map (computed with the chapter's `CubeFace::lookup`).
 
 use common::Chapter;
 use common::glam::{Vec2, Vec3};
@@ -8,6 +9,7 @@ use std::path::Path;
 
 use common::glam::Mat4;
 use shadows::game::{self, Block, Game, Level, PropKind};
+use shadows::point_shadow::CubeFace;
 use shadows::shadow_map::{self, LightBox, fit_light};
 use shadows::{CAMERA_DISTANCE, Settings, ShadowsChapter, scene, side_camera, visible_part};
 use textures::mesh::ModelInstance;
@@ -614,4 +616,176 @@ pub fn light_box_fit() -> String {
         MUTED,
     );
     svg.finish()
+}
+
+/// Chapter 10: the lantern's cube shadow map, in a section of the level
+/// through the lantern (the plane z = the lantern's z): the four faces
+/// whose frustums this plane cuts (the 90° wedges between the diagonals;
+/// +z and −z look out of the page and into it), and two lookups, each
+/// along the direction from the light. Q, on the inner face of the
+/// tunnel's left pillar, is what chapter 08's lamps lit through the
+/// ceiling: the texel its direction reads holds the ceiling's distance,
+/// far less than Q's. P, on the ground in the open, reads its own. The
+/// faces and places on them come from `CubeFace::lookup`; the distances
+/// from the level's blocks. On the right, the six faces unfolded as the
+/// `cube-shadow-map` view draws them, with the two texels marked.
+pub fn cube_shadow_map() -> String {
+    let level = game::level();
+    let lantern = scene::lantern_light(&level);
+    let light = lantern.position;
+    // The blocks this section cuts, as rectangles in x and y.
+    let section: Vec<(Vec2, Vec2)> = level
+        .blocks
+        .iter()
+        .filter(|b| (-b.depth..=b.depth).contains(&light.z))
+        .map(|b| (b.aabb.min, b.aabb.max))
+        .collect();
+    // How far along the ray from the light towards `p` the first block is, in metres.
+    let first_hit = |p: Vec3| -> f32 {
+        let d = (p - light).truncate();
+        let origin = light.truncate();
+        let inverse = d.recip();
+        section
+            .iter()
+            .filter_map(|(low, high)| {
+                let t0 = (*low - origin) * inverse;
+                let t1 = (*high - origin) * inverse;
+                let (near, far) = (t0.min(t1).max_element(), t0.max(t1).min_element());
+                (far >= near && near > 0.0).then_some(near)
+            })
+            .fold(1.0f32, f32::min)
+            * d.length()
+    };
+    let ceiling = section
+        .iter()
+        .find(|(low, high)| low.x <= light.x && light.x <= high.x && low.y > light.y)
+        .expect("the tunnel's ceiling above the lantern");
+    let pillar = section
+        .iter()
+        .find(|(low, high)| low.y == ceiling.1.y && high.x <= light.x)
+        .expect("the pillar on the ceiling's left end");
+    let q = Vec3::new(pillar.1.x, (pillar.0.y + pillar.1.y) / 2.0, light.z);
+    let p = Vec3::new(light.x + 3.0, 0.0, light.z);
+    let (q_stored, p_stored) = (first_hit(q), first_hit(p));
+    let (q_own, p_own) = (q.distance(light), p.distance(light));
+    assert!(q_stored < q_own - 1.0, "the ceiling stands between the lantern and Q");
+    assert!((p_stored - p_own).abs() < 1e-3, "nothing stands between the lantern and P");
+    let (q_face, q_st) = CubeFace::lookup(q - light);
+    let (p_face, p_st) = CubeFace::lookup(p - light);
+
+    let mut svg = Svg::new(780.0, 330.0);
+    // The section: x from 38 to 52 m, y from −0.6 to 5 m, 30 px a metre.
+    let (left, top, scale) = (24.0f32, 70.0f32, 30.0f32);
+    let (x0, x1, y0, y1) = (38.0f32, 52.5f32, -0.6f32, 5.0f32);
+    let at = |x: f32, y: f32| Vec2::new(left + (x - x0) * scale, top + (y1 - y) * scale);
+    let (w, h) = ((x1 - x0) * scale, (y1 - y0) * scale);
+    svg.clip(left, top, w, h);
+    for (low, high) in &section {
+        let (a, b) = (at(low.x, high.y), at(high.x, low.y));
+        svg.rect(a.x, a.y, b.x - a.x, b.y - a.y, "#d9d4cb", MUTED);
+    }
+    // The four wedges: the diagonals through the light bound them.
+    let centre = at(light.x, light.y);
+    for (dx, dy) in [(1.0, 1.0), (1.0, -1.0)] {
+        let d = Vec2::new(dx, -dy) * 600.0;
+        svg.dashed(centre - d, centre + d, BLUE);
+    }
+    // The cube itself, small, around the light.
+    svg.rect(centre.x - 9.0, centre.y - 9.0, 18.0, 18.0, "none", BLUE);
+    // Q: stored distance solid, the rest dashed; P: all solid.
+    let q_hit = light + (q - light) * (q_stored / q_own);
+    svg.line(centre, at(q_hit.x, q_hit.y), ACCENT, 2.0);
+    svg.dashed(at(q_hit.x, q_hit.y), at(q.x, q.y), ACCENT);
+    svg.line(centre, at(p.x, p.y), INK, 2.0);
+    svg.unclip();
+    svg.rect(left, top, w, h, "none", MUTED);
+    svg.circle(centre, 4.5, "#e0a030");
+    svg.circle(at(q.x, q.y), 4.0, ACCENT);
+    svg.circle(at(q_hit.x, q_hit.y), 3.0, ACCENT);
+    svg.circle(at(p.x, p.y), 4.0, INK);
+    svg.text(at(q.x, q.y) + Vec2::new(-8.0, -6.0), "Q", 13.0, "end", ACCENT);
+    svg.text(at(p.x, p.y) + Vec2::new(6.0, -8.0), "P", 13.0, "start", INK);
+    let label = |svg: &mut Svg, face: CubeFace, offset: Vec2| {
+        svg.text(centre + offset, &format!("{} face", face_name(face)), 11.0, "middle", BLUE);
+    };
+    label(&mut svg, CubeFace::PosX, Vec2::new(150.0, 4.0));
+    label(&mut svg, CubeFace::NegX, Vec2::new(-150.0, 40.0));
+    label(&mut svg, CubeFace::PosY, Vec2::new(0.0, -70.0));
+    label(&mut svg, CubeFace::NegY, Vec2::new(40.0, 52.0));
+    svg.text(
+        Vec2::new(left, top - 24.0),
+        &format!("The level cut through the lantern (orange; z = {} m, range {} m)", light.z, lantern.range),
+        11.0,
+        "start",
+        INK,
+    );
+    svg.text(Vec2::new(left, top - 10.0), "+z and −z face out of the page and into it", 11.0, "start", MUTED);
+    let lines = [
+        (
+            format!(
+                "Q, on the pillar: {} face at s {:.2}, t {:.2}; stored {:.2} m, Q is {:.2} m away: shadowed",
+                face_name(q_face),
+                q_st.x,
+                q_st.y,
+                q_stored,
+                q_own
+            ),
+            ACCENT,
+        ),
+        (
+            format!(
+                "P, on the ground: {} face at s {:.2}, t {:.2}; stored {:.2} m, P is {:.2} m away: lit",
+                face_name(p_face),
+                p_st.x,
+                p_st.y,
+                p_stored,
+                p_own
+            ),
+            INK,
+        ),
+    ];
+    for (i, (text, colour)) in lines.iter().enumerate() {
+        svg.text(Vec2::new(left, top + h + 24.0 + 16.0 * i as f32), text, 11.0, "start", colour);
+    }
+
+    // The cross: +y above +z, −y below it, −x +z +x −z across the middle.
+    let (cx, cy, side) = (500.0f32, 90.0f32, 62.0f32);
+    let cells = [
+        (CubeFace::PosY, 1.0, 0.0),
+        (CubeFace::NegX, 0.0, 1.0),
+        (CubeFace::PosZ, 1.0, 1.0),
+        (CubeFace::PosX, 2.0, 1.0),
+        (CubeFace::NegZ, 3.0, 1.0),
+        (CubeFace::NegY, 1.0, 2.0),
+    ];
+    let corner = |face: CubeFace| {
+        let (_, column, row) = cells.iter().find(|(f, _, _)| *f == face).expect("every face has a cell");
+        Vec2::new(cx + column * side, cy + row * side)
+    };
+    for (face, _, _) in cells {
+        let c = corner(face);
+        svg.rect(c.x, c.y, side, side, "#eef1f6", BLUE);
+        svg.text(c + Vec2::new(side / 2.0, side / 2.0 + 4.0), face_name(face), 12.0, "middle", BLUE);
+    }
+    for (face, st, colour, name) in [(q_face, q_st, ACCENT, "Q"), (p_face, p_st, INK, "P")] {
+        let mark = corner(face) + st * side;
+        svg.circle(mark, 4.0, colour);
+        svg.text(mark + Vec2::new(6.0, -5.0), name, 12.0, "start", colour);
+    }
+    svg.text(Vec2::new(cx, cy - 20.0), "the six faces, unfolded (s right, t down)", 11.0, "start", INK);
+    svg.text(Vec2::new(cx, cy + 3.0 * side + 22.0), "each face as seen from outside the cube:", 11.0, "start", MUTED);
+    svg.text(Vec2::new(cx, cy + 3.0 * side + 38.0), "a mirror image of a camera's view", 11.0, "start", MUTED);
+    svg.finish()
+}
+
+/// A face's name as the page writes it: +x, −x, …
+fn face_name(face: CubeFace) -> &'static str {
+    match face {
+        CubeFace::PosX => "+x",
+        CubeFace::NegX => "−x",
+        CubeFace::PosY => "+y",
+        CubeFace::NegY => "−y",
+        CubeFace::PosZ => "+z",
+        CubeFace::NegZ => "−z",
+    }
 }

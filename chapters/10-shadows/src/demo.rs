@@ -1,7 +1,8 @@
 //! The chapter itself: the settings each view applies, the views, the side
 //! camera and the part of the level it sees, who plays (the script or the
-//! keys), and `impl Chapter`, which renders the shadow map, then the level
-//! through the shadowed renderer, then chapter 08's post chain.
+//! keys), and `impl Chapter`, which renders the sun's shadow map and the
+//! lantern's cube, then the level through the shadowed renderer, then
+//! chapter 08's post chain.
 
 use std::path::Path;
 
@@ -12,7 +13,7 @@ use common::{
     views_of, wgpu, winit::keyboard::KeyCode,
 };
 use lighting::bloom::BloomSettings;
-use lighting::lights::Daylight;
+use lighting::lights::{Daylight, Light};
 use lighting::{CitySky, Highlight, LoopOptions, PostChain, PostOutput, PostSettings, SceneLights};
 use textures::materials::{Materials, Uploader};
 use textures::mesh::{GpuModel, ModelInstance};
@@ -23,14 +24,15 @@ use crate::game::{self, Controls, Game, Level, PropKind};
 use crate::lines::{LineList, Lines};
 use crate::parallax::Parallax;
 use crate::physics;
+use crate::point_shadow::{self, CubeCost, CubeView, PointFilter, PointShadow, PointShadowSettings};
 use crate::scene;
 use crate::shadow_map::{self, Bias, Cull, Filter, LightBox, ShadowMap, ShadowSettings, fit_light};
 use crate::shadowed_renderer::ShadowedRenderer;
 
 // ANCHOR: views
-/// Every view, once, with what it shows. All are modes: the side camera
-/// follows the player whatever the view.
-pub const VIEW_TABLE: [ViewRow<Settings, CameraPreset>; 13] = [
+/// Every view, once, with what it shows. All but `lantern` are modes: the
+/// side camera follows the player whatever the view.
+pub const VIEW_TABLE: [ViewRow<Settings, CameraPreset>; 15] = [
     ViewRow::mode(
         "default",
         "the game mid-jump, with soft shadows that harden where they touch (PCSS)",
@@ -64,6 +66,17 @@ pub const VIEW_TABLE: [ViewRow<Settings, CameraPreset>; 13] = [
         "the sun's depth, full screen: near the sun dark, far light",
         Settings { show: Show::ShadowMap, ..Settings::DEFAULT },
     ),
+    ViewRow::preset(
+        "lantern",
+        "the lantern in the tunnel at nightfall: its light stops at the ceiling, and the rock casts a shadow",
+        Settings::LANTERN,
+        CameraPreset::Lantern,
+    ),
+    ViewRow::mode(
+        "cube-shadow-map",
+        "the lantern's six shadow-map faces unfolded in a cross: near the light dark, far light",
+        Settings { show: Show::CubeMap, ..Settings::DEFAULT },
+    ),
     ViewRow::mode(
         "light-frustum",
         "the sun's box (yellow) around the part of the level the camera sees (cyan)",
@@ -83,15 +96,17 @@ pub const VIEW_TABLE: [ViewRow<Settings, CameraPreset>; 13] = [
     ViewRow::bench("map-4096", "Poisson filtering with a 4096² shadow map", Settings::filtered(Filter::Poisson, 4096)),
     ViewRow::bench(
         "no-shadows",
-        "no lookup at all: what the filters are measured against",
-        Settings::filtered(Filter::Off, shadow_map::DEFAULT_SIZE),
+        "no lookup at all, nor the lantern's cube: what the filters are measured against",
+        Settings { lantern: PointShadowSettings::OFF, ..Settings::filtered(Filter::Off, shadow_map::DEFAULT_SIZE) },
     ),
 ];
 
-/// Where a preset would put the camera: this chapter has none, so no view
-/// can be a preset (`ViewRow::preset` needs a value of this enum).
+/// Where a preset puts the camera instead of behind the player.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub enum CameraPreset {}
+pub enum CameraPreset {
+    /// In front of the tunnel, looking at the lantern ([`lantern_camera`]).
+    Lantern,
+}
 // ANCHOR_END: views
 
 /// What the camera shows.
@@ -101,9 +116,12 @@ pub enum Show {
     Scene,
     /// The shadow map, full screen.
     ShadowMap,
-    /// How much sun reaches each pixel (red) and whether its surface faces
-    /// the sun (green), unlit: what the shadow tests count.
+    /// How much sun reaches each pixel (red), whether its surface faces
+    /// the sun (green) and how much of the lantern's light arrives (blue),
+    /// unlit: what the shadow tests count.
     Sunlit,
+    /// The lantern's cube shadow map, unfolded, full screen.
+    CubeMap,
 }
 
 /// What the sun's box is fitted to.
@@ -119,6 +137,8 @@ pub enum Fit {
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Settings {
     pub shadow: ShadowSettings,
+    /// The lantern's cube shadow map.
+    pub lantern: PointShadowSettings,
     pub fit: Fit,
     /// The time of day as a phase (0.25 sunrise, 0.5 noon, 0.75 sunset).
     pub phase: f32,
@@ -137,6 +157,7 @@ impl Settings {
     /// The game mid-jump in soft shadows: what the chapter starts with.
     pub const DEFAULT: Self = Self {
         shadow: ShadowSettings { filter: Filter::Pcss, ..ShadowSettings::DEFAULT },
+        lantern: PointShadowSettings::DEFAULT,
         fit: Fit::Visible,
         // Nine in the morning: the sun 35° high, on the left, in front.
         phase: 0.375,
@@ -148,6 +169,10 @@ impl Settings {
         camera_distance: CAMERA_DISTANCE,
         bloom: true,
     };
+
+    /// The `lantern` view: the default scene at nightfall, when the
+    /// lantern is the only light.
+    pub const LANTERN: Self = Self { phase: 0.8, ..Self::DEFAULT };
 
     /// The default scene with the shadow map looked up by `filter` in a
     /// `size`² map.
@@ -195,6 +220,14 @@ pub fn visible_part(camera: &Camera, half_depth: f32) -> [Vec3; 8] {
         camera.position + (far - camera.position) * t
     })
 }
+
+/// The `lantern` view's camera: in front of the tunnel, right of the
+/// lantern and a little above it, looking down past it at the ground its
+/// light falls on.
+pub fn lantern_camera(lantern: Vec3, aspect: f32) -> Camera {
+    let eye = lantern + Vec3::new(2.6, -0.35, 6.2);
+    Camera { near: 0.1, far: 400.0, ..Camera::looking_at(eye, lantern + Vec3::new(0.2, -0.5, 0.0), aspect) }
+}
 // ANCHOR_END: camera
 
 /// The models the level is drawn with.
@@ -203,8 +236,13 @@ struct Models {
     tree: GpuModel,
     rock: GpuModel,
     krate: GpuModel,
+    lantern: GpuModel,
     player: GpuModel,
 }
+
+/// The lantern's place in the models' order: the one model its own cube
+/// leaves out, since its light is inside it.
+const LANTERN_MODEL: usize = 4;
 
 // ANCHOR: play
 /// Who plays: the script (pictures, and a window until a key is pressed)
@@ -249,6 +287,14 @@ pub struct ShadowsChapter {
     renderer: ShadowedRenderer,
     pub shadow_map: ShadowMap,
     map_view: shadow_map::MapView,
+    /// The lantern's light, its cube shadow map and the cross that shows it.
+    lantern: Light,
+    pub point_shadow: PointShadow,
+    cube_view: CubeView,
+    /// What the cube's passes cost in the last frame, counted as recorded.
+    pub cube_cost: CubeCost,
+    /// Where the camera is, if a preset put it somewhere; else behind the player.
+    preset: Option<CameraPreset>,
     parallax: Parallax,
     lines: Lines,
     scene_lights: SceneLights,
@@ -292,8 +338,8 @@ impl ShadowsChapter {
         }
     }
 
-    /// The instances of the level (one), the trees, rocks and crates, and a
-    /// last one for the player, with the draws that use them.
+    /// The instances of the level (one), the trees, rocks and crates, the
+    /// lantern, and a last one for the player, with the draws that use them.
     fn level_instances(level: &Level, game: &Game) -> (Vec<ModelInstance>, Vec<(usize, std::ops::Range<u32>)>) {
         let mut instances = vec![ModelInstance::new(Mat4::IDENTITY, 1.0)];
         let mut draws = vec![(0, 0..1)];
@@ -303,8 +349,11 @@ impl ShadowsChapter {
             draws.push((which, start..instances.len() as u32));
         }
         let start = instances.len() as u32;
+        instances.push(scene::lantern_instance(level));
+        draws.push((LANTERN_MODEL, start..start + 1));
+        let start = instances.len() as u32;
         instances.push(scene::player_instance(game));
-        draws.push((4, start..start + 1));
+        draws.push((LANTERN_MODEL + 1, start..start + 1));
         (instances, draws)
     }
 
@@ -380,6 +429,7 @@ impl Chapter for ShadowsChapter {
             tree: upload_model(&mut up, &mut materials, &tree.model, "tree"),
             rock: upload_model(&mut up, &mut materials, &rock.model, "rock"),
             krate: upload_model(&mut up, &mut materials, &krate.model, "crate"),
+            lantern: upload_model(&mut up, &mut materials, &scene::lantern_model(&level), "lantern"),
             player: upload_model(&mut up, &mut materials, &player.model, "player"),
         };
         let parallax = Parallax::new(gpu, &mut up, &scene_lights, &level)?;
@@ -389,8 +439,10 @@ impl Chapter for ShadowsChapter {
             eprintln!("warning: {warning}");
         }
         let shadow_map = ShadowMap::new(gpu, shadow_map::DEFAULT_SIZE)?;
-        let renderer = ShadowedRenderer::new(gpu, &scene_lights, &materials, &shadow_map)?;
+        let point_shadow = PointShadow::new(gpu, point_shadow::DEFAULT_FACE_SIZE)?;
+        let renderer = ShadowedRenderer::with_point_light(gpu, &scene_lights, &materials, &shadow_map, &point_shadow)?;
         let map_view = shadow_map::MapView::new(gpu, target.format)?;
+        let cube_view = CubeView::new(gpu, target.format, &point_shadow)?;
         let sky = CitySky::new(gpu, &scene_lights)?;
         let post = PostChain::new(gpu, target)?;
         let solids = level.solids();
@@ -404,6 +456,7 @@ impl Chapter for ShadowsChapter {
                 usage: wgpu::BufferUsages::VERTEX | wgpu::BufferUsages::COPY_DST,
             },
         );
+        let lantern = scene::lantern_light(&level);
         Ok(Self {
             settings: Settings::DEFAULT,
             play: Play::Demo(Game::new(&level)),
@@ -417,6 +470,11 @@ impl Chapter for ShadowsChapter {
             renderer,
             shadow_map,
             map_view,
+            lantern,
+            point_shadow,
+            cube_view,
+            cube_cost: CubeCost::default(),
+            preset: None,
             parallax,
             lines: Lines::new(gpu, target.format)?,
             scene_lights,
@@ -456,6 +514,10 @@ impl Chapter for ShadowsChapter {
         }
     }
 
+    fn reset_camera(&mut self, view: usize) {
+        self.preset = VIEW_TABLE[view].camera;
+    }
+
     // ANCHOR: update
     fn update(&mut self, input: &Input, dt: f32) {
         let controls = controls_from(input);
@@ -463,6 +525,8 @@ impl Chapter for ShadowsChapter {
             && (controls.left || controls.right || controls.jump)
         {
             self.play = Play::Keys(game);
+            // Whoever plays sees the player.
+            self.preset = None;
         }
         if let Play::Keys(game) = &mut self.play {
             // Fixed steps; a long pause (a hidden window) is capped, not
@@ -477,7 +541,10 @@ impl Chapter for ShadowsChapter {
         let s = self.settings;
         let game = self.game_at(frame.time);
         let player = game.player.aabb.centre();
-        let camera = side_camera(player, s.camera_distance, self.target.aspect());
+        let camera = match self.preset {
+            Some(CameraPreset::Lantern) => lantern_camera(self.level.lantern, self.target.aspect()),
+            None => side_camera(player, s.camera_distance, self.target.aspect()),
+        };
         // The sun's box is fitted to what the game's camera sees, whichever
         // camera draws the picture.
         let game_camera = side_camera(player, CAMERA_DISTANCE, self.target.aspect());
@@ -508,7 +575,7 @@ impl Chapter for ShadowsChapter {
         self.sky.write(gpu, &camera, &day);
         self.place_player(gpu, &game);
         let m = &self.models;
-        let models = [&m.level, &m.tree, &m.rock, &m.krate, &m.player];
+        let models = [&m.level, &m.tree, &m.rock, &m.krate, &m.lantern, &m.player];
         let list = DrawList {
             materials: &self.materials,
             instances: &self.instances,
@@ -528,7 +595,29 @@ impl Chapter for ShadowsChapter {
             return;
         }
 
-        // Pass two: the camera's view, each fragment asking the map.
+        // Then six passes, one per face of the lantern's cube, of
+        // everything but the lantern itself (its light is inside it).
+        self.point_shadow.write(gpu, &self.lantern, &s.lantern);
+        self.cube_cost = CubeCost::default();
+        if s.lantern.filter != PointFilter::Off || s.show == Show::CubeMap {
+            let casters = DrawList {
+                materials: &self.materials,
+                instances: &self.instances,
+                draws: self
+                    .draws
+                    .iter()
+                    .filter(|(i, _)| *i != LANTERN_MODEL)
+                    .map(|(i, instances)| Draw { model: models[*i], instances: instances.clone() })
+                    .collect(),
+            };
+            self.cube_cost = self.point_shadow.render(frame.encoder, frame.timer, &casters);
+        }
+        if s.show == Show::CubeMap {
+            self.cube_view.draw(gpu, frame, self.target);
+            return;
+        }
+
+        // The last pass: the camera's view, each fragment asking the maps.
         {
             let mut pass = common::chapter::scene_pass(
                 frame.encoder,
@@ -590,6 +679,14 @@ impl Chapter for ShadowsChapter {
         ui.add(egui::Slider::new(&mut s.shadow.bias.normal_offset, 0.0..=8.0).text("normal offset (texels)"));
         ui.add(egui::Slider::new(&mut s.shadow.radius, 0.5..=8.0).text("Poisson radius (texels)"));
         ui.add(egui::Slider::new(&mut s.shadow.light_width, 0.005..=0.2).logarithmic(true).text("PCSS light width"));
+        ui.horizontal_wrapped(|ui| {
+            ui.label("lantern's shadow");
+            for filter in PointFilter::ALL {
+                ui.radio_value(&mut s.lantern.filter, filter, filter.label());
+            }
+        });
+        ui.add(egui::Slider::new(&mut s.lantern.bias.normal_offset, 0.0..=8.0).text("lantern: normal offset (texels)"));
+        ui.add(egui::Slider::new(&mut s.lantern.bias.depth, 0.0..=8.0).text("lantern: depth bias (texels)"));
         ui.horizontal(|ui| {
             ui.label("shadow pass culls");
             ui.radio_value(&mut s.shadow.cull, Cull::Back, "back faces");
@@ -608,6 +705,11 @@ impl Chapter for ShadowsChapter {
         ui.checkbox(&mut s.collision_boxes, "collision boxes");
         ui.checkbox(&mut s.light_box, "the sun's box");
         ui.checkbox(&mut s.tint_layers, "tint the layers by depth");
+        let cost = self.cube_cost;
+        ui.label(format!(
+            "lantern's cube: {} passes of {}², {} draw calls, {} triangles",
+            cost.passes, self.point_shadow.size, cost.draw_calls, cost.triangles
+        ));
         if let Some(light) = self.last_box {
             ui.label(format!(
                 "one shadow-map texel covers {:.1} cm; the box is {:.0} m deep",
@@ -622,10 +724,14 @@ impl Chapter for ShadowsChapter {
 
     fn stats(&mut self, _gpu: &Gpu) -> String {
         let texel = self.last_box.map_or(0.0, |b| b.texel * 100.0);
+        let cost = self.cube_cost;
         format!(
-            "shadow map {0}² ({1}), one texel {texel:.2} cm",
+            "shadow map {0}² ({1}), one texel {texel:.2} cm; lantern's cube {2} passes, {3} draw calls, {4} triangles",
             self.shadow_map.size,
-            self.settings.shadow.filter.label()
+            self.settings.shadow.filter.label(),
+            cost.passes,
+            cost.draw_calls,
+            cost.triangles
         )
     }
 }

@@ -77,18 +77,22 @@ pub struct Prop {
     pub solid: bool,
 }
 
-/// The level: blocks, props, where the player starts, and its extent in x.
+/// The level: blocks, props, where the player starts, its extent in x,
+/// and where its lantern hangs.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Level {
     pub blocks: Vec<Block>,
     pub props: Vec<Prop>,
     pub spawn: Vec2,
     pub width: f32,
+    /// The lantern's light: the middle of its glass.
+    pub lantern: Vec3,
 }
 
 // ANCHOR: level
 /// The level, about seven screens wide: platforms at several heights, a
-/// tunnel with a low ceiling, walls to jump, crates to climb.
+/// tunnel with a low ceiling and a lantern in it, walls to jump, crates to
+/// climb.
 pub fn level() -> Level {
     let block = |x0: f32, y0: f32, x1: f32, y1: f32, surface| Block {
         aabb: Aabb::new(Vec2::new(x0, y0), Vec2::new(x1, y1)),
@@ -145,7 +149,11 @@ pub fn level() -> Level {
         prop(PropKind::Tree, 110.0, 0.0, -1.3, 1.0, 1.7, false),
         prop(PropKind::Rock, 115.0, 0.0, 1.2, 0.9, 2.2, false),
     ];
-    Level { blocks, props, spawn: Vec2::new(2.0, 0.0), width: 120.0 }
+    // The lantern hangs under the tunnel's ceiling (2.3 m up), left of the
+    // rock at 46 m and a little behind the path, its glass above the
+    // player's head (1.7 m): the ceiling hides it from the sun.
+    let lantern = Vec3::new(44.5, 1.95, -0.4);
+    Level { blocks, props, spawn: Vec2::new(2.0, 0.0), width: 120.0, lantern }
 }
 // ANCHOR_END: level
 

@@ -1,6 +1,7 @@
 //! The level as things to draw: its blocks baked into one textured model
 //! (chapter 09's textures at their size in metres), its props and the
-//! player as chapter 09's OBJ models, and the sun's path over the day.
+//! player as chapter 09's OBJ models, its lantern and the lantern's light,
+//! and the sun's path over the day.
 
 use std::path::Path;
 
@@ -8,7 +9,7 @@ use common::files::ReadError;
 use common::glam::{Mat4, Quat, Vec2, Vec3};
 use common::{MeshData, primitives};
 use lighting::city::Shape;
-use lighting::lights::{Daylight, daylight};
+use lighting::lights::{Daylight, Light, LightKind, daylight};
 use textures::mesh::{MaterialDesc, ModelData, ModelInstance};
 use textures::scenes::world_uvs;
 
@@ -115,6 +116,61 @@ pub fn player_instance(game: &Game) -> ModelInstance {
     let turn = if game.facing < 0.0 { std::f32::consts::PI } else { 0.0 };
     ModelInstance::new(Mat4::from_rotation_translation(Quat::from_rotation_y(turn), base), 1.0)
 }
+
+// ANCHOR: lantern
+/// How far the lantern's light reaches, metres: chapter 08's falloff is
+/// exactly zero there, and its cube shadow map holds nothing farther.
+pub const LANTERN_RANGE: f32 = 9.0;
+
+/// The lantern's light: one of chapter 08's point lights, warm, at the
+/// middle of its glass.
+pub fn lantern_light(level: &Level) -> Light {
+    Light {
+        position: level.lantern,
+        colour: Vec3::new(1.0, 0.72, 0.4) * 5.0,
+        range: LANTERN_RANGE,
+        kind: LightKind::Point,
+    }
+}
+
+/// The lantern as a model around its light (the origin): glowing glass
+/// between a metal base and cap, and a rod up to the ceiling above it.
+/// The light is inside the glass, so the lantern itself must not cast
+/// shadows into its own cube; the chapter leaves it out of those passes.
+pub fn lantern_model(level: &Level) -> ModelData {
+    let light = level.lantern;
+    let ceiling = level
+        .blocks
+        .iter()
+        .filter(|b| b.aabb.min.x <= light.x && light.x <= b.aabb.max.x && b.aabb.min.y > light.y)
+        .map(|b| b.aabb.min.y)
+        .fold(light.y + 0.5, f32::min);
+    let glass = MaterialDesc {
+        emissive: Vec3::new(1.0, 0.72, 0.4) * 3.0,
+        ..MaterialDesc::plain("lantern glass", Vec3::new(1.0, 0.85, 0.6), 0.3, 24.0)
+    };
+    let metal = MaterialDesc::plain("lantern metal", Vec3::new(0.12, 0.11, 0.1), 0.5, 32.0);
+    let mut model = ModelData { materials: vec![glass, metal], ..Default::default() };
+    let cube: MeshData = primitives::cube();
+    let mut add = |size: Vec3, centre_y: f32, material: usize| {
+        let at = Mat4::from_scale_rotation_translation(size, Quat::IDENTITY, Vec3::new(0.0, centre_y, 0.0));
+        model.append(&cube, material, at, |uv, _| uv);
+    };
+    add(Vec3::new(0.2, 0.26, 0.2), 0.0, 0);
+    add(Vec3::new(0.26, 0.05, 0.26), 0.155, 1);
+    add(Vec3::new(0.24, 0.04, 0.24), -0.15, 1);
+    let rod_bottom = 0.18;
+    let rod = (ceiling - light.y - rod_bottom).max(0.01);
+    add(Vec3::new(0.025, rod, 0.025), rod_bottom + rod / 2.0, 1);
+    model.group_by_material();
+    model
+}
+
+/// The lantern's instance: its model moved to its light.
+pub fn lantern_instance(level: &Level) -> ModelInstance {
+    ModelInstance::new(Mat4::from_translation(level.lantern), 1.0)
+}
+// ANCHOR_END: lantern
 
 /// The box around everything that can cast a shadow.
 pub fn level_bounds(level: &Level) -> (Vec3, Vec3) {

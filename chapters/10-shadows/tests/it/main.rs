@@ -1,6 +1,6 @@
 //! Chapter 10's integration tests, one binary: the game, hot reload, the
-//! physics, the shadow maps, and the worked solutions to the page's
-//! exercises.
+//! physics, the shadow maps, the lantern's cube shadow map, and the worked
+//! solutions to the page's exercises.
 //!
 //! One test binary per crate: each links wgpu, naga, egui and winit, so
 //! every extra file here would be another link of all of them.
@@ -8,5 +8,6 @@
 mod game;
 mod hot_reload;
 mod physics;
+mod point_shadows;
 mod shadow_maps;
 mod solutions;

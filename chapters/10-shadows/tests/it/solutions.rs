@@ -5,9 +5,11 @@
 use common::glam::{Mat4, Vec3};
 use common::headless::{OFFSCREEN_FORMAT, capture};
 use common::{Camera, Chapter, Gpu, ShaderFile, Target, shader};
-use shadows::game::{self, Controls, Game, JUMP_SPEED, STEP};
+use shadows::game::{self, Controls, Game, JUMP_SPEED, PropKind, STEP};
+use shadows::point_shadow::CubeFace;
 use shadows::shadow_map::{Bias, Cull, Filter, LightBox, ShadowSettings, fit_light};
 use shadows::{CAMERA_DISTANCE, Settings, ShadowsChapter, Show, scene, side_camera, visible_part};
+use textures::mesh::ModelInstance;
 
 /// `file` with `edits` made to the text of `path` (the file itself or a
 /// module it imports), composed with its imports and validated by naga.
@@ -332,7 +334,10 @@ fn near_cascade(world: vec3<f32>) -> f32 {
 #[test]
 fn exercise_5_a_near_cascade_halves_the_texel_where_the_view_is_close() {
     compiles_with(
-        shader!("shadows/scene.wgsl", imports: ["lighting/lights.wgsl", "textures/surface.wgsl", "shadows/shadow.wgsl"]),
+        shader!(
+            "shadows/scene.wgsl",
+            imports: ["lighting/lights.wgsl", "textures/surface.wgsl", "shadows/shadow.wgsl", "shadows/point_shadow.wgsl"]
+        ),
         "shadows/shadow.wgsl",
         &SECOND_CASCADE,
     );
@@ -412,3 +417,85 @@ fn exercise_6_a_second_jump_in_the_air_lifts_the_player_once() {
 /// The highest the double jump takes the player, metres (one jump: 2.08 m).
 const DOUBLE_JUMP_HEIGHT: f32 = 4.08;
 // ANCHOR_END: double_jump
+
+// ANCHOR: cube_culling
+/// Which casters the lantern's passes leave out.
+#[derive(Clone, Copy, PartialEq)]
+enum CubeCulling {
+    /// None: what `PointShadow::render` draws.
+    Nothing,
+    /// Every instance whose box lies beyond the lantern's range.
+    BeyondRange,
+    /// Those, and in each face's pass every instance whose box lies
+    /// wholly outside that face's frustum.
+    BeyondRangeOrFace,
+}
+
+/// Exercise 7: the triangles the lantern's six passes draw in the
+/// `lantern` view (the demo at the snapshot time), culling instance by
+/// instance with the boxes of their models' vertices.
+fn cube_triangles(culling: CubeCulling) -> u64 {
+    let level = game::level();
+    let light = scene::lantern_light(&level);
+    let game = game::demo_at(&level, &level.solids(), ShadowsChapter::SNAPSHOT_TIME);
+    let read: textures::obj::ReadFile = &scene::read;
+    let load = |path: &str| textures::obj::load(std::path::Path::new(path), read).unwrap().model;
+    // Every caster's model with its instances; the level's blocks are one
+    // model with one instance, always drawn.
+    let mut casters = vec![(scene::level_model(&level), vec![ModelInstance::new(Mat4::IDENTITY, 1.0)])];
+    for kind in [PropKind::Tree, PropKind::Rock, PropKind::Crate] {
+        casters.push((load(scene::prop_model(kind)), scene::prop_instances(&level, kind)));
+    }
+    casters.push((load(scene::PLAYER_MODEL), vec![scene::player_instance(&game)]));
+    let mut triangles = 0;
+    for face in CubeFace::ALL {
+        let axes = face.axes();
+        // The frustum's four sides, as normals pointing into it: a point d
+        // from the light is inside where d · major ≥ |d · s| and |d · t|.
+        let sides = [axes.major - axes.s, axes.major + axes.s, axes.major - axes.t, axes.major + axes.t];
+        for (model, instances) in &casters {
+            for instance in instances {
+                let at = Mat4::from_cols_array_2d(&instance.model);
+                let (low, high) = model.vertices.iter().fold((Vec3::MAX, Vec3::MIN), |(lo, hi), v| {
+                    let p = at.transform_point3(Vec3::from(v.position)) - light.position;
+                    (lo.min(p), hi.max(p))
+                });
+                let beyond = Vec3::ZERO.clamp(low, high).length() >= light.range;
+                let corners = (0..8).map(|i| {
+                    Vec3::new(
+                        if i & 1 == 0 { low.x } else { high.x },
+                        if i & 2 == 0 { low.y } else { high.y },
+                        if i & 4 == 0 { low.z } else { high.z },
+                    )
+                });
+                let outside = sides.iter().any(|n| corners.clone().all(|c| n.dot(c) < 0.0));
+                let culled = match culling {
+                    CubeCulling::Nothing => false,
+                    CubeCulling::BeyondRange => beyond,
+                    CubeCulling::BeyondRangeOrFace => beyond || outside,
+                };
+                if !culled {
+                    triangles += model.indices.len() as u64 / 3;
+                }
+            }
+        }
+    }
+    triangles
+}
+// ANCHOR_END: cube_culling
+
+#[test]
+fn exercise_7_culling_the_lanterns_casters_by_range_and_face() {
+    let all = cube_triangles(CubeCulling::Nothing);
+    let in_range = cube_triangles(CubeCulling::BeyondRange);
+    let in_face = cube_triangles(CubeCulling::BeyondRangeOrFace);
+    println!(
+        "the lantern's six passes: {all} triangles, {in_range} within its range, {in_face} in a face's frustum too"
+    );
+    // The same count as the passes' own counter (`CubeCost`).
+    assert_eq!(all, 20_880);
+    assert_eq!((in_range, in_face), CULLED_TRIANGLES);
+}
+
+/// Triangles left within the range, and within a face's frustum too.
+const CULLED_TRIANGLES: (u64, u64) = (3_960, 2_008);

@@ -13,7 +13,7 @@ use voronoi_water::VoronoiWaterChapter;
 
 /// Every WGSL file the chapter builds pipelines from, with the pieces that
 /// read it.
-const FILES: [&str; 18] = [
+const FILES: [&str; 19] = [
     "voronoi-water/cones.wgsl",      // Voronoi
     "voronoi-water/jump_flood.wgsl", // Voronoi
     "voronoi-water/process.wgsl",    // WaterTexture, Show
@@ -31,17 +31,20 @@ const FILES: [&str; 18] = [
     "shadows/show_depth.wgsl",       // chapter 10's MapView
     "shadows/scene.wgsl",            // chapter 10's ShadowedRenderer, for the boat
     "shadows/shadow.wgsl",           // imported by the sea and the boat
+    "shadows/point_shadow.wgsl",     // imported by the boat's scene.wgsl (the boat has no point light)
     "common/fullscreen.wgsl",        // imported by every full-screen pass
 ];
 
 /// The shaders of the chapters it takes pieces from that it does not draw
 /// with, and the pieces that do.
-const NOT_USED: [&str; 5] = [
-    "lighting/city.wgsl",     // chapter 08's city
-    "lighting/sky.wgsl",      // CitySky: this chapter has its own sky
-    "textures/textured.wgsl", // TexturedRenderer: the boat is shadowed
-    "shadows/layers.wgsl",    // Parallax
-    "shadows/lines.wgsl",     // Lines
+const NOT_USED: [&str; 7] = [
+    "lighting/city.wgsl",        // chapter 08's city
+    "lighting/sky.wgsl",         // CitySky: this chapter has its own sky
+    "textures/textured.wgsl",    // TexturedRenderer: the boat is shadowed
+    "shadows/layers.wgsl",       // Parallax
+    "shadows/lines.wgsl",        // Lines
+    "shadows/point_caster.wgsl", // PointShadow: no lantern at sea
+    "shadows/show_cube.wgsl",    // CubeView
 ];
 
 /// The crates whose `shader!` paths must all be in one list or the other:
