@@ -1,12 +1,13 @@
 //! The plumbing every chapter shares, and two lessons of chapter 02 that
 //! every later chapter builds on: the camera (`camera.rs`, which the
 //! [`Chapter`] trait itself names) and the unit primitives
-//! (`primitives.rs`). Page 02 teaches those two from here. Three small
+//! (`primitives.rs`). Page 02 teaches those two from here. Four small
 //! helpers that later chapters need live here too, so that using them
 //! does not make a chapter depend on unrelated chapters: Perlin noise and
 //! fBm (`noise.rs`, taught on page 03), a seeded random number generator
-//! (`rng.rs`, page 05), and the sun's path through the day (`sun.rs`, page
-//! 06). Nothing else in this crate is a technique the book teaches.
+//! (`rng.rs`, page 05), the sun's path through the day (`sun.rs`, page
+//! 06), and an orbit camera (`orbit.rs`, page 07; chapter 11 sails with
+//! it). Nothing else in this crate is a technique the book teaches.
 //!
 //! A chapter implements [`Chapter`]; its `main` calls [`run`]. From there
 //! this crate opens a window with an egui overlay and hot-reloaded shaders,
@@ -26,6 +27,7 @@ pub mod input;
 pub mod memory;
 pub mod mesh;
 pub mod noise;
+pub mod orbit;
 mod overlay;
 pub mod parallel;
 pub mod pipeline;
@@ -49,6 +51,7 @@ pub use cli::run;
 pub use gpu::{Gpu, GpuNeeds, NoAdapter};
 pub use input::Input;
 pub use mesh::{Mesh, MeshData, Vertex};
+pub use orbit::Orbit;
 pub use preparation::Preparation;
 pub use reload::Reloadable;
 pub use shader::{ShaderError, ShaderFile};

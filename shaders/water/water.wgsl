@@ -4,7 +4,9 @@ enable clip_distances;
 
 // Chapter 07: a lake. The surface is a grid moved by eight sine waves in
 // the vertex shader; its colour comes from two pictures of the scene,
-// one reflected in the water and one seen through it, mixed by Fresnel.
+// one reflected in the water and one seen through it, mixed by Fresnel
+// (fs_water), or in seed 003's style from a tiled water texture that
+// pushes itself aside (fs_texture).
 #import terrain::globals
 #import fog::{fog, visibility}
 #import water::waves::wave_sum
@@ -21,6 +23,9 @@ struct Water {
     waves: array<vec4<f32>, 8>,
     // …and their speeds (m/s), four to a vec4.
     speeds: array<vec4<f32>, 2>,
+    // Seed 003's style: x how far the second read is pushed (tiles per
+    // unit of colour), y metres of lake per tile of the texture.
+    texture: vec4<f32>,
 };
 @group(2) @binding(0) var<uniform> water: Water;
 @group(2) @binding(1) var reflection_texture: texture_2d<f32>;
@@ -30,6 +35,8 @@ struct Water {
 @group(2) @binding(5) var normal_map: texture_2d<f32>;
 @group(2) @binding(6) var repeat_sampler: sampler;
 @group(2) @binding(7) var clamp_sampler: sampler;
+@group(2) @binding(8) var water_texture: texture_2d<f32>;
+@group(2) @binding(9) var water_texture_sampler: sampler;
 // ANCHOR_END: uniforms
 
 struct WaterOutput {
@@ -123,3 +130,36 @@ fn fs_water(in: WaterOutput) -> @location(0) vec4<f32> {
     return vec4<f32>(colour, shallow);
 }
 // ANCHOR_END: fs_water
+
+// ANCHOR: fs_texture
+// Seed 003's water: no pictures of the scene, only a tiled water texture,
+// read twice. The first read, where the fragment is, is not shown: its
+// green and blue say how far to push the second read, which scrolls with
+// time. The push stays where it is on the lake while the texture drifts
+// through it, so the pattern swirls and stretches instead of sliding
+// along stiffly as one picture. (The texture is sRGB, so the push reads
+// its colours in linear light: darker than its bytes, a smaller push.)
+const TEXTURE_DRIFT: vec2<f32> = vec2<f32>(-0.006, 0.024); // tiles per second
+
+@fragment
+fn fs_texture(in: WaterOutput) -> @location(0) vec4<f32> {
+    let uv = in.world_position.xz / water.texture.y;
+    let push = textureSample(water_texture, water_texture_sampler, uv).gb;
+    var moved = uv + TEXTURE_DRIFT * water.level_time.y;
+    moved += vec2<f32>(-push.x, push.y) * water.texture.x;
+    let albedo = textureSample(water_texture, water_texture_sampler, moved * 1.5).rgb;
+
+    // Seed 003 showed the texture as it was. Lit by the sun through the
+    // waves' normal, with a highlight like the pictures' style's, the
+    // waves show in it too.
+    let n = normalize(in.normal);
+    let to_eye = normalize(globals.eye.xyz - in.world_position);
+    let sunlight = globals.sun.w * max(dot(n, globals.sun.xyz), 0.0);
+    var lit = albedo * (0.35 + 0.65 * sunlight);
+    let glint = reflect(-globals.sun.xyz, n);
+    lit += vec3<f32>(1.0, 0.95, 0.85) * pow(max(dot(glint, to_eye), 0.0), 160.0) * globals.sun.w;
+
+    let distance = length(globals.eye.xyz - in.world_position);
+    return vec4<f32>(mix(fog.colour.rgb, lit, visibility(distance)), 1.0);
+}
+// ANCHOR_END: fs_texture

@@ -131,10 +131,11 @@ fn tileable_fbm(u: f32, v: f32, salt: u32) -> f32 {
         .sum()
 }
 
-/// The water's textures, 256² and tileable, from one noise height field h:
-/// the DuDv map stores a distortion (du, dv) in red and green around 0.5;
-/// the normal map stores the surface normal of h with x in red, z in green
-/// and up in blue, each mapped from −1..1 to 0..1.
+/// The water's textures, 256² and tileable: the DuDv map stores a
+/// distortion (du, dv) in red and green around 0.5; the normal map stores
+/// the surface normal of a noise height field h with x in red, z in green
+/// and up in blue, each mapped from −1..1 to 0..1; the texture is seed
+/// 003's style's picture of water ([`water_colour`]).
 fn paint_water(dir: &Path) -> anyhow::Result<()> {
     const SIZE: u32 = 256;
     std::fs::create_dir_all(dir)?;
@@ -151,13 +152,71 @@ fn paint_water(dir: &Path) -> anyhow::Result<()> {
         let n = normalize([-dx * 12.0, 1.0, -dz * 12.0]);
         image::Rgb([n[0], n[2], n[1]].map(|c| ((c * 0.5 + 0.5) * 255.0).round() as u8))
     });
-    for (name, image) in [("dudv.png", dudv), ("normal.png", normal)] {
+    let texture = image::RgbImage::from_fn(SIZE, SIZE, |x, y| {
+        let colour = water_colour(x as f32 / SIZE as f32, y as f32 / SIZE as f32);
+        image::Rgb(colour.map(|c| (c.clamp(0.0, 1.0) * 255.0).round() as u8))
+    });
+    for (name, image) in [("dudv.png", dudv), ("normal.png", normal), ("texture.png", texture)] {
         let path = dir.join(name);
         image.save(&path).with_context(|| format!("cannot write {}", path.display()))?;
         println!("wrote {}", path.display());
     }
     Ok(())
 }
+
+/// The nearest and second-nearest distances from (x, y) to points
+/// scattered one per unit cell, the cells repeating every `period` (Worley's
+/// cellular noise, tileable): a cell's point comes from a hash of its index
+/// wrapped by the period, so the cells past the right edge hold the same
+/// points as those at the left edge.
+fn tileable_cells(x: f32, y: f32, period: i32, salt: u32) -> (f32, f32) {
+    let (cx, cy) = (x.floor() as i32, y.floor() as i32);
+    let (mut nearest, mut second) = (f32::MAX, f32::MAX);
+    for dy in -1..=1 {
+        for dx in -1..=1 {
+            let (ix, iy) = (cx + dx, cy + dy);
+            let (wx, wy) = (ix.rem_euclid(period) as u32, iy.rem_euclid(period) as u32);
+            let key = wx.wrapping_mul(73_856_093) ^ wy.wrapping_mul(19_349_663) ^ salt.wrapping_mul(83_492_791);
+            let (px, py) = (ix as f32 + hash(key), iy as f32 + hash(key ^ 0x9e37_79b9));
+            let d = ((px - x) * (px - x) + (py - y) * (py - y)).sqrt();
+            if d < nearest {
+                (nearest, second) = (d, nearest);
+            } else if d < second {
+                second = d;
+            }
+        }
+    }
+    (nearest, second)
+}
+
+// ANCHOR: water_texture
+/// Seed 003's look, our own picture of it: the colour (sRGB, 0..1) of the
+/// tiled water texture at (u, v) in 0..1. Deep teal-blue, lighter where a
+/// slow noise field rises, with a net of bright lines where the light
+/// gathers under the ripples (caustics: the edges between Worley cells,
+/// where the nearest two points are nearly as near, bent by noise so the
+/// net is not a tiling of polygons). Green and blue matter beyond their
+/// colour: the shader offsets its second read by them, so they carry
+/// different fields: green mostly the caustic net, blue a noise field of
+/// its own. Everything here repeats with period 1 in u and v, so the
+/// texture tiles.
+fn water_colour(u: f32, v: f32) -> [f32; 3] {
+    // Worley cells across the texture (and so across a tile).
+    const CELLS: i32 = 6;
+    let depth = tileable_fbm(u, v, 4);
+    let tint = tileable_fbm(u, v, 5);
+    // Bend the cells by noise that tiles too: whole periods still line up.
+    let (bend_u, bend_v) = (tileable_fbm(u, v, 6) - 0.5, tileable_fbm(u, v, 7) - 0.5);
+    let (nearest, second) =
+        tileable_cells((u + 0.25 * bend_u) * CELLS as f32, (v + 0.25 * bend_v) * CELLS as f32, CELLS, 8);
+    let caustic = 1.0 - smoothstep(0.0, 0.14, second - nearest);
+    let base = mix([0.05, 0.24, 0.36], [0.12, 0.38, 0.40], smoothstep(0.25, 0.75, depth));
+    // The caustic light is mostly red and green, and blue follows its own
+    // field: green and blue then correlate by about 0.4, not 1.
+    let (light, blue) = ([0.28, 0.32, 0.12].map(|c| c * caustic), 0.45 * (tint - 0.5));
+    [base[0] + light[0], base[1] + light[1], base[2] + light[2] + blue]
+}
+// ANCHOR_END: water_texture
 
 fn paint_cubemap(dir: &Path, paint: impl Fn([f32; 3], u32) -> [f32; 3]) -> anyhow::Result<()> {
     std::fs::create_dir_all(dir)?;
@@ -190,6 +249,7 @@ same bytes.
 | `skybox/night/{px,nx,py,ny,pz,nz}.png` | star field, 6 × 256² cube faces | near black, stars where a per-pixel hash exceeds 0.9967, all the way round |
 | `water/dudv.png` | DuDv distortion map, 256², tileable | two independent tileable value-noise fields (3 octaves, periods 4, 8, 16) in red and green, 0.5 meaning no distortion |
 | `water/normal.png` | water normal map, 256², tileable | normals of a third tileable noise field by wrapped central differences; red = x, green = z, blue = up |
+| `water/texture.png` | chapter 07's seed-003 style: a water picture, 256², sRGB, tileable | deep teal-blue shaded by tileable value noise, a net of bright caustic lines (edges of tileable Worley cells, period 6, bent by noise), blue shifted by a noise field of its own so that green and blue, which the shader offsets its second read by, differ |
 ";
 
 const PROVENANCE_NOTES: &str = "
@@ -263,8 +323,36 @@ mod tests {
         }
         std::fs::remove_dir_all(fresh).unwrap();
         assert_eq!(
-            checked, 48,
-            "12 cube faces, 2 water maps, 6 × 2 textures, 7 models with their MTL, 3 parallax layers, 4 gradients, and the README"
+            checked, 49,
+            "12 cube faces, 3 water maps, 6 × 2 textures, 7 models with their MTL, 3 parallax layers, 4 gradients, and the README"
         );
+    }
+
+    /// The water texture tiles: across its edges (last column to first,
+    /// last row to first) it changes no more than between neighbouring
+    /// texels inside it. And its green and blue, which chapter 07 offsets
+    /// its second read by, are not one field twice: a texture whose green
+    /// followed its blue would push every texel along one diagonal only.
+    #[test]
+    fn the_water_texture_tiles_and_its_green_and_blue_differ() {
+        const SIZE: usize = 256;
+        let at = |x: usize, y: usize| water_colour(x as f32 / SIZE as f32, y as f32 / SIZE as f32);
+        let step = |a: [f32; 3], b: [f32; 3]| (0..3).map(|c| (a[c] - b[c]).abs()).fold(0.0, f32::max);
+        let inside = (0..SIZE - 1)
+            .flat_map(|y| (0..SIZE - 1).map(move |x| (x, y)))
+            .map(|(x, y)| step(at(x, y), at(x + 1, y)).max(step(at(x, y), at(x, y + 1))))
+            .fold(0.0, f32::max);
+        let across =
+            (0..SIZE).map(|i| step(at(SIZE - 1, i), at(0, i)).max(step(at(i, SIZE - 1), at(i, 0)))).fold(0.0, f32::max);
+        assert!(across <= inside, "across the edges {across}, inside {inside}");
+        let texels: Vec<[f32; 3]> = (0..SIZE * SIZE).map(|i| at(i % SIZE, i / SIZE)).collect();
+        let mean = |c: usize| texels.iter().map(|t| t[c]).sum::<f32>() / texels.len() as f32;
+        let (green, blue) = (mean(1), mean(2));
+        let covariance = |a: usize, ma: f32, b: usize, mb: f32| {
+            texels.iter().map(|t| (t[a] - ma) * (t[b] - mb)).sum::<f32>() / texels.len() as f32
+        };
+        let correlation =
+            covariance(1, green, 2, blue) / (covariance(1, green, 1, green) * covariance(2, blue, 2, blue)).sqrt();
+        assert!(correlation < 0.6, "green and blue correlate by {correlation}");
     }
 }

@@ -1,13 +1,15 @@
 //! The chapter itself: what each view decides, the views and their
-//! cameras, the overlay's controls, and `impl Chapter`, which composes
-//! chapter 05's plain, chapter 06's sky and the water: three pictures of
-//! the scene a frame, then the water reading two of them.
+//! cameras, the overlay's controls (the water's style, each wave, fly or
+//! orbit camera), and `impl Chapter`, which composes chapter 05's plain,
+//! chapter 06's sky and the water: three pictures of the scene a frame,
+//! then the water reading two of them.
 
 use common::chapter::scene_pass;
-use common::glam::{Vec2, Vec4};
+use common::glam::{Vec2, Vec3, Vec4};
 use common::texture::depth_view;
 use common::{
-    Camera, Chapter, FlyController, Frame, Gpu, Input, PassTimer, Target, View, ViewRow, anyhow, egui, views_of, wgpu,
+    Camera, Chapter, FlyController, Frame, Gpu, Input, Orbit, PassTimer, Target, View, ViewRow, anyhow, egui, views_of,
+    wgpu,
 };
 use fog::FogSettings;
 use instancing::{MarsPlain, Mode, Setup, plain_camera};
@@ -15,8 +17,9 @@ use skybox::{Sky, SkyViewpoint, sun_at};
 use terrain::heightfield::HeightField;
 use terrain::{KEEP_ALL, SKY, Viewpoint};
 
-use crate::lake::{find_lake, lake_camera, mirrored};
-use crate::water_renderer::{WaterRenderer, WaterSettings};
+use crate::lake::{find_lake, lake_camera, mirrored, orbit_point};
+use crate::water_renderer::{Style, WaterRenderer, WaterSettings};
+use crate::waves::WaveSet;
 
 /// What reaches the screen.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -59,7 +62,7 @@ impl CameraPreset {
 }
 
 /// Every view, with the settings it applies and, for a preset, its camera.
-pub const VIEW_TABLE: [ViewRow<Settings, CameraPreset>; 5] = [
+pub const VIEW_TABLE: [ViewRow<Settings, CameraPreset>; 6] = [
     ViewRow::mode(
         "default",
         "the lake: reflection and refraction mixed by Fresnel, ripples and waves",
@@ -86,7 +89,41 @@ pub const VIEW_TABLE: [ViewRow<Settings, CameraPreset>; 5] = [
         "reflection and refraction half and half at every angle",
         Settings { water: WaterSettings { fresnel: false, ..WaterSettings::DEFAULT }, ..Settings::DEFAULT },
     ),
+    ViewRow::preset(
+        "textured-waves",
+        "seed 003's style: a tiled water texture pushed aside by its own colours, on the waves three times as strong",
+        Settings {
+            water: WaterSettings { style: Style::Texture, wave_strength: 3.0, ..WaterSettings::DEFAULT },
+            ..Settings::DEFAULT
+        },
+        CameraPreset::CloseToWater,
+    ),
 ];
+
+// ANCHOR: steering
+/// How the mouse moves the camera.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Steering {
+    /// Chapter 02's fly camera: keys move, dragging looks round.
+    Fly,
+    /// `common::Orbit`: dragging turns round a point on the lake, the wheel zooms.
+    Orbit,
+}
+
+/// The orbit round the lake: from level with the water (never below it,
+/// nor lifting a camera that takes over low over the water) to nearly
+/// overhead, 3 m to 1.5 km from the point.
+const LAKE_ORBIT: Orbit = Orbit::new(0.0, 0.5, 50.0).within((0.0, 1.5), (3.0, 1500.0));
+
+/// The orbit while it steers the camera: the orbit, the point on the lake
+/// it turns round, and where it last put the camera (position, yaw, pitch).
+#[derive(Clone, Copy, Debug, PartialEq)]
+struct Orbiting {
+    orbit: Orbit,
+    point: Vec3,
+    placed: (Vec3, f32, f32),
+}
+// ANCHOR_END: steering
 
 /// The uniforms for drawing the plain and the sky from one camera. The
 /// frame draws three pictures, each from its own camera, so it keeps three
@@ -110,6 +147,10 @@ pub struct WaterChapter {
     pub water: WaterRenderer,
     pub camera: Camera,
     pub controller: FlyController,
+    /// Fly (the start) or orbit. Not a setting of the views: it moves the
+    /// camera in the window, and never changes what a view draws.
+    pub steering: Steering,
+    orbiting: Option<Orbiting>,
     pub fog: FogSettings,
     pub rocks: Setup,
     pub settings: Settings,
@@ -150,7 +191,42 @@ impl WaterChapter {
         self.sky.draw(&mut pass, sky);
     }
     // ANCHOR_END: picture
+
+    // ANCHOR: orbit
+    /// The orbit camera's frame: it takes the camera over where it is,
+    /// turning round the point of the lake it looks at (and again whenever
+    /// something else moved it: a preset, "reset camera"), then the drag
+    /// turns it and the wheel zooms. The camera keeps its optics.
+    fn steer_orbit(&mut self, input: &Input) {
+        let camera = self.camera;
+        let here = (camera.position, camera.yaw, camera.pitch);
+        let mut orbiting = match self.orbiting {
+            Some(orbiting) if orbiting.placed == here => orbiting,
+            _ => {
+                let point = orbit_point(&camera, self.level, self.centre, self.size);
+                Orbiting { orbit: LAKE_ORBIT.through(camera.position, point), point, placed: here }
+            }
+        };
+        orbiting.orbit.steer(input.look, input.scroll);
+        let placed = orbiting.orbit.camera(orbiting.point, camera.aspect);
+        self.camera = Camera { position: placed.position, yaw: placed.yaw, pitch: placed.pitch, ..camera };
+        orbiting.placed = (placed.position, placed.yaw, placed.pitch);
+        self.orbiting = Some(orbiting);
+    }
+    // ANCHOR_END: orbit
 }
+
+/// The fly camera's keys, then the orbit camera's mouse.
+const STEERING_KEYS: [(&str, &str); 8] = [
+    FlyController::KEYS[0],
+    FlyController::KEYS[1],
+    FlyController::KEYS[2],
+    FlyController::KEYS[3],
+    FlyController::KEYS[4],
+    FlyController::KEYS[5],
+    ("drag (orbit camera)", "turn round the point on the lake"),
+    ("scroll (orbit camera)", "nearer or further"),
+];
 
 impl Chapter for WaterChapter {
     const NAME: &'static str = env!("CARGO_PKG_NAME");
@@ -160,7 +236,7 @@ impl Chapter for WaterChapter {
     const TITLE: &'static str = "07 · Water";
     const VIEWS: &'static [View] = &views_of(&VIEW_TABLE);
     const SNAPSHOT_TIME: f32 = 0.0;
-    const KEYS: &'static [(&'static str, &'static str)] = FlyController::KEYS;
+    const KEYS: &'static [(&'static str, &'static str)] = &STEERING_KEYS;
     const BENCH_FRAMES: u32 = 5;
 
     /// Clip distances where the adapter has them; a fragment discard otherwise.
@@ -192,6 +268,8 @@ impl Chapter for WaterChapter {
             water,
             camera,
             controller: FlyController { speed: 10.0, ..Default::default() },
+            steering: Steering::Fly,
+            orbiting: None,
             fog: FogSettings::HAZE,
             rocks: Setup { rocks: 200_000, mode: Mode::Instanced, terrain: true },
             settings,
@@ -230,7 +308,10 @@ impl Chapter for WaterChapter {
     }
 
     fn update(&mut self, input: &Input, dt: f32) {
-        self.controller.update(&mut self.camera, input, dt);
+        match self.steering {
+            Steering::Fly => self.controller.update(&mut self.camera, input, dt),
+            Steering::Orbit => self.steer_orbit(input),
+        }
     }
 
     // ANCHOR: render
@@ -241,10 +322,12 @@ impl Chapter for WaterChapter {
         self.plain.set_air(&gpu.queue, self.fog, self.sky.fog_colour(phase));
         let camera = self.camera;
         let bias = 0.5; // a little overlap, so that waves do not open gaps at the shore
-        let display = self.settings.display;
+        let (display, style) = (self.settings.display, self.settings.water.style);
+        // Seed 003's style reads no pictures: then only a view of one draws it.
+        let pictures = style == Style::Pictures || display != Display::Lake;
         let (reflection, refraction) = (self.water.reflection.clone(), self.water.refraction.clone());
         // 1. The reflection: from below the water, keeping what is above it.
-        if display != Display::Refraction {
+        if pictures && display != Display::Refraction {
             let above = Vec4::new(0.0, 1.0, 0.0, -self.level + bias);
             let targets = (&reflection.colour, &reflection.depth);
             let mirror = mirrored(&camera, self.level);
@@ -260,7 +343,7 @@ impl Chapter for WaterChapter {
             );
         }
         // 2. The refraction: from the camera, keeping what is below the water.
-        if display != Display::Reflection {
+        if pictures && display != Display::Reflection {
             let below = Vec4::new(0.0, -1.0, 0.0, self.level + bias);
             let targets = (&refraction.colour, &refraction.depth);
             self.take_picture(
@@ -285,7 +368,7 @@ impl Chapter for WaterChapter {
         let targets = (frame.target, &depth);
         self.take_picture(gpu, frame.encoder, frame.timer, ("plain and sky", MAIN), targets, &camera, KEEP_ALL, phase);
 
-        // 4. The water on top, reading both pictures.
+        // 4. The water on top, reading both pictures (or, in seed 003's style, its texture).
         self.water.aim(&gpu.queue, self.level, frame.time, &camera, self.settings.water);
         let mut pass = frame.encoder.begin_render_pass(&wgpu::RenderPassDescriptor {
             label: Some("water surface"),
@@ -303,18 +386,27 @@ impl Chapter for WaterChapter {
             timestamp_writes: frame.timer.pass("water surface"),
             ..Default::default()
         });
-        self.water.draw(&mut pass, &self.plain, &self.eyes[MAIN].ground);
+        self.water.draw(&mut pass, &self.plain, &self.eyes[MAIN].ground, style);
     }
     // ANCHOR_END: render
 
     fn ui(&mut self, ui: &mut egui::Ui) {
         let s = &mut self.settings.water;
+        ui.horizontal(|ui| {
+            ui.label("surface:");
+            ui.radio_value(&mut s.style, Style::Pictures, "reflection and refraction");
+            ui.radio_value(&mut s.style, Style::Texture, "seed 003's texture");
+        });
+        if s.style == Style::Texture {
+            ui.add(egui::Slider::new(&mut s.texture_push, 0.0..=0.6).text("texture pushed by its colours (tiles)"));
+        }
         ui.add(egui::Slider::new(&mut s.resolution, 0.25..=1.0).text("reflection/refraction resolution"));
         let mut waves_on = s.wave_strength > 0.0;
         if ui.checkbox(&mut waves_on, "waves (off: the flat surface, textures only)").changed() {
             s.wave_strength = if waves_on { 1.0 } else { 0.0 };
         }
         ui.add(egui::Slider::new(&mut s.wave_strength, 0.0..=4.0).text("wave strength"));
+        egui::CollapsingHeader::new("each wave").show(ui, |ui| edit_waves(ui, &mut s.waves));
         ui.add(egui::Slider::new(&mut s.ripples, 0.0..=0.05).text("ripple distortion"));
         ui.checkbox(&mut s.fresnel, "Fresnel");
         let (width, height) = self.water.pictures_size();
@@ -324,11 +416,126 @@ impl Chapter for WaterChapter {
         ui.add(egui::Slider::new(&mut self.fog.density, 0.0..=0.01).logarithmic(true).text("fog density"));
         let max = self.plain.rocks_placed();
         ui.add(egui::Slider::new(&mut self.rocks.rocks, 0..=max).logarithmic(true).text("rocks"));
-        ui.add(egui::Slider::new(&mut self.controller.speed, 2.0..=100.0).logarithmic(true).text("speed (m/s)"));
+        ui.horizontal(|ui| {
+            ui.label("camera:");
+            ui.radio_value(&mut self.steering, Steering::Fly, "fly");
+            ui.radio_value(&mut self.steering, Steering::Orbit, "orbit a point on the lake");
+        });
+        if self.steering == Steering::Fly {
+            ui.add(egui::Slider::new(&mut self.controller.speed, 2.0..=100.0).logarithmic(true).text("speed (m/s)"));
+        }
     }
 
     fn stats(&mut self, _gpu: &Gpu) -> String {
         let (width, height) = self.water.pictures_size();
         format!("pictures {width}×{height}; {} rocks in each picture", self.rocks.rocks.min(self.plain.rocks_placed()))
+    }
+}
+
+// ANCHOR: edit_waves
+/// The overlay's controls for each of the eight waves, and a button that
+/// puts back the lake's own. An edit goes through [`WaveSet::set`], which
+/// refuses a wave the shader cannot draw (the sliders' ranges keep to
+/// what it can); the view chosen next puts the lake's waves back.
+fn edit_waves(ui: &mut egui::Ui, waves: &mut WaveSet) {
+    for (index, wave) in waves.waves().into_iter().enumerate() {
+        egui::CollapsingHeader::new(format!("wave {}", index + 1)).show(ui, |ui| {
+            let mut edited = wave;
+            let mut heading = wave.heading_degrees();
+            let mut changed =
+                ui.add(egui::Slider::new(&mut edited.amplitude, 0.0..=1.0).text("amplitude (m)")).changed();
+            changed |= ui
+                .add(egui::Slider::new(&mut edited.wavelength, 1.0..=100.0).logarithmic(true).text("wavelength (m)"))
+                .changed();
+            changed |= ui.add(egui::Slider::new(&mut edited.speed, 0.0..=12.0).text("speed (m/s)")).changed();
+            if ui.add(egui::Slider::new(&mut heading, -180.0..=180.0).text("heading (° from east to north)")).changed()
+            {
+                edited = edited.heading(heading);
+                changed = true;
+            }
+            if changed && let Err(reason) = waves.set(index, edited) {
+                ui.colored_label(egui::Color32::RED, reason);
+            }
+        });
+    }
+    if ui.add_enabled(*waves != WaveSet::Lake, egui::Button::new("reset the waves")).clicked() {
+        *waves = WaveSet::Lake;
+    }
+}
+// ANCHOR_END: edit_waves
+
+#[cfg(test)]
+mod tests {
+    use common::chapter::view_index;
+    use common::headless::{OFFSCREEN_FORMAT, capture};
+
+    use super::*;
+    use crate::waves::{Wave, lake_waves};
+
+    /// The overlay's controls on one live chapter (making one takes
+    /// seconds: the terrain), small and without rocks.
+    #[test]
+    fn the_overlays_controls() {
+        let gpu = Gpu::headless(WaterChapter::gpu_needs()).unwrap();
+        let target = Target { format: OFFSCREEN_FORMAT, width: 160, height: 90 };
+        let mut chapter = common::chapter::create::<WaterChapter>(&gpu, target, &Default::default()).unwrap();
+        chapter.rocks.rocks = 0; // they cost time and add nothing here
+        edits_reach_the_picture_and_choosing_the_view_takes_them_back(&gpu, &mut chapter, target);
+        the_orbit_takes_over_where_the_camera_is_and_turns_round_the_lake(&mut chapter);
+    }
+
+    /// The overlay's edits reach the picture through the settings, and
+    /// choosing a view takes them back, byte for byte: a higher first wave
+    /// and a texture that no longer pushes itself both change the water.
+    fn edits_reach_the_picture_and_choosing_the_view_takes_them_back(
+        gpu: &Gpu,
+        chapter: &mut WaterChapter,
+        target: Target,
+    ) {
+        let view = view_index::<WaterChapter>("textured-waves").unwrap();
+        let picture = |chapter: &mut WaterChapter| capture(gpu, chapter, target, 0.0, view).unwrap();
+        let changed = |a: &common::image::RgbaImage, b: &common::image::RgbaImage| {
+            a.pixels().zip(b.pixels()).filter(|(p, q)| p != q).count()
+        };
+        chapter.select_view(view);
+        let lake = picture(chapter);
+        chapter.settings.water.waves.set(0, Wave { amplitude: 0.6, ..lake_waves()[0] }).unwrap();
+        let higher = picture(chapter);
+        chapter.select_view(view);
+        let again = picture(chapter);
+        chapter.settings.water.texture_push = 0.0;
+        let still = picture(chapter);
+        let (by_wave, by_push) = (changed(&lake, &higher), changed(&lake, &still));
+        println!("of {} pixels, the higher wave changes {by_wave}, no push {by_push}", 160 * 90);
+        assert!(by_wave > 1000 && by_push > 1000, "{by_wave}, {by_push}");
+        assert!(again == lake, "after choosing the view again, {} pixels differ", changed(&lake, &again));
+    }
+
+    /// The orbit camera takes over where the camera is, looking at the
+    /// point of the lake in the middle of its view; a drag turns it round
+    /// that point (down to the water's level, no further) and the wheel
+    /// brings it nearer; after a preset has moved the camera, it takes
+    /// over from there.
+    fn the_orbit_takes_over_where_the_camera_is_and_turns_round_the_lake(chapter: &mut WaterChapter) {
+        chapter.select_view(0);
+        chapter.reset_camera(0);
+        chapter.steering = Steering::Orbit;
+        let start = chapter.camera;
+        let point = orbit_point(&start, chapter.level, chapter.centre, chapter.size);
+        chapter.update(&Input::default(), 0.02);
+        assert!(chapter.camera.position.distance(start.position) < 1e-3, "{:?} from {start:?}", chapter.camera);
+        assert!(chapter.camera.forward().distance((point - start.position).normalize()) < 1e-4);
+        let mut drag = Input::default();
+        (drag.look, drag.scroll) = (Vec2::new(120.0, -40.0), 2.0);
+        chapter.update(&drag, 0.02);
+        let distance = chapter.camera.position.distance(point);
+        assert!((distance - 0.81 * start.position.distance(point)).abs() < 0.01, "{distance} m from the point");
+        assert!(chapter.camera.forward().distance((point - chapter.camera.position).normalize()) < 1e-4);
+        // The drag would have taken the eye under the water: it stops at its level.
+        assert!((chapter.camera.position.y - chapter.level).abs() < 1e-3, "{}", chapter.camera.position.y);
+        chapter.select_view(view_index::<WaterChapter>("waves").unwrap());
+        let preset = chapter.camera;
+        chapter.update(&Input::default(), 0.02);
+        assert!(chapter.camera.position.distance(preset.position) < 1e-3, "taken over at the preset's place");
     }
 }

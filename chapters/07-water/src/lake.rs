@@ -1,8 +1,9 @@
-//! Where the lake is on the plain, the camera at its shore, and the camera
-//! mirrored in its water, which takes the reflection picture.
+//! Where the lake is on the plain, the camera at its shore, the camera
+//! mirrored in its water, which takes the reflection picture, and the
+//! point on the lake an orbit camera turns round.
 
 use common::Camera;
-use common::glam::Vec2;
+use common::glam::{Vec2, Vec3};
 use terrain::heightfield::HeightField;
 
 // ANCHOR: lake
@@ -41,3 +42,37 @@ pub fn mirrored(camera: &Camera, level: f32) -> Camera {
     mirror
 }
 // ANCHOR_END: lake
+
+/// The point an orbit camera taking over from `camera` turns round: where
+/// the middle of its view meets the water, or the lake's centre when that
+/// is off the lake, behind the camera, or nowhere (looking level or up).
+pub fn orbit_point(camera: &Camera, level: f32, centre: Vec2, size: f32) -> Vec3 {
+    let middle = Vec3::new(centre.x, level, centre.y);
+    let forward = camera.forward();
+    // How far along the view the water is; negative or infinite when it is not ahead.
+    let along = (level - camera.position.y) / forward.y;
+    let hit = camera.position + forward * along;
+    let on_lake = (hit.x - centre.x).abs() <= size / 2.0 && (hit.z - centre.y).abs() <= size / 2.0;
+    if along > 0.0 && hit.is_finite() && on_lake { hit } else { middle }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn the_orbit_turns_round_the_water_in_view_or_the_lake_centre() {
+        let (level, centre, size) = (10.0, Vec2::new(100.0, -50.0), 200.0);
+        let looking_down = Camera::looking_at(Vec3::new(100.0, 30.0, 20.0), Vec3::new(100.0, 10.0, -20.0), 1.5);
+        let point = orbit_point(&looking_down, level, centre, size);
+        assert!(point.distance(Vec3::new(100.0, 10.0, -20.0)) < 1e-3, "{point}");
+        let middle = Vec3::new(100.0, 10.0, -50.0);
+        let looking_up = Camera::looking_at(Vec3::new(100.0, 30.0, 20.0), Vec3::new(100.0, 40.0, -20.0), 1.5);
+        let level_view = Camera::looking_at(Vec3::new(100.0, 10.0, 20.0), Vec3::new(100.0, 10.0, -20.0), 1.5);
+        let off_the_lake = Camera::looking_at(Vec3::new(500.0, 30.0, 20.0), Vec3::new(520.0, 10.0, 20.0), 1.5);
+        let under_water = Camera::looking_at(Vec3::new(100.0, 5.0, 20.0), Vec3::new(100.0, 0.0, -20.0), 1.5);
+        for camera in [looking_up, level_view, off_the_lake, under_water] {
+            assert_eq!(orbit_point(&camera, level, centre, size), middle, "{camera:?}");
+        }
+    }
+}

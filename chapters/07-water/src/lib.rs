@@ -1,14 +1,17 @@
 //! Chapter 07: water. A lake on the Mars plain, drawn from two extra
 //! pictures of the scene each frame (one reflected in the water, one seen
 //! through it), mixed by the Fresnel effect, rippled by a DuDv map, lit
-//! by a normal map, and moved by eight sine waves. The Mars scene, complete.
+//! by a normal map, and moved by eight sine waves, each editable live. Or
+//! drawn in seed 003's style: a tiled water texture, scrolled and pushed
+//! aside by its own colours. The Mars scene, complete, flown over or
+//! orbited.
 //!
 //! The modules below come in the order the book explains them; the
 //! re-exports after them are the pieces other crates use.
 
 // Where the lake is, the camera at its shore, and the mirrored camera.
 pub mod lake;
-// Geometric waves: a sum of sine waves, with analytic normals.
+// Geometric waves: a sum of sine waves, with analytic normals, and the set the overlay edits.
 pub mod waves;
 // The water: reflection and refraction pictures, and the surface reading them.
 pub mod water_renderer;
@@ -18,6 +21,7 @@ pub mod demo;
 #[cfg(test)]
 mod solutions;
 
-pub use demo::{CameraPreset, Display, Settings, VIEW_TABLE, WaterChapter};
-pub use lake::{find_lake, lake_camera, mirrored};
-pub use water_renderer::{Picture, WaterRenderer, WaterSettings};
+pub use demo::{CameraPreset, Display, Settings, Steering, VIEW_TABLE, WaterChapter};
+pub use lake::{find_lake, lake_camera, mirrored, orbit_point};
+pub use water_renderer::{Picture, Style, WaterRenderer, WaterSettings};
+pub use waves::WaveSet;

@@ -1,6 +1,7 @@
 //! Geometric waves: a sum of directional sine waves, with normals worked
-//! out analytically. The vertex shader evaluates the same sums (water.wgsl);
-//! this CPU copy is what the tests check.
+//! out analytically, and the lake's eight as a set the overlay edits one by
+//! one. The vertex shader evaluates the same sums (water.wgsl); this CPU
+//! copy is what the tests check.
 
 use std::f32::consts::TAU;
 
@@ -77,6 +78,67 @@ pub fn lake_waves() -> [Wave; 8] {
 }
 // ANCHOR_END: lake_waves
 
+// ANCHOR: wave_set
+/// The eight waves a lake moves by: the lake's own ([`lake_waves`]) until
+/// one is edited. A view chooses `Lake`, so choosing a view puts back the
+/// lake's own waves exactly, whatever was edited before.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum WaveSet {
+    /// [`lake_waves`], unchanged.
+    Lake,
+    /// The lake's waves as the overlay left them.
+    Edited([Wave; 8]),
+}
+
+impl WaveSet {
+    /// The waves themselves.
+    pub fn waves(&self) -> [Wave; 8] {
+        match self {
+            Self::Lake => lake_waves(),
+            Self::Edited(waves) => *waves,
+        }
+    }
+
+    /// Replaces wave `index` with `wave`. A wave the shader cannot draw
+    /// (no such index, a wavelength that is not positive, a direction
+    /// that is not a unit vector, anything not finite) is refused with
+    /// the reason, and nothing changes.
+    pub fn set(&mut self, index: usize, wave: Wave) -> Result<(), String> {
+        let mut waves = self.waves();
+        let Some(slot) = waves.get_mut(index) else {
+            return Err(format!("there is no wave {index}: the lake has waves 0 to 7"));
+        };
+        let numbers = [wave.direction.x, wave.direction.y, wave.amplitude, wave.wavelength, wave.speed];
+        if numbers.iter().any(|n| !n.is_finite()) {
+            return Err(format!("wave {index}: every number must be finite, not {wave:?}"));
+        }
+        if wave.wavelength <= 0.0 {
+            return Err(format!("wave {index}: the wavelength must be positive, not {} m", wave.wavelength));
+        }
+        if (wave.direction.length() - 1.0).abs() > 1e-3 {
+            return Err(format!("wave {index}: the direction must be a unit vector, not {}", wave.direction));
+        }
+        *slot = wave;
+        *self = Self::Edited(waves);
+        Ok(())
+    }
+}
+
+impl Wave {
+    /// The direction the crests travel, in degrees from +x (east) towards
+    /// −z (north): how the overlay shows it.
+    pub fn heading_degrees(&self) -> f32 {
+        (-self.direction.y).atan2(self.direction.x).to_degrees()
+    }
+
+    /// The same wave travelling towards `degrees` (as [`Wave::heading_degrees`]).
+    pub fn heading(self, degrees: f32) -> Self {
+        let (sin, cos) = degrees.to_radians().sin_cos();
+        Self { direction: Vec2::new(cos, -sin), ..self }
+    }
+}
+// ANCHOR_END: wave_set
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -111,6 +173,66 @@ mod tests {
         assert!((height(&waves, x, 0.0, 0.0) - height(&waves, x + wave.speed * t, 0.0, t)).abs() < 1e-4);
         // And nothing changes across it.
         assert!((height(&waves, x, 0.0, 0.0) - height(&waves, x, 7.0, 0.0)).abs() < 1e-6);
+    }
+
+    /// What the overlay does to a wave, through the same settings: an
+    /// edit moves the surface the CPU computes, and choosing a view
+    /// (`WaveSet::Lake`) puts back the lake's own waves, bit for bit.
+    #[test]
+    fn editing_a_wave_moves_the_surface_and_reset_restores_it_exactly() {
+        let points: Vec<(f32, f32, f32)> =
+            (0..50).map(|i| (i as f32 * 2.3 - 40.0, i as f32 * 1.1 - 20.0, i as f32 * 0.2)).collect();
+        let heights =
+            |set: &WaveSet| -> Vec<f32> { points.iter().map(|&(x, z, t)| height(&set.waves(), x, z, t)).collect() };
+        let mut set = WaveSet::Lake;
+        let before = heights(&set);
+        for (index, edit) in [
+            (0, Wave { amplitude: 0.4, ..lake_waves()[0] }),
+            (3, Wave { wavelength: 30.0, ..lake_waves()[3] }),
+            (5, Wave { speed: 0.0, ..lake_waves()[5] }),
+            (7, lake_waves()[7].heading(-120.0)),
+        ] {
+            let mut edited = WaveSet::Lake;
+            edited.set(index, edit).unwrap();
+            assert_eq!(edited.waves()[index], edit);
+            assert_eq!(edited.waves().iter().filter(|w| lake_waves().contains(w)).count(), 7, "one wave changed");
+            let after = heights(&edited);
+            let moved = before.iter().zip(&after).filter(|(a, b)| (*a - *b).abs() > 1e-4).count();
+            assert!(moved > 30, "editing wave {index} moved {moved} of 50 points");
+            set.set(index, edit).unwrap();
+        }
+        assert_ne!(heights(&set), before);
+        set = WaveSet::Lake;
+        assert_eq!(set.waves(), lake_waves());
+        let restored = heights(&set);
+        assert!(restored.iter().zip(&before).all(|(a, b)| a.to_bits() == b.to_bits()), "reset is exact");
+    }
+
+    #[test]
+    fn a_wave_the_shader_cannot_draw_is_refused() {
+        let mut set = WaveSet::Lake;
+        let wave = lake_waves()[2];
+        let refused = [
+            (8, wave),
+            (2, Wave { wavelength: 0.0, ..wave }),
+            (2, Wave { amplitude: f32::NAN, ..wave }),
+            (2, Wave { direction: Vec2::new(3.0, 0.0), ..wave }),
+        ];
+        for (index, bad) in refused {
+            let error = set.set(index, bad).unwrap_err();
+            assert!(error.contains("wave"), "{error}");
+        }
+        assert_eq!(set, WaveSet::Lake, "nothing changed");
+    }
+
+    #[test]
+    fn heading_round_trips() {
+        for wave in lake_waves() {
+            let turned = wave.heading(wave.heading_degrees());
+            assert!(turned.direction.distance(wave.direction) < 1e-5);
+        }
+        let north = Wave::deep_water(Vec2::X, 0.1, 10.0).heading(90.0);
+        assert!(north.direction.distance(Vec2::new(0.0, -1.0)) < 1e-6);
     }
 
     #[test]

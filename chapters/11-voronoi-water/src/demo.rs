@@ -4,9 +4,9 @@
 //! sky and islands with chapter 08's lights and post chain, chapter 09's
 //! boat and chapter 10's shadow map into a frame.
 
-use common::glam::{Vec2, Vec3};
+use common::glam::Vec3;
 use common::{
-    Camera, Chapter, Frame, Gpu, Input, Preparation, Target, View, ViewRow, anyhow, egui, views_of, wgpu,
+    Camera, Chapter, Frame, Gpu, Input, Orbit, Preparation, Target, View, ViewRow, anyhow, egui, views_of, wgpu,
     winit::keyboard::KeyCode,
 };
 use lighting::bloom::BloomSettings;
@@ -130,12 +130,12 @@ pub const VIEW_TABLE: [ViewRow<Settings, CameraPreset>; 24] = [
 ];
 
 /// Where a preset puts the orbit camera; a mode leaves it, and "reset
-/// camera" takes it back to [`Orbit::DEFAULT`].
+/// camera" takes it back to [`SUNSET_ORBIT`].
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum CameraPreset {
-    /// [`Orbit::DEFAULT`]: behind the boat, into the sunset.
+    /// [`SUNSET_ORBIT`]: behind the boat, into the sunset.
     Sunset,
-    /// [`Orbit::HIGH`]: high over the boat, to see the grid.
+    /// [`HIGH_ORBIT`]: high over the boat, to see the grid.
     High,
 }
 // ANCHOR_END: views
@@ -215,36 +215,17 @@ impl Settings {
 }
 
 // ANCHOR: orbit
-/// The camera circles the boat: `yaw` around it (0 looks towards −z),
-/// `pitch` down onto it, `distance` away.
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub struct Orbit {
-    pub yaw: f32,
-    pub pitch: f32,
-    pub distance: f32,
-}
+/// The camera circles the boat (`common::Orbit`): from just above the
+/// water to nearly overhead, 10 to 400 m away.
+const ROUND_THE_BOAT: Orbit = Orbit::new(1.95, 0.22, 26.0).within((0.02, 1.5), (10.0, 400.0));
+/// From behind the boat's left, looking west into the sunset.
+pub const SUNSET_ORBIT: Orbit = ROUND_THE_BOAT;
+/// High over the boat, to see the grid.
+pub const HIGH_ORBIT: Orbit = Orbit { pitch: 1.2, distance: 110.0, ..ROUND_THE_BOAT };
 
-impl Orbit {
-    /// From behind the boat's left, looking west into the sunset.
-    pub const DEFAULT: Orbit = Orbit { yaw: 1.95, pitch: 0.22, distance: 26.0 };
-    /// High over the boat, to see the grid.
-    pub const HIGH: Orbit = Orbit { yaw: 1.95, pitch: 1.2, distance: 110.0 };
-
-    /// The camera looking at a point 2 m above `target` from the orbit.
-    pub fn camera(&self, target: Vec3, aspect: f32) -> Camera {
-        let focus = target + Vec3::Y * 2.0;
-        let back = Vec3::new(self.yaw.sin() * self.pitch.cos(), self.pitch.sin(), self.yaw.cos() * self.pitch.cos());
-        Camera { near: 0.5, far: 2000.0, ..Camera::looking_at(focus + back * self.distance, focus, aspect) }
-    }
-
-    /// Mouse look turns the orbit; the wheel zooms, a tenth per line.
-    pub fn steer(&mut self, look: Vec2, scroll: f32) {
-        self.yaw -= look.x * 0.005;
-        self.pitch = (self.pitch + look.y * 0.005).clamp(0.02, 1.5);
-        if scroll.is_finite() {
-            self.distance = (self.distance * 0.9f32.powf(scroll)).clamp(10.0, 400.0);
-        }
-    }
+/// The camera looking at a point 2 m above `boat` from `orbit`.
+pub fn orbit_camera(orbit: &Orbit, boat: Vec3, aspect: f32) -> Camera {
+    Camera { near: 0.5, far: 2000.0, ..orbit.camera(boat + Vec3::Y * 2.0, aspect) }
 }
 // ANCHOR_END: orbit
 
@@ -425,7 +406,7 @@ impl Chapter for VoronoiWaterChapter {
         let post = PostChain::new(gpu, target)?;
         Ok(Self {
             settings,
-            orbit: Orbit::DEFAULT,
+            orbit: SUNSET_ORBIT,
             clock: DayClock::default(),
             play: Play::Course,
             last_time: 0.0,
@@ -460,8 +441,8 @@ impl Chapter for VoronoiWaterChapter {
 
     fn reset_camera(&mut self, view: usize) {
         self.orbit = match VIEW_TABLE[view].camera {
-            Some(CameraPreset::High) => Orbit::HIGH,
-            Some(CameraPreset::Sunset) | None => Orbit::DEFAULT,
+            Some(CameraPreset::High) => HIGH_ORBIT,
+            Some(CameraPreset::Sunset) | None => SUNSET_ORBIT,
         };
     }
 
@@ -521,7 +502,7 @@ impl Chapter for VoronoiWaterChapter {
         // The boat on the waves, the camera around it, the sun over it.
         let pose = self.pose_at(time);
         let boat_at = Vec3::new(pose.helm.position.x, pose.heave, pose.helm.position.y);
-        let camera = self.orbit.camera(boat_at, self.target.aspect());
+        let camera = orbit_camera(&self.orbit, boat_at, self.target.aspect());
         let towards_sun = atmosphere::sun_direction(self.clock.phase(&s, time));
         let day = self.atmosphere.gradients.daylight(towards_sun);
         self.atmosphere.write(gpu, &camera, towards_sun);

@@ -27,5 +27,6 @@ pub mod islands;
 pub mod demo;
 
 pub use demo::{
-    CameraPreset, DayClock, Orbit, Play, SNAPSHOT_TIME, Settings, Show, VIEW_TABLE, VoronoiWaterChapter, orders_from,
+    CameraPreset, DayClock, HIGH_ORBIT, Play, SNAPSHOT_TIME, SUNSET_ORBIT, Settings, Show, VIEW_TABLE,
+    VoronoiWaterChapter, orbit_camera, orders_from,
 };
