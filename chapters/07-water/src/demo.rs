@@ -8,12 +8,13 @@ use common::chapter::scene_pass;
 use common::glam::{Vec2, Vec3, Vec4};
 use common::texture::depth_view;
 use common::{
-    Camera, Chapter, FlyController, Frame, Gpu, Input, Orbit, PassTimer, Target, View, ViewRow, anyhow, egui, views_of,
-    wgpu,
+    Camera, Chapter, ChapterFlag, FlagValues, FlyController, Frame, Gpu, Input, Orbit, PassTimer, Target, View,
+    ViewRow, anyhow, egui, views_of, wgpu,
 };
 use fog::FogSettings;
 use instancing::{MarsPlain, Mode, Setup, plain_camera};
 use skybox::{Sky, SkyViewpoint, sun_at};
+use terrain::ground::{self, Movement};
 use terrain::heightfield::HeightField;
 use terrain::{KEEP_ALL, SKY, Viewpoint};
 
@@ -150,6 +151,8 @@ pub struct WaterChapter {
     /// Fly (the start) or orbit. Not a setting of the views: it moves the
     /// camera in the window, and never changes what a view draws.
     pub steering: Steering,
+    /// Flying, or walking on the ground (G, `--walk`), while steering is `Fly`.
+    pub movement: Movement,
     orbiting: Option<Orbiting>,
     pub fog: FogSettings,
     pub rocks: Setup,
@@ -216,14 +219,15 @@ impl WaterChapter {
     // ANCHOR_END: orbit
 }
 
-/// The fly camera's keys, then the orbit camera's mouse.
-const STEERING_KEYS: [(&str, &str); 8] = [
-    FlyController::KEYS[0],
-    FlyController::KEYS[1],
-    FlyController::KEYS[2],
-    FlyController::KEYS[3],
-    FlyController::KEYS[4],
-    FlyController::KEYS[5],
+/// The fly camera's keys (with walking), then the orbit camera's mouse.
+const STEERING_KEYS: [(&str, &str); 9] = [
+    ground::KEYS[0],
+    ground::KEYS[1],
+    ground::KEYS[2],
+    ground::KEYS[3],
+    ground::KEYS[4],
+    ground::KEYS[5],
+    ground::KEYS[6],
     ("drag (orbit camera)", "turn round the point on the lake"),
     ("scroll (orbit camera)", "nearer or further"),
 ];
@@ -237,6 +241,7 @@ impl Chapter for WaterChapter {
     const VIEWS: &'static [View] = &views_of(&VIEW_TABLE);
     const SNAPSHOT_TIME: f32 = 0.0;
     const KEYS: &'static [(&'static str, &'static str)] = &STEERING_KEYS;
+    const FLAGS: &'static [ChapterFlag] = &[ground::WALK_FLAG];
     const BENCH_FRAMES: u32 = 5;
 
     /// Clip distances where the adapter has them; a fragment discard otherwise.
@@ -269,6 +274,7 @@ impl Chapter for WaterChapter {
             camera,
             controller: FlyController { speed: 10.0, ..Default::default() },
             steering: Steering::Fly,
+            movement: Movement::Fly,
             orbiting: None,
             fog: FogSettings::HAZE,
             rocks: Setup { rocks: 200_000, mode: Mode::Instanced, terrain: true },
@@ -281,6 +287,11 @@ impl Chapter for WaterChapter {
             depth: depth_view(device, target.width, target.height),
             target,
         })
+    }
+
+    fn apply_flags(&mut self, _gpu: &Gpu, flags: &FlagValues) -> anyhow::Result<()> {
+        self.movement = ground::movement_from_flags(flags);
+        Ok(())
     }
 
     fn resize(&mut self, gpu: &Gpu, target: Target) {
@@ -309,7 +320,10 @@ impl Chapter for WaterChapter {
 
     fn update(&mut self, input: &Input, dt: f32) {
         match self.steering {
-            Steering::Fly => self.controller.update(&mut self.camera, input, dt),
+            Steering::Fly => {
+                let field = self.plain.terrain.field();
+                ground::step(&self.controller, &mut self.camera, &mut self.movement, field, input, dt);
+            }
             Steering::Orbit => self.steer_orbit(input),
         }
     }
@@ -423,6 +437,7 @@ impl Chapter for WaterChapter {
         });
         if self.steering == Steering::Fly {
             ui.add(egui::Slider::new(&mut self.controller.speed, 2.0..=100.0).logarithmic(true).text("speed (m/s)"));
+            ground::movement_switch(ui, &mut self.movement);
         }
     }
 
