@@ -230,19 +230,19 @@ pub fn lantern_camera(lantern: Vec3, aspect: f32) -> Camera {
 }
 // ANCHOR_END: camera
 
-/// The models the level is drawn with.
+/// The models the level is drawn with, in the order the draws number
+/// them: the level, one per prop kind ([`PropKind::ALL`]), the lantern,
+/// the player.
 struct Models {
     level: GpuModel,
-    tree: GpuModel,
-    rock: GpuModel,
-    krate: GpuModel,
+    props: Vec<GpuModel>,
     lantern: GpuModel,
     player: GpuModel,
 }
 
 /// The lantern's place in the models' order: the one model its own cube
 /// leaves out, since its light is inside it.
-const LANTERN_MODEL: usize = 4;
+pub const LANTERN_MODEL: usize = 1 + PropKind::ALL.len();
 
 // ANCHOR: play
 /// Who plays: the script (pictures, and a window until a key is pressed)
@@ -338,15 +338,18 @@ impl ShadowsChapter {
         }
     }
 
-    /// The instances of the level (one), the trees, rocks and crates, the
-    /// lantern, and a last one for the player, with the draws that use them.
-    fn level_instances(level: &Level, game: &Game) -> (Vec<ModelInstance>, Vec<(usize, std::ops::Range<u32>)>) {
+    /// The instances of the level (one), the props kind by kind (trees,
+    /// rocks, crates, islands, the sphere), the lantern, and a last one for
+    /// the player, with the draws that use them: (model, instances), the
+    /// model numbered as in [`LANTERN_MODEL`]'s order. Every draw casts the
+    /// sun's shadow; all but the lantern's cast the lantern's.
+    pub fn level_instances(level: &Level, game: &Game) -> (Vec<ModelInstance>, Vec<(usize, std::ops::Range<u32>)>) {
         let mut instances = vec![ModelInstance::new(Mat4::IDENTITY, 1.0)];
         let mut draws = vec![(0, 0..1)];
-        for (which, kind) in [(1, PropKind::Tree), (2, PropKind::Rock), (3, PropKind::Crate)] {
+        for (i, kind) in PropKind::ALL.into_iter().enumerate() {
             let start = instances.len() as u32;
             instances.extend(scene::prop_instances(level, kind));
-            draws.push((which, start..instances.len() as u32));
+            draws.push((1 + i, start..instances.len() as u32));
         }
         let start = instances.len() as u32;
         instances.push(scene::lantern_instance(level));
@@ -416,9 +419,8 @@ impl Chapter for ShadowsChapter {
             warnings.extend(loaded.warnings.iter().cloned());
             Ok(loaded)
         };
-        let tree = load(scene::prop_model(PropKind::Tree))?;
-        let rock = load(scene::prop_model(PropKind::Rock))?;
-        let krate = load(scene::prop_model(PropKind::Crate))?;
+        let props =
+            PropKind::ALL.iter().map(|&kind| load(scene::prop_model(kind))).collect::<anyhow::Result<Vec<_>>>()?;
         let player = load(scene::PLAYER_MODEL)?;
         let scene_lights = SceneLights::new(device);
         let mut mips = MipMaker::new(gpu)?;
@@ -426,9 +428,11 @@ impl Chapter for ShadowsChapter {
         let mut materials = Materials::new(&mut up);
         let models = Models {
             level: upload_model(&mut up, &mut materials, &scene::level_model(&level), "level"),
-            tree: upload_model(&mut up, &mut materials, &tree.model, "tree"),
-            rock: upload_model(&mut up, &mut materials, &rock.model, "rock"),
-            krate: upload_model(&mut up, &mut materials, &krate.model, "crate"),
+            props: props
+                .iter()
+                .zip(PropKind::ALL)
+                .map(|(prop, kind)| upload_model(&mut up, &mut materials, &prop.model, &format!("{kind:?}")))
+                .collect(),
             lantern: upload_model(&mut up, &mut materials, &scene::lantern_model(&level), "lantern"),
             player: upload_model(&mut up, &mut materials, &player.model, "player"),
         };
@@ -575,7 +579,7 @@ impl Chapter for ShadowsChapter {
         self.sky.write(gpu, &camera, &day);
         self.place_player(gpu, &game);
         let m = &self.models;
-        let models = [&m.level, &m.tree, &m.rock, &m.krate, &m.lantern, &m.player];
+        let models: Vec<&GpuModel> = std::iter::once(&m.level).chain(&m.props).chain([&m.lantern, &m.player]).collect();
         let list = DrawList {
             materials: &self.materials,
             instances: &self.instances,

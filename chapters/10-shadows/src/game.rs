@@ -57,17 +57,27 @@ pub struct Block {
     pub surface: Surface,
 }
 
-/// The models that dress the level (chapter 09's OBJ files).
+/// The models that dress the level (OBJ files from `cargo xtask assets`).
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum PropKind {
     Tree,
     Rock,
     Crate,
+    /// The seed's hovering islands: a grassy top (the prop's base) over
+    /// a rocky cone, hanging in the air behind the level.
+    Island,
+    /// The seed's low-poly sphere.
+    Sphere,
+}
+
+impl PropKind {
+    /// Every kind, in the order the chapter loads and draws them.
+    pub const ALL: [PropKind; 5] = [Self::Tree, Self::Rock, Self::Crate, Self::Island, Self::Sphere];
 }
 
 /// A prop: where it stands (its base), its size, its turn about y, and
-/// whether the player collides with it (crates do; trees and rocks stand
-/// in front of or behind the path).
+/// whether the player collides with it (crates do; trees, rocks and the
+/// sphere stand in front of or behind the path, the islands far behind it).
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Prop {
     pub kind: PropKind,
@@ -148,6 +158,13 @@ pub fn level() -> Level {
         prop(PropKind::Crate, 104.0, 0.0, -1.2, 1.0, 0.4, false),
         prop(PropKind::Tree, 110.0, 0.0, -1.3, 1.0, 1.7, false),
         prop(PropKind::Rock, 115.0, 0.0, 1.2, 0.9, 2.2, false),
+        // The seed's low-poly sphere, beside the path before the first wall.
+        prop(PropKind::Sphere, 30.0, 0.0, -1.4, 1.2, 0.3, false),
+        // Its hovering islands, 5 to 11 m behind the level's back (z = −2)
+        // and well above the player's head: scenery, never in the way.
+        prop(PropKind::Island, 22.5, 5.0, -7.0, 0.6, 0.0, false),
+        prop(PropKind::Island, 36.0, 7.5, -10.0, 0.9, 2.0, false),
+        prop(PropKind::Island, 46.0, 5.5, -13.0, 1.1, 4.0, false),
     ];
     // The lantern hangs under the tunnel's ceiling (2.3 m up), left of the
     // rock at 46 m and a little behind the path, its glass above the

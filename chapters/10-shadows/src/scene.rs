@@ -33,6 +33,10 @@ const FILES: &[(&str, &[u8])] = textures::builtin![
     "models/crate/crate.mtl",
     "models/robot/robot.obj",
     "models/robot/robot.mtl",
+    "models/island/island.obj",
+    "models/island/island.mtl",
+    "models/sphere/sphere.obj",
+    "models/sphere/sphere.mtl",
     "textures/wood/albedo.png",
     "textures/wood/normal.png",
     "layers/far.png",
@@ -91,6 +95,8 @@ pub fn prop_model(kind: PropKind) -> &'static str {
         PropKind::Tree => "models/tree/tree.obj",
         PropKind::Rock => "models/rock/rock.obj",
         PropKind::Crate => "models/crate/crate.obj",
+        PropKind::Island => "models/island/island.obj",
+        PropKind::Sphere => "models/sphere/sphere.obj",
     }
 }
 
@@ -180,9 +186,19 @@ pub fn level_bounds(level: &Level) -> (Vec3, Vec3) {
         low = low.min(block.aabb.min.extend(-block.depth));
         high = high.max(block.aabb.max.extend(block.depth));
     }
-    // Trees are the tallest props: 4.5 m at scale 1.
-    let tallest = level.props.iter().map(|p| p.base.y + 4.5 * p.scale).fold(high.y, f32::max);
-    (low, Vec3::new(high.x, tallest, high.z))
+    // Trees are the tallest props standing on something: 4.5 m at scale
+    // 1. An island's base is its grassy top, at most 6.7 m across, with
+    // 4.4 m of stone under it; the level's box grows to take in the
+    // islands behind it.
+    for p in &level.props {
+        let (below, above, half) = match p.kind {
+            PropKind::Island => (4.4, 0.0, 3.35),
+            _ => (0.0, 4.5, 1.0),
+        };
+        low = low.min(p.base - Vec3::new(half, below, half) * p.scale);
+        high = high.max(p.base + Vec3::new(half, above, half) * p.scale);
+    }
+    (low, high)
 }
 
 // ANCHOR: sun

@@ -1,7 +1,7 @@
 //! Models for chapters 09 to 11, written as Wavefront OBJ with MTL
 //! materials: a car with body, glass, tyres and lights; a stepped office
-//! tower; the boat that chapter 11 sails; chapter 10's tree, rock, crate
-//! and player. Built from code like everything
+//! tower; the boat that chapter 11 sails; chapter 10's tree, rock, crate,
+//! player, floating island and low-poly sphere. Built from code like everything
 //! under `assets/`, and written the way exporters write them: several
 //! objects, quads and n-gons, some faces with relative (negative) indices.
 //!
@@ -666,8 +666,118 @@ fn robot() -> String {
     obj.obj
 }
 
+const ISLAND_MTL: &str = "\
+# A floating island's materials (chapter 10): grass on top, stone below.
+newmtl grass
+Kd 0.260 0.480 0.160
+Ks 0.040 0.040 0.040
+Ns 8
+
+newmtl stone
+Kd 0.520 0.460 0.400
+Ks 0.050 0.050 0.050
+Ns 8
+map_Kd ../../textures/concrete/albedo.png
+map_Bump ../../textures/concrete/normal.png
+";
+
+/// A flat polygon textured in metres / `tile` along its own first edge, so
+/// that every facet of a rough surface gets the texture at its size.
+fn facet(obj: &mut ObjWriter, points: &[Vec3], tile: f32) {
+    let (origin, u_axis) = (points[0], (points[1] - points[0]).normalize());
+    let v_axis = polygon_normal(points).cross(u_axis);
+    obj.flat_polygon(points, |p| Vec2::new((p - origin).dot(u_axis), (p - origin).dot(v_axis)) / tile);
+}
+
+/// The seed's hovering island, about 6.6 m across and 4.4 m deep: a flat
+/// grassy top at y = 0 with a ragged rim, a grass edge, and under it an
+/// inverted cone of stone, pushed in and out by value noise, down to a
+/// tip. Faceted (one normal per face), as the seed's low-poly models were.
+fn island() -> String {
+    let mut obj =
+        ObjWriter::new("A floating island for chapter 10, written by `cargo xtask assets`.", Some("island.mtl"));
+    const AROUND: usize = 14;
+    // Ring 0 is the rim, ring 1 the foot of the grass edge, the last the tip.
+    const RINGS: usize = 6;
+    let ring = |k: usize, j: usize| {
+        let angle = std::f32::consts::TAU * (k % AROUND) as f32 / AROUND as f32;
+        let (sin, cos) = angle.sin_cos();
+        let noise = |scale: f32, salt: f32| super::value_noise([cos * scale + salt, j as f32 * 0.7, sin * scale]);
+        // The rim's radius depends on the angle only; the rings below
+        // bulge in and out and sag by their own noise, and meet at the tip.
+        let rim = 3.0 * (0.85 + 0.3 * super::value_noise([cos * 1.6 + 5.0, 0.0, sin * 1.6]));
+        let (radius, y) = match j {
+            0 => (rim, 0.0),
+            1 => (rim * 0.97, -0.35),
+            RINGS => (0.0, -4.4),
+            _ => {
+                let t = (j - 1) as f32 / (RINGS - 1) as f32;
+                let bulge = 0.75 + 0.5 * noise(2.5, 13.0);
+                (rim * 0.97 * (1.0 - t).powf(0.8) * bulge, -0.35 - 4.05 * t + 0.6 * (noise(3.0, 29.0) - 0.5))
+            }
+        };
+        Vec3::new(radius * cos, y, -radius * sin)
+    };
+    obj.object("top");
+    obj.material("grass");
+    let rim: Vec<Vec3> = (0..AROUND).map(|k| ring(k, 0)).collect();
+    obj.flat_polygon(&rim, |p| Vec2::new(p.x, -p.z) / 2.0);
+    for k in 0..AROUND {
+        facet(&mut obj, &[ring(k, 1), ring(k + 1, 1), ring(k + 1, 0), ring(k, 0)], 2.0);
+    }
+    obj.object("underside");
+    obj.material("stone");
+    for j in 1..RINGS {
+        for k in 0..AROUND {
+            if j + 1 == RINGS {
+                facet(&mut obj, &[ring(k, j + 1), ring(k + 1, j), ring(k, j)], 2.0);
+            } else {
+                facet(&mut obj, &[ring(k, j + 1), ring(k + 1, j + 1), ring(k + 1, j), ring(k, j)], 2.0);
+            }
+        }
+    }
+    obj.obj
+}
+
+const SPHERE_MTL: &str = "\
+# The low-poly sphere's material (chapter 10): glossy paint.
+newmtl paint
+Kd 0.150 0.350 0.750
+Ks 0.600 0.600 0.600
+Ns 48
+";
+
+/// The seed's low-poly sphere, 1 m across, standing on y = 0: 10 facets
+/// around and 6 from pole to pole, each flat with its own normal.
+fn sphere() -> String {
+    let mut obj =
+        ObjWriter::new("A low-poly sphere for chapter 10, written by `cargo xtask assets`.", Some("sphere.mtl"));
+    const AROUND: usize = 10;
+    const RINGS: usize = 6;
+    let point = |k: usize, j: usize| {
+        let (sin_lon, cos_lon) = (std::f32::consts::TAU * k as f32 / AROUND as f32).sin_cos();
+        let (sin_lat, cos_lat) = (std::f32::consts::PI * j as f32 / RINGS as f32).sin_cos();
+        Vec3::new(0.5 * sin_lat * cos_lon, 0.5 + 0.5 * cos_lat, -0.5 * sin_lat * sin_lon)
+    };
+    obj.object("sphere");
+    obj.material("paint");
+    for j in 0..RINGS {
+        for k in 0..AROUND {
+            // Counter-clockwise from outside; the poles' quads are triangles.
+            let quad = [point(k, j), point(k, j + 1), point(k + 1, j + 1), point(k + 1, j)];
+            let corners: Vec<Vec3> = match j {
+                0 => vec![quad[0], quad[1], quad[2]],
+                _ if j + 1 == RINGS => vec![quad[0], quad[1], quad[3]],
+                _ => quad.to_vec(),
+            };
+            facet(&mut obj, &corners, 0.5);
+        }
+    }
+    obj.obj
+}
+
 /// (folder, file stem, OBJ text, MTL text, what it is).
-fn models() -> [(&'static str, String, &'static str, &'static str); 7] {
+fn models() -> [(&'static str, String, &'static str, &'static str); 9] {
     [
         (
             "car",
@@ -705,6 +815,18 @@ fn models() -> [(&'static str, String, &'static str, &'static str); 7] {
             robot(),
             ROBOT_MTL,
             "the player, a robot 1.7 m tall facing +x (chapter 10): legs, body, head, arms and a glowing visor",
+        ),
+        (
+            "island",
+            island(),
+            ISLAND_MTL,
+            "a floating island, 6.6 m across (chapter 10): a flat grassy top with a ragged rim over an inverted cone of stone pushed in and out by value noise, faceted",
+        ),
+        (
+            "sphere",
+            sphere(),
+            SPHERE_MTL,
+            "the seed's low-poly sphere, 1 m (chapter 10): 10 × 6 flat facets, glossy paint",
         ),
     ]
 }

@@ -99,3 +99,53 @@ fn every_key_at_once_and_jump_every_frame_break_nothing() {
     assert!((game.player.aabb.min.x - (level.spawn.x - 0.4)).abs() < 1e-4);
     assert!(jumps > 5, "only {jumps} jumps in 10 s of holding jump");
 }
+
+/// The seed's props, the hovering islands and the low-poly sphere, are in
+/// the chapter's draw list, one draw per kind with one instance per prop,
+/// and out of the player's way: none is solid, each model's box lies
+/// behind the play plane (clear of the player's 0.76 m wide model) and
+/// inside no block of the level (the sphere only touches the ground).
+#[test]
+fn the_islands_and_the_sphere_are_drawn_and_out_of_the_players_way() {
+    use shadows::ShadowsChapter;
+    use shadows::game::PropKind;
+    use shadows::scene;
+    use std::path::Path;
+
+    let level = game::level();
+    let (instances, draws) = ShadowsChapter::level_instances(&level, &Game::new(&level));
+    for (kind, count) in [(PropKind::Island, 3), (PropKind::Sphere, 1)] {
+        let which = 1 + PropKind::ALL.iter().position(|k| *k == kind).unwrap();
+        let (_, range) = draws.iter().find(|(model, _)| *model == which).expect("a draw for the kind");
+        let drawn = &instances[range.start as usize..range.end as usize];
+        assert_eq!(drawn, scene::prop_instances(&level, kind).as_slice(), "{kind:?}");
+        assert_eq!(drawn.len(), count, "{kind:?}");
+
+        let model = textures::obj::load(Path::new(scene::prop_model(kind)), &scene::read).unwrap().model;
+        for prop in level.props.iter().filter(|p| p.kind == kind) {
+            assert!(!prop.solid, "{kind:?} at {:?} is solid", prop.base);
+            let at = glam::Mat4::from_scale_rotation_translation(
+                glam::Vec3::splat(prop.scale),
+                glam::Quat::from_rotation_y(prop.turn),
+                prop.base,
+            );
+            let (low, high) = model.vertices.iter().fold((glam::Vec3::MAX, glam::Vec3::MIN), |(lo, hi), v| {
+                let p = at.transform_point3(glam::Vec3::from(v.position));
+                (lo.min(p), hi.max(p))
+            });
+            assert!(high.z < -0.5, "{kind:?} at {:?} reaches z = {} in front of the play plane", prop.base, high.z);
+            for block in &level.blocks {
+                let inside = low.x < block.aabb.max.x
+                    && high.x > block.aabb.min.x
+                    && low.y < block.aabb.max.y - 1e-3
+                    && high.y > block.aabb.min.y
+                    && low.z < block.depth
+                    && high.z > -block.depth;
+                assert!(!inside, "{kind:?} at {:?} ({low} to {high}) is inside {:?}", prop.base, block.aabb);
+            }
+        }
+    }
+    // The solids are the blocks and the crates that are solid, nothing more.
+    let solid_props = level.props.iter().filter(|p| p.solid).count();
+    assert_eq!(level.solids().len(), level.blocks.len() + solid_props);
+}

@@ -101,15 +101,16 @@ fn exercises_1_2_and_4_biases_culling_and_the_evening_sun() {
     let offset_lost = lost(Bias { constant: 0, slope_scale: 0.0, normal_offset: 64.0 * offset }, &mut chapter);
     let slope_lost = lost(Bias { constant: 0, slope_scale: 64.0 * slope, normal_offset: 0.0 }, &mut chapter);
     println!(
-        "normal offset alone: acne gone at {offset} texels {offsets:?}; slope scale alone: at {slope} {slopes:?}; \
-         at 64 times those, {:.1} % and {:.1} % of the real shadow is lost",
+        "default bias: {default} sun-facing pixels in shadow; normal offset alone: acne gone at {offset} texels \
+         {offsets:?}; slope scale alone: at {slope} {slopes:?}; at 64 times those, {:.1} % and {:.1} % of the real \
+         shadow is lost",
         offset_lost * 100.0,
         slope_lost * 100.0
     );
     assert_eq!((offset, slope), ACNE_GONE_AT);
     let close = |count: usize, expected: usize| count.abs_diff(expected) <= expected / 50;
     assert!(
-        close(default, 2967) && close(offsets[0].1, 8615) && close(slopes[0].1, 10_342) && close(slopes[1].1, 3822)
+        close(default, 3057) && close(offsets[0].1, 9003) && close(slopes[0].1, 10_821) && close(slopes[1].1, 4029)
     );
     assert!((offset_lost - OFFSET_LOSES).abs() < 0.01 && (slope_lost - SLOPE_LOSES).abs() < 0.01);
 
@@ -131,7 +132,7 @@ fn exercises_1_2_and_4_biases_culling_and_the_evening_sun() {
     assert!((share(usual.away_lit, away) - AWAY_LIT_DEFAULT).abs() < 0.02);
     // Facing the sun: no acne, and every real shadow (the tree's among them) still there.
     assert!(culled_front.facing_shadowed.abs_diff(usual.facing_shadowed) <= usual.facing_shadowed / 100);
-    assert!(close(culled_front.facing_shadowed, 2963) && close(acne.facing_shadowed, 17_411));
+    assert!(close(culled_front.facing_shadowed, 3051) && close(acne.facing_shadowed, 18_248));
 
     // Exercise 4: the acne view, and the default bias, as the sun goes down.
     let mut by_phase = Vec::new();
@@ -155,7 +156,7 @@ fn exercises_1_2_and_4_biases_culling_and_the_evening_sun() {
 /// At phases 0.375, 0.7 and 0.73: the share of sun-facing pixels in
 /// shadow without bias and with the default one, and the ground a
 /// shadow-map texel covers, metres.
-const EVENING: [(f64, f64, f32); 3] = [(0.550, 0.094, 0.0379), (0.585, 0.171, 0.0868), (0.614, 0.227, 0.2140)];
+const EVENING: [(f64, f64, f32); 3] = [(0.548, 0.092, 0.0379), (0.582, 0.166, 0.0868), (0.611, 0.221, 0.2140)];
 
 // ANCHOR: front_faces
 /// Exercise 2: the shadow pass keeps the far sides of solids (it culls the
@@ -181,15 +182,15 @@ fn sun_on_the_ground(phase: f32, time: f32) -> (f32, f32) {
 
 /// The share of the faces turned away from the sun that read as lit with
 /// front faces culled and no bias, and with the default culling and bias.
-const AWAY_LIT_FRONT: f64 = 0.598;
-const AWAY_LIT_DEFAULT: f64 = 0.457;
+const AWAY_LIT_FRONT: f64 = 0.593;
+const AWAY_LIT_DEFAULT: f64 = 0.404;
 
 /// Exercise 1's answers: the smallest normal offset and slope scale that
 /// remove the acne on their own.
 const ACNE_GONE_AT: (f32, f32) = (0.5, 0.75);
 /// The share of the real shadows lost at 64 times those (below zero: gained).
-const OFFSET_LOSES: f64 = -0.045;
-const SLOPE_LOSES: f64 = 0.083;
+const OFFSET_LOSES: f64 = -0.085;
+const SLOPE_LOSES: f64 = 0.085;
 
 // ANCHOR: tight_fit
 /// Exercise 3: the sun's box fitted to the smallest rectangle around the
@@ -443,7 +444,7 @@ fn cube_triangles(culling: CubeCulling) -> u64 {
     // Every caster's model with its instances; the level's blocks are one
     // model with one instance, always drawn.
     let mut casters = vec![(scene::level_model(&level), vec![ModelInstance::new(Mat4::IDENTITY, 1.0)])];
-    for kind in [PropKind::Tree, PropKind::Rock, PropKind::Crate] {
+    for kind in PropKind::ALL {
         casters.push((load(scene::prop_model(kind)), scene::prop_instances(&level, kind)));
     }
     casters.push((load(scene::PLAYER_MODEL), vec![scene::player_instance(&game)]));
@@ -493,7 +494,7 @@ fn exercise_7_culling_the_lanterns_casters_by_range_and_face() {
         "the lantern's six passes: {all} triangles, {in_range} within its range, {in_face} in a face's frustum too"
     );
     // The same count as the passes' own counter (`CubeCost`).
-    assert_eq!(all, 20_880);
+    assert_eq!(all, 24_468);
     assert_eq!((in_range, in_face), CULLED_TRIANGLES);
 }
 
