@@ -14,6 +14,7 @@
 //! or renders headless for `--screenshot`, `--bench` and the snapshot tests.
 
 pub mod args;
+pub mod book_figures;
 #[cfg(target_arch = "wasm32")]
 mod browser;
 pub mod camera;

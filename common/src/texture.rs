@@ -1,4 +1,5 @@
-//! Loading images into GPU textures, and the depth buffer helper.
+//! Loading images into GPU textures, the sRGB transfer function and a
+//! mip level made in linear light, and the depth buffer helper.
 
 use std::path::Path;
 
@@ -16,6 +17,48 @@ pub enum ColorSpace {
     /// Data (normal maps, height maps, DuDv maps): used as stored.
     Linear,
 }
+
+// ANCHOR: transfer
+/// The sRGB transfer function (IEC 61966-2-1), decoding: a stored value
+/// `v` (0..1, a byte over 255) to the light it stands for (0..1).
+pub fn srgb_to_linear(v: f32) -> f32 {
+    if v <= 0.040_45 { v / 12.92 } else { ((v + 0.055) / 1.055).powf(2.4) }
+}
+
+/// The sRGB transfer function, encoding: light `l` (0..1) to the value
+/// stored for it (0..1).
+pub fn linear_to_srgb(l: f32) -> f32 {
+    if l <= 0.003_130_8 { 12.92 * l } else { 1.055 * l.powf(1.0 / 2.4) - 0.055 }
+}
+// ANCHOR_END: transfer
+
+// ANCHOR: half_size
+/// The next mip level of an sRGB picture, on the CPU: half as wide and
+/// high (at least 1), each texel the mean of the 2 × 2 texels above it
+/// (clamped at an odd edge), averaged in linear light (alpha as it is):
+/// averaging the stored bytes would darken every level.
+pub fn half_size_srgb(above: &image::RgbaImage) -> image::RgbaImage {
+    let decode = |c: u8| srgb_to_linear(f32::from(c) / 255.0);
+    let encode = |c: f32| (linear_to_srgb(c).clamp(0.0, 1.0) * 255.0).round() as u8;
+    let (width, height) = ((above.width() / 2).max(1), (above.height() / 2).max(1));
+    image::RgbaImage::from_fn(width, height, |x, y| {
+        let texels = [(0, 0), (1, 0), (0, 1), (1, 1)].map(|(dx, dy)| {
+            above.get_pixel((2 * x + dx).min(above.width() - 1), (2 * y + dy).min(above.height() - 1)).0
+        });
+        let mean = |channel: usize, linear: bool| {
+            let sum: f32 =
+                texels.iter().map(|t| if linear { decode(t[channel]) } else { f32::from(t[channel]) / 255.0 }).sum();
+            sum / 4.0
+        };
+        image::Rgba([
+            encode(mean(0, true)),
+            encode(mean(1, true)),
+            encode(mean(2, true)),
+            (mean(3, false) * 255.0).round() as u8,
+        ])
+    })
+}
+// ANCHOR_END: half_size
 
 /// Reads a PNG or JPEG into RGBA8. Errors name the file and the reason.
 pub fn load_rgba(path: &Path) -> anyhow::Result<image::RgbaImage> {

@@ -9,6 +9,7 @@
 
 use std::f32::consts::TAU;
 
+use common::book_figures::{median_ms, solution, thousands};
 use common::glam::{Vec2, Vec3};
 use common::headless::{OFFSCREEN_FORMAT, capture};
 use common::{Camera, Chapter, Gpu, ShaderFile, Target, shader};
@@ -35,8 +36,7 @@ const WATER: ShaderFile =
 /// The median of a pass's row in the chapter's bench table, milliseconds.
 fn bench_median(view: &str, what: &str) -> f32 {
     let table = include_str!("../../../book/src/bench/water.md");
-    let row = table.lines().find(|l| l.starts_with(&format!("| {view} | {what} |"))).unwrap();
-    row.split('|').nth(4).unwrap().trim().parse().unwrap()
+    median_ms(table, view, &format!("{what} |")).expect("a row of the water bench table") as f32
 }
 
 // ANCHOR: quarter
@@ -92,7 +92,11 @@ fn exercise_1_quarter_resolution_pictures_save_memory_not_time_here() {
         &[
             format!("{reflection:.0} ms against the main pass's {main:.0} ms"),
             format!("about {:.0} ms and the vertices", (main - reflection) / 0.75),
-            format!("saves about {saved:.0} ms of a {} ms frame ({:.1} %)", thousands(frame), 100.0 * saved / frame),
+            format!(
+                "saves about {saved:.0} ms of a {} ms frame ({:.1} %)",
+                thousands(f64::from(frame)),
+                100.0 * saved / frame
+            ),
         ],
     );
     // What it costs: the pixels that change, and by how much (of 255).
@@ -282,7 +286,7 @@ fn exercise_4_without_the_refraction_picture_a_fifth_of_the_frame_goes() {
     page_quotes(
         "The refraction pass is",
         &[
-            format!("{refraction:.0} ms of the default view's {} ms frame", thousands(frame)),
+            format!("{refraction:.0} ms of the default view's {} ms frame", thousands(f64::from(frame))),
             format!("bench: {:.1} %", 100.0 * refraction / frame),
         ],
     );
@@ -292,21 +296,8 @@ fn exercise_4_without_the_refraction_picture_a_fifth_of_the_frame_goes() {
 /// `</details>`) says each of `figures`.
 fn page_quotes(opening: &str, figures: &[String]) {
     let page = include_str!("../../../book/src/07-water.md");
-    let solution = page.split(opening).nth(1).and_then(|s| s.split("</details>").next()).expect("the solution");
+    let solution = solution(page, opening).expect("the solution");
     for figure in figures {
         assert!(solution.contains(figure.as_str()), "page 07's solution should say `{figure}` (from the bench table)");
     }
-}
-
-/// `2110.4` → `2,110`.
-fn thousands(value: f32) -> String {
-    let digits = format!("{value:.0}");
-    let mut out = String::new();
-    for (i, c) in digits.chars().enumerate() {
-        if i > 0 && (digits.len() - i) % 3 == 0 {
-            out.push(',');
-        }
-        out.push(c);
-    }
-    out
 }

@@ -375,7 +375,7 @@ fn mipmapped_texture(
         if above.width() == 1 && above.height() == 1 {
             break;
         }
-        let below = half_size(above);
+        let below = common::texture::half_size_srgb(above);
         levels.push(below);
     }
     let texture = device.create_texture(&wgpu::TextureDescriptor {
@@ -411,33 +411,6 @@ fn mipmapped_texture(
         ..Default::default()
     });
     Ok((texture.create_view(&Default::default()), sampler))
-}
-
-/// The next mip level of an sRGB picture: half as wide and high (at
-/// least 1), each texel the mean of up to 2 × 2 texels above, in linear light.
-fn half_size(above: &common::image::RgbaImage) -> common::image::RgbaImage {
-    let to_linear = |c: u8| {
-        let c = f32::from(c) / 255.0;
-        if c <= 0.04045 { c / 12.92 } else { ((c + 0.055) / 1.055).powf(2.4) }
-    };
-    let to_srgb = |l: f32| {
-        let c = if l <= 0.003_130_8 { l * 12.92 } else { 1.055 * l.powf(1.0 / 2.4) - 0.055 };
-        (c.clamp(0.0, 1.0) * 255.0).round() as u8
-    };
-    let (width, height) = ((above.width() / 2).max(1), (above.height() / 2).max(1));
-    common::image::RgbaImage::from_fn(width, height, |x, y| {
-        // Sums of red, green and blue in linear light, and of alpha.
-        let mut sums = [0.0f32; 4];
-        for (dx, dy) in [(0, 0), (1, 0), (0, 1), (1, 1)] {
-            let texel = above.get_pixel((2 * x + dx).min(above.width() - 1), (2 * y + dy).min(above.height() - 1));
-            for (sum, &value) in sums.iter_mut().zip(&texel.0[..3]) {
-                *sum += to_linear(value);
-            }
-            sums[3] += f32::from(texel.0[3]) / 255.0;
-        }
-        let [red, green, blue, alpha] = sums.map(|sum| sum / 4.0);
-        common::image::Rgba([to_srgb(red), to_srgb(green), to_srgb(blue), (alpha * 255.0).round() as u8])
-    })
 }
 
 /// Bind groups that let the show pipeline read each picture.

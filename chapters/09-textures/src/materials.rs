@@ -377,19 +377,9 @@ impl Materials {
     }
 }
 
-// ANCHOR: transfer
-/// The sRGB transfer function (IEC 61966-2-1), decoding: a stored value
-/// `v` (0..1, a byte over 255) to the light it stands for (0..1).
-pub fn srgb_to_linear(v: f32) -> f32 {
-    if v <= 0.040_45 { v / 12.92 } else { ((v + 0.055) / 1.055).powf(2.4) }
-}
-
-/// The sRGB transfer function, encoding: light `l` (0..1) to the value
-/// stored for it (0..1).
-pub fn linear_to_srgb(l: f32) -> f32 {
-    if l <= 0.003_130_8 { 12.92 * l } else { 1.055 * l.powf(1.0 / 2.4) - 0.055 }
-}
-// ANCHOR_END: transfer
+/// The sRGB transfer function, which lives in `common` (chapter 07's water
+/// texture needs it before this chapter explains it).
+pub use common::texture::{linear_to_srgb, srgb_to_linear};
 
 /// A colour as a person picks it (sRGB, 0..255) to linear light, for
 /// material colours written in code.

@@ -144,27 +144,9 @@ impl MipMaker {
 // ANCHOR: reference
 /// The CPU's answer for one level of an sRGB picture: each texel the mean
 /// of a 2 × 2 block of the level above, averaged in linear light (alpha as
-/// it is). The test compares the GPU's levels with this.
-pub fn box_filter_srgb(above: &common::image::RgbaImage) -> common::image::RgbaImage {
-    use crate::materials::{linear_to_srgb, srgb_to_linear};
-    let decode = |c: u8| srgb_to_linear(c as f32 / 255.0);
-    let encode = |c: f32| (linear_to_srgb(c).clamp(0.0, 1.0) * 255.0).round() as u8;
-    let (width, height) = ((above.width() / 2).max(1), (above.height() / 2).max(1));
-    common::image::RgbaImage::from_fn(width, height, |x, y| {
-        let texels = [(0, 0), (1, 0), (0, 1), (1, 1)].map(|(dx, dy)| above.get_pixel(2 * x + dx, 2 * y + dy).0);
-        let mean = |channel: usize, linear: bool| {
-            let sum: f32 =
-                texels.iter().map(|t| if linear { decode(t[channel]) } else { t[channel] as f32 / 255.0 }).sum();
-            sum / 4.0
-        };
-        common::image::Rgba([
-            encode(mean(0, true)),
-            encode(mean(1, true)),
-            encode(mean(2, true)),
-            (mean(3, false) * 255.0).round() as u8,
-        ])
-    })
-}
+/// it is), `common::texture::half_size_srgb`. The test compares the GPU's
+/// levels with this.
+pub use common::texture::half_size_srgb as box_filter_srgb;
 // ANCHOR_END: reference
 
 #[cfg(test)]

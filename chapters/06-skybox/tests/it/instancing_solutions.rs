@@ -5,6 +5,7 @@
 use std::ops::Range;
 use std::sync::Arc;
 
+use common::book_figures::{median_ms, solution, thousands};
 use common::glam::{Mat4, Quat, Vec3};
 use common::headless::{OFFSCREEN_FORMAT, Offscreen, capture, read_texture};
 use common::wgpu::util::DeviceExt as _;
@@ -21,11 +22,7 @@ use terrain::{KEEP_ALL, SKY, Sun, TerrainData, TerrainMesh, TerrainRenderer};
 fn bench_median_ms(view: &str) -> f64 {
     let path = concat!(env!("CARGO_MANIFEST_DIR"), "/../../book/src/bench/instancing.md");
     let table = std::fs::read_to_string(path).unwrap();
-    let row = table
-        .lines()
-        .find(|line| line.starts_with(&format!("| {view} | frame")))
-        .unwrap_or_else(|| panic!("no frame row for {view} in {path}"));
-    row.split('|').nth(4).unwrap().trim().parse().unwrap()
+    median_ms(&table, view, "frame").unwrap_or_else(|| panic!("no frame row for {view} in {path}"))
 }
 
 #[test]
@@ -66,8 +63,7 @@ fn exercise_1_one_call_per_rock_draws_the_same_picture_and_the_page_gives_its_co
     ];
     let page =
         std::fs::read_to_string(concat!(env!("CARGO_MANIFEST_DIR"), "/../../book/src/05-instancing.md")).unwrap();
-    let solution =
-        page.split("What does one draw call cost").nth(1).and_then(|s| s.split("</details>").next()).unwrap();
+    let solution = solution(&page, "What does one draw call cost").unwrap();
     for figure in &quoted {
         assert!(solution.contains(figure.as_str()), "page 05's solution should say `{figure}` (from the bench table)");
     }
@@ -473,17 +469,4 @@ fn exercise_5_every_visible_chunk_in_one_call_draws_the_same_terrain() {
         .collect();
     eprintln!("{} of {} pixels differ, by at most {}", steps.len(), 320 * 180, steps.iter().max().unwrap_or(&0));
     assert!(steps.len() <= 10 && steps.iter().all(|&step| step == 1), "{steps:?}");
-}
-
-/// `186000.0` → `186,000`.
-fn thousands(value: f64) -> String {
-    let digits = format!("{:.0}", value);
-    let mut out = String::new();
-    for (i, c) in digits.chars().enumerate() {
-        if i > 0 && (digits.len() - i) % 3 == 0 {
-            out.push(',');
-        }
-        out.push(c);
-    }
-    out
 }

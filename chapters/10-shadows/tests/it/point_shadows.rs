@@ -8,7 +8,7 @@
 use std::collections::HashMap;
 
 use common::glam::{Mat4, Vec2, Vec3};
-use common::headless::{OFFSCREEN_FORMAT, capture, read_floats};
+use common::headless::{OFFSCREEN_FORMAT, Offscreen, capture, read_floats};
 use common::{Camera, Chapter, Gpu, Target, primitives, wgpu};
 use lighting::lights::{Light, LightKind, daylight};
 use lighting::{HDR_FORMAT, Highlight, LoopOptions, SceneLights};
@@ -197,17 +197,8 @@ impl TinyScene {
         let light = Light { position: LIGHT, colour: Vec3::ONE, range: 12.0, kind: LightKind::Point };
         point.write(gpu, &light, settings);
         let renderer = ShadowedRenderer::with_point_light(gpu, &lights, &materials, &sun, &point).unwrap();
-        let target = device.create_texture(&wgpu::TextureDescriptor {
-            label: Some("lantern lit"),
-            size: wgpu::Extent3d { width: WIDTH, height: HEIGHT, depth_or_array_layers: 1 },
-            mip_level_count: 1,
-            sample_count: 1,
-            dimension: wgpu::TextureDimension::D2,
-            format: HDR_FORMAT,
-            usage: wgpu::TextureUsages::RENDER_ATTACHMENT | wgpu::TextureUsages::COPY_SRC,
-            view_formats: &[],
-        });
-        let view = target.create_view(&Default::default());
+        let Offscreen { texture: target, view } =
+            Offscreen::new(device, Target { format: HDR_FORMAT, width: WIDTH, height: HEIGHT });
         let depth = common::texture::depth_view(device, WIDTH, HEIGHT);
         let mut encoder = device.create_command_encoder(&Default::default());
         let timer = common::PassTimer::off();

@@ -3,7 +3,7 @@
 //! shadow themselves; the scripted run gives the same picture every time.
 
 use common::glam::{Quat, Vec2, Vec3};
-use common::headless::{OFFSCREEN_FORMAT, capture, read_floats};
+use common::headless::{OFFSCREEN_FORMAT, Offscreen, capture, read_floats};
 use common::{Camera, Chapter, Gpu, Target, primitives, wgpu};
 use lighting::lights::{Daylight, daylight};
 use lighting::{HDR_FORMAT, Highlight, LoopOptions, SceneLights};
@@ -87,17 +87,8 @@ fn a_box_above_a_plane_casts_the_shadow_geometry_predicts() {
         instances: &instances,
         draws: vec![Draw { model: &plane, instances: 0..1 }, Draw { model: &cube, instances: 0..1 }],
     };
-    let target = device.create_texture(&wgpu::TextureDescriptor {
-        label: Some("sunlit"),
-        size: wgpu::Extent3d { width: WIDTH, height: HEIGHT, depth_or_array_layers: 1 },
-        mip_level_count: 1,
-        sample_count: 1,
-        dimension: wgpu::TextureDimension::D2,
-        format: HDR_FORMAT,
-        usage: wgpu::TextureUsages::RENDER_ATTACHMENT | wgpu::TextureUsages::COPY_SRC,
-        view_formats: &[],
-    });
-    let view = target.create_view(&Default::default());
+    let Offscreen { texture: target, view } =
+        Offscreen::new(device, Target { format: HDR_FORMAT, width: WIDTH, height: HEIGHT });
     let depth = common::texture::depth_view(device, WIDTH, HEIGHT);
     // The picture, lit by the sun towards `towards_sun`, with the map made
     // for a sun towards `map_sun`.

@@ -2,6 +2,7 @@
 //! change its exercise asks for and asserts the figure the page's solution
 //! states, so that the solutions are built and checked with the chapter.
 
+use common::book_figures::{median_ms, solution, thousands};
 use common::glam::Vec2;
 use common::headless::read_bytes;
 use common::{Chapter, Gpu, PassTimer, ShaderFile, shader};
@@ -87,10 +88,7 @@ const CONE_ERRORS: [(u32, usize, f32); 3] = [(3, 21_892, 22.9), (8, 2533, 2.33),
 /// the bench's medians at 1,024 and 16,384 sites: the cones', then jump
 /// flooding's.
 fn cost_lines(table: &str, size: u32) -> [(f64, f64); 2] {
-    let median = |view: String, pass: &str| -> f64 {
-        let row = table.lines().find(|l| l.starts_with(&format!("| {view} |")) && l.contains(pass)).unwrap();
-        row.split('|').nth(4).unwrap().trim().parse().unwrap()
-    };
+    let median = |view: String, pass: &str| median_ms(table, &view, &format!("GPU: {pass}")).unwrap();
     let line = |method: &str, pass: &str| {
         let (a, b) = (median(format!("{method}-1024-{size}"), pass), median(format!("{method}-16384-{size}"), pass));
         let slope = (b - a) / (16_384.0 - 1024.0);
@@ -127,7 +125,7 @@ fn exercise_2_jump_flooding_wins_past_a_crossover_that_moves_with_the_size() {
         std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("../../book/src/11-voronoi-water.md"),
     )
     .unwrap();
-    let solution = page.split("Does the crossover move?").nth(1).and_then(|s| s.split("</details>").next()).unwrap();
+    let solution = solution(&page, "Does the crossover move?").unwrap();
     let crossing = |n: Option<f64>| match n {
         Some(n) if n > 0.0 => format!("cross at about {} sites", thousands((n / 1000.0).round() * 1000.0)),
         _ => "never cross".to_string(),
@@ -151,19 +149,6 @@ fn exercise_2_jump_flooding_wins_past_a_crossover_that_moves_with_the_size() {
     // The 256² figure on the page was one measurement, not a test: timings
     // belong in `cargo xtask bench`, never in a test that can fail on a
     // busy machine.
-}
-
-/// `23000.0` → `23,000`.
-fn thousands(value: f64) -> String {
-    let digits = format!("{value:.0}");
-    let mut out = String::new();
-    for (i, c) in digits.chars().enumerate() {
-        if i > 0 && (digits.len() - i) % 3 == 0 {
-            out.push(',');
-        }
-        out.push(c);
-    }
-    out
 }
 
 // ANCHOR: two_cells
