@@ -61,6 +61,16 @@ pub struct Args {
     #[arg(long)]
     pub bench: bool,
 
+    /// Open the window with the shader panel on FILE, a WGSL file under shaders/ that the chapter
+    /// builds from (the panel lists them), like triangle/triangle.wgsl.
+    #[arg(long, value_name = "FILE", conflicts_with_all = ["screenshot", "bench"])]
+    pub edit: Option<String>,
+
+    /// Where the shader panel puts the cursor: the first place this text occurs in the `edit` file
+    /// (a page's `at=`, for the book's "try it" links).
+    #[arg(skip)]
+    pub edit_at: Option<String>,
+
     /// For tests that drive the window: after every frame, write the runner's state (frame count,
     /// surface size, camera) as one line to PATH.
     #[arg(long, value_name = "PATH", hide = true)]

@@ -7,7 +7,8 @@
 //! `--screenshot` (a new chapter at the canvas size, the view, one frame at
 //! scene time T), with no overlay: the browser test compares it with the
 //! snapshot. `size=WxH` sets that picture's size, `backend=webgl2` skips
-//! WebGPU.
+//! WebGPU. `edit=FILE` opens the shader panel on FILE, with the cursor at
+//! the first occurrence of `at=TEXT` if given.
 
 use std::cell::RefCell;
 use std::process::ExitCode;
@@ -20,7 +21,7 @@ use crate::web::{self, canvas, note_backend, prepare, set_state, show_error};
 use crate::{Chapter, Gpu, PassTimer, Target};
 
 /// The URL parameters a chapter page understands.
-const PARAMETERS: &[&str] = &["view", "time", "size", "backend"];
+const PARAMETERS: &[&str] = &["view", "time", "size", "backend", "edit", "at"];
 
 thread_local! {
     /// What a still picture keeps alive so that the canvas keeps showing it.
@@ -64,6 +65,7 @@ fn page_args<C: Chapter>() -> Result<(Args, bool), String> {
     let mut flags = vec![C::NAME.to_string()];
     let mut unknown = Vec::new();
     let mut picture = false;
+    let mut at = None;
     let entries = js_sys::try_iter(params.as_ref()).ok().flatten().into_iter().flatten();
     for entry in entries.flatten() {
         let pair: js_sys::Array = entry.unchecked_into();
@@ -72,7 +74,8 @@ fn page_args<C: Chapter>() -> Result<(Args, bool), String> {
             "backend" => web::set_backends(&value)?,
             // For the browser test: a panic's message must reach the page.
             "panic" => panic!("a panic on purpose: the URL asked for one with panic={value}"),
-            "view" | "time" | "size" => {
+            "at" => at = Some(value),
+            "view" | "time" | "size" | "edit" => {
                 picture |= name == "time";
                 flags.push(format!("--{name}"));
                 flags.push(value);
@@ -95,6 +98,7 @@ fn page_args<C: Chapter>() -> Result<(Args, bool), String> {
         let text = text.lines().filter(|l| !l.contains("--help")).collect::<Vec<_>>().join("\n");
         format!("bad URL parameter in {search}: {}", text.trim().trim_start_matches("error: ").replace("'--", "'"))
     })?;
+    let args = Args { edit_at: at, ..args };
     Ok((args, picture))
 }
 // ANCHOR_END: page_args

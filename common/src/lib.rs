@@ -20,6 +20,7 @@ mod browser;
 pub mod camera;
 pub mod chapter;
 mod cli;
+pub mod editor;
 pub mod files;
 pub mod fullscreen;
 pub mod gpu;

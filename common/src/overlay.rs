@@ -155,6 +155,8 @@ pub struct Panel<'a, C: Chapter> {
     pub history: &'a FrameHistory,
     pub shader_error: Option<&'a str>,
     pub show_help: &'a mut bool,
+    /// Whether the shader panel is open.
+    pub shaders_open: bool,
     pub status: &'a str,
     pub adapter: String,
     pub memory: MemoryUse,
@@ -163,8 +165,10 @@ pub struct Panel<'a, C: Chapter> {
 impl<C: Chapter> Panel<'_, C> {
     /// Draws the chapter's window (time, frame times, memory, view, camera,
     /// the chapter's own controls, a shader error, the status line) and,
-    /// when asked for, the key help.
-    pub fn show(&mut self, ctx: &egui::Context) {
+    /// when asked for, the key help. True when the shader panel's switch
+    /// was clicked.
+    pub fn show(&mut self, ctx: &egui::Context) -> bool {
+        let mut toggle_shaders = false;
         egui::Window::new(C::TITLE).default_pos([12.0, 12.0]).default_width(260.0).show(ctx, |ui| {
             // Scene time is an input like any other: type or drag it.
             ui.horizontal(|ui| {
@@ -202,6 +206,14 @@ impl<C: Chapter> Panel<'_, C> {
                     self.chapter.reset_camera(*self.view);
                 }
             }
+            let mut open = self.shaders_open;
+            if ui
+                .toggle_value(&mut open, "✏ shaders")
+                .on_hover_text("edit this chapter's WGSL beside its picture")
+                .clicked()
+            {
+                toggle_shaders = true;
+            }
             ui.separator();
             self.chapter.ui(ui);
             if let Some(error) = self.shader_error {
@@ -224,5 +236,6 @@ impl<C: Chapter> Panel<'_, C> {
                 }
             });
         });
+        toggle_shaders
     }
 }

@@ -6,7 +6,9 @@
 
 use std::sync::{Arc, Mutex, Weak};
 
-use crate::{Gpu, ShaderError};
+use std::collections::HashMap;
+
+use crate::{Gpu, ShaderError, ShaderFile};
 
 /// Pipelines (or anything else made from shaders) that `build` makes, and
 /// makes again when a WGSL file it read changes: see [`Gpu::reload_shaders`].
@@ -28,6 +30,10 @@ struct Slot<P> {
     files: Vec<&'static str>,
     build: Build<P>,
     current: Mutex<P>,
+    /// What `current` was before the last rebuild, until the page's device
+    /// has validated it (browser only).
+    #[cfg(target_arch = "wasm32")]
+    last_good: Mutex<Option<P>>,
 }
 
 impl<P: Clone + wgpu::WasmNotSendSync + 'static> Reloadable<P> {
@@ -38,7 +44,13 @@ impl<P: Clone + wgpu::WasmNotSendSync + 'static> Reloadable<P> {
         build: impl Fn(&Gpu) -> Result<P, ShaderError> + wgpu::WasmNotSendSync + 'static,
     ) -> Result<Self, ShaderError> {
         let (made, files) = gpu.shaders.recording(|| build(gpu));
-        let slot = Arc::new(Slot { files, build: Box::new(build), current: Mutex::new(made?) });
+        let slot = Arc::new(Slot {
+            files,
+            build: Box::new(build),
+            current: Mutex::new(made?),
+            #[cfg(target_arch = "wasm32")]
+            last_good: Mutex::new(None),
+        });
         let rebuild: Arc<dyn Rebuild> = slot.clone();
         let mut live = gpu.shaders.live.lock().unwrap_or_else(|e| e.into_inner());
         // Pieces that remake theirs (chapter 10's caster, on a new bias)
@@ -65,12 +77,12 @@ impl<P: Clone + wgpu::WasmNotSendSync + 'static> Reloadable<P> {
 #[cfg(not(target_arch = "wasm32"))]
 trait Rebuild: Send + Sync {
     fn uses(&self, file: &str) -> bool;
-    fn rebuild(&self, gpu: &Gpu) -> Result<(), ShaderError>;
+    fn rebuild(self: Arc<Self>, gpu: &Gpu) -> Result<(), ShaderError>;
 }
 #[cfg(target_arch = "wasm32")]
 trait Rebuild {
     fn uses(&self, file: &str) -> bool;
-    fn rebuild(&self, gpu: &Gpu) -> Result<(), ShaderError>;
+    fn rebuild(self: Arc<Self>, gpu: &Gpu) -> Result<(), ShaderError>;
 }
 
 impl<P: wgpu::WasmNotSendSync + 'static> Rebuild for Slot<P> {
@@ -78,11 +90,77 @@ impl<P: wgpu::WasmNotSendSync + 'static> Rebuild for Slot<P> {
         self.files.contains(&file)
     }
 
-    fn rebuild(&self, gpu: &Gpu) -> Result<(), ShaderError> {
+    fn rebuild(self: Arc<Self>, gpu: &Gpu) -> Result<(), ShaderError> {
         // On an error the last good value stays.
+        #[cfg(not(target_arch = "wasm32"))]
         let made = (self.build)(gpu)?;
-        *self.current.lock().unwrap_or_else(|e| e.into_inner()) = made;
+        // A page's device may answer a pipeline's validation only later
+        // (WebGPU): then the value made is taken back when it does.
+        #[cfg(target_arch = "wasm32")]
+        let made = {
+            let scope = gpu.device.push_error_scope(wgpu::ErrorFilter::Validation);
+            let made = (self.build)(gpu)?;
+            let slot = self.clone();
+            let answer = web_late::answer(scope.pop(), move |error| {
+                if let Some(last_good) = slot.last_good.lock().unwrap_or_else(|e| e.into_inner()).take() {
+                    *slot.current.lock().unwrap_or_else(|e| e.into_inner()) = last_good;
+                }
+                web_late::report(error);
+            });
+            if let Some(error) = answer {
+                return Err(ShaderError(error));
+            }
+            made
+        };
+        let last_good = std::mem::replace(&mut *self.current.lock().unwrap_or_else(|e| e.into_inner()), made);
+        #[cfg(target_arch = "wasm32")]
+        {
+            *self.last_good.lock().unwrap_or_else(|e| e.into_inner()) = Some(last_good);
+        }
+        #[cfg(not(target_arch = "wasm32"))]
+        drop(last_good);
         Ok(())
+    }
+}
+
+/// A page's late answers: WebGPU validates a pipeline in the browser's GPU
+/// process and says so in a promise.
+#[cfg(target_arch = "wasm32")]
+mod web_late {
+    use std::cell::RefCell;
+    use std::future::Future;
+    use std::task::{Context, Poll, Waker};
+
+    thread_local! {
+        static LATE: RefCell<Vec<String>> = const { RefCell::new(Vec::new()) };
+    }
+
+    /// The error at once if the scope's answer is ready (WebGL2: wgpu
+    /// validates in the page); otherwise `late` gets it once it comes.
+    pub(super) fn answer(
+        popped: impl Future<Output = Option<wgpu::Error>> + 'static,
+        late: impl FnOnce(String) + 'static,
+    ) -> Option<String> {
+        let mut popped = Box::pin(popped);
+        match popped.as_mut().poll(&mut Context::from_waker(Waker::noop())) {
+            Poll::Ready(error) => error.map(|e| e.to_string()),
+            Poll::Pending => {
+                wasm_bindgen_futures::spawn_local(async move {
+                    if let Some(error) = popped.await {
+                        late(error.to_string());
+                    }
+                });
+                None
+            }
+        }
+    }
+
+    pub(super) fn report(error: String) {
+        LATE.with(|late| late.borrow_mut().push(error));
+    }
+
+    pub(super) fn take() -> Vec<String> {
+        LATE.with(|late| std::mem::take(&mut *late.borrow_mut()))
     }
 }
 
@@ -91,6 +169,11 @@ impl<P: wgpu::WasmNotSendSync + 'static> Rebuild for Slot<P> {
 #[derive(Default)]
 pub(crate) struct ShaderRegistry {
     pub(crate) root: Mutex<Option<std::path::PathBuf>>,
+    /// Text the shader panel put in place of a file's, by path: read before
+    /// the source tree or the embedded copy (see [`Gpu::edit_shader`]).
+    edits: Mutex<HashMap<String, String>>,
+    /// Every file a module was made from on this device, with its imports.
+    met: Mutex<Vec<ShaderFile>>,
     live: Mutex<Vec<Weak<dyn Rebuild>>>,
     /// The files noted by each `build` running now, with its thread
     /// (tests build on one device from several threads), innermost last.
@@ -108,8 +191,24 @@ impl ShaderRegistry {
         (made, noting.remove(mine).1)
     }
 
+    /// The text a module is made from: the panel's edit, else the file
+    /// under `root` (the source tree), else the embedded copy.
+    pub(crate) fn text(&self, file: &ShaderFile, root: Option<&std::path::Path>) -> Result<String, ShaderError> {
+        match self.edits.lock().unwrap_or_else(|e| e.into_inner()).get(file.path) {
+            Some(edited) => Ok(edited.clone()),
+            None => file.source(root),
+        }
+    }
+
     /// `ShaderFile::module` calls this for the file it reads and its imports.
-    pub(crate) fn note(&self, file: &crate::ShaderFile) {
+    pub(crate) fn note(&self, file: &ShaderFile) {
+        let mut met = self.met.lock().unwrap_or_else(|e| e.into_inner());
+        for met_now in std::iter::once(file).chain(file.imports) {
+            if !met.iter().any(|known| known.path == met_now.path) {
+                met.push(*met_now);
+            }
+        }
+        drop(met);
         let mut noting = self.noting.lock().unwrap_or_else(|e| e.into_inner());
         let thread = std::thread::current().id();
         if let Some((_, files)) = noting.iter_mut().rev().find(|(t, _)| *t == thread) {
@@ -138,13 +237,92 @@ impl Gpu {
     pub fn reload_shaders(&self, changed: &[&str]) -> Result<usize, ShaderError> {
         // Outside the registry's lock: a rebuild notes files and may register.
         let users = self.shaders.using(changed);
+        let rebuilt = users.len();
         let mut errors: Vec<String> = Vec::new();
-        for error in users.iter().filter_map(|entry| entry.rebuild(self).err()) {
+        for error in users.into_iter().filter_map(|entry| entry.rebuild(self).err()) {
             // A broken module imported by several pipelines says so once.
             if !errors.contains(&error.0) {
                 errors.push(error.0);
             }
         }
-        if errors.is_empty() { Ok(users.len()) } else { Err(ShaderError(errors.join("\n\n"))) }
+        if errors.is_empty() { Ok(rebuilt) } else { Err(ShaderError(errors.join("\n\n"))) }
+    }
+
+    /// Errors a page's device reported after a rebuild had returned
+    /// (WebGPU validates pipelines in the browser's GPU process): the
+    /// pipelines concerned are back to their last good version. Always
+    /// empty on the desktop, where validation answers at once.
+    pub fn late_shader_errors(&self) -> Vec<String> {
+        #[cfg(target_arch = "wasm32")]
+        return web_late::take();
+        #[cfg(not(target_arch = "wasm32"))]
+        Vec::new()
+    }
+
+    /// The WGSL files this device's live pipelines were made from, the
+    /// modules they import included, by path: what the shader panel lists.
+    pub fn shader_files(&self) -> Vec<ShaderFile> {
+        let met = self.shaders.met.lock().unwrap_or_else(|e| e.into_inner()).clone();
+        let mut used: Vec<ShaderFile> =
+            met.into_iter().filter(|file| !self.shaders.using(&[file.path]).is_empty()).collect();
+        used.sort_by_key(|file| file.path);
+        used
+    }
+
+    /// The text the file at `path` is built from now (an edit, the source
+    /// tree's, or the embedded copy), or `None` for a file no live
+    /// pipeline uses.
+    pub fn shader_text(&self, path: &str) -> Option<String> {
+        let file = self.shader_files().into_iter().find(|file| file.path == path)?;
+        self.shaders.text(&file, self.shader_root().as_deref()).ok()
+    }
+
+    // ANCHOR: edit_shader
+    /// The shader panel's entry point: builds the file at `path` from
+    /// `text` from now on (`None`: from its own file again), and rebuilds
+    /// every live pipeline made from it or from a file that imports it.
+    /// On an error the edit stays in place, as a text editor keeps what was
+    /// typed, while the pipelines keep their last good version.
+    pub fn edit_shader(&self, path: &str, text: Option<&str>) -> Result<usize, ShaderError> {
+        self.set_shader_edit(path, text)?;
+        self.reload_shaders(&[path])
+    }
+    // ANCHOR_END: edit_shader
+
+    /// [`Gpu::edit_shader`] without the rebuild: for an edit that was saved
+    /// to the file it replaces, so that the two agree and nothing reloads.
+    pub fn set_shader_edit(&self, path: &str, text: Option<&str>) -> Result<(), ShaderError> {
+        let files = self.shader_files();
+        let Some(file) = files.iter().find(|file| file.path == path) else {
+            let names: Vec<&str> = files.iter().map(|file| file.path).collect();
+            return Err(ShaderError(format!("no shader {path} here; this chapter's are: {}", names.join(", "))));
+        };
+        let mut edits = self.shaders.edits.lock().unwrap_or_else(|e| e.into_inner());
+        match text {
+            Some(text) => edits.insert(file.path.to_string(), text.to_string()),
+            None => edits.remove(file.path),
+        };
+        Ok(())
+    }
+
+    /// Edits to build with before any pipeline exists (a page restoring the
+    /// reader's edits, or a shared link's, before the chapter is made).
+    /// Paths no pipeline turns out to use are simply never read.
+    pub fn start_with_shader_edits(&self, edits: Vec<(String, String)>) {
+        self.shaders.edits.lock().unwrap_or_else(|e| e.into_inner()).extend(edits);
+    }
+
+    /// Forgets every edit (a chapter that failed to build with them is made
+    /// again without).
+    pub fn drop_shader_edits(&self) {
+        self.shaders.edits.lock().unwrap_or_else(|e| e.into_inner()).clear();
+    }
+
+    /// The files built from an edit now, with its text, by path.
+    pub fn shader_edits(&self) -> Vec<(String, String)> {
+        let edits = self.shaders.edits.lock().unwrap_or_else(|e| e.into_inner());
+        let mut all: Vec<(String, String)> = edits.iter().map(|(path, text)| (path.clone(), text.clone())).collect();
+        all.sort();
+        all
     }
 }

@@ -90,12 +90,12 @@ impl ShaderFile {
         let root = gpu.shader_root();
         let mut imports = Vec::new();
         for import in self.imports {
-            imports.push((import.path, import.source(root.as_deref())?));
+            imports.push((import.path, gpu.shaders.text(import, root.as_deref())?));
         }
         let device = &gpu.device;
         let clip_distances = device.features().contains(wgpu::Features::CLIP_DISTANCES);
         let defs: &[&str] = if clip_distances { &["CLIP_DISTANCES"] } else { &[] };
-        let module = compose_with(&self.source(root.as_deref())?, self.path, &imports, defs)?;
+        let module = compose_with(&gpu.shaders.text(self, root.as_deref())?, self.path, &imports, defs)?;
         Ok(device.create_shader_module(wgpu::ShaderModuleDescriptor {
             label: Some(self.path),
             source: wgpu::ShaderSource::Naga(std::borrow::Cow::Owned(module)),

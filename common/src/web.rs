@@ -175,3 +175,83 @@ async fn next_task() {
     let _ = wasm_bindgen_futures::JsFuture::from(promise).await;
 }
 // ANCHOR_END: prepare
+
+// ANCHOR: stored_edits
+/// The prefix of the page's storage keys that hold a chapter's shader
+/// edits, one key per file: `shader-edit:CHAPTER:PATH`. The page's script
+/// (`xtask/src/web.rs`) writes a shared link's edits there before the
+/// program starts, and reads them to make a link.
+fn edit_key_prefix(chapter: &str) -> String {
+    format!("shader-edit:{chapter}:")
+}
+
+/// The reader's edits to `chapter`'s shaders kept by the page, by path.
+pub fn stored_edits(chapter: &str) -> Vec<(String, String)> {
+    let Some(storage) = web_sys::window().and_then(|w| w.local_storage().ok().flatten()) else { return Vec::new() };
+    let prefix = edit_key_prefix(chapter);
+    let mut edits = Vec::new();
+    for i in 0..storage.length().unwrap_or(0) {
+        let Some(key) = storage.key(i).ok().flatten() else { continue };
+        if let (Some(path), Some(text)) = (key.strip_prefix(&prefix), storage.get_item(&key).ok().flatten()) {
+            edits.push((path.to_string(), text));
+        }
+    }
+    edits.sort();
+    set_edited(&edits);
+    edits
+}
+
+/// Keeps `edits` as the reader's edits to `chapter`'s shaders, in place of
+/// the ones kept before: they survive a reload of the page.
+pub fn store_edits(chapter: &str, edits: &[(String, String)]) {
+    if let Some(storage) = web_sys::window().and_then(|w| w.local_storage().ok().flatten()) {
+        let prefix = edit_key_prefix(chapter);
+        let old: Vec<String> = (0..storage.length().unwrap_or(0))
+            .filter_map(|i| storage.key(i).ok().flatten())
+            .filter(|key| key.starts_with(&prefix))
+            .collect();
+        for key in old {
+            let _ = storage.remove_item(&key);
+        }
+        for (path, text) in edits {
+            let _ = storage.set_item(&format!("{prefix}{path}"), text);
+        }
+    }
+    set_edited(edits);
+}
+// ANCHOR_END: stored_edits
+
+/// `data-edited`: the files the page runs edited, which its banner names.
+fn set_edited(edits: &[(String, String)]) {
+    let paths: Vec<&str> = edits.iter().map(|(path, _)| path.as_str()).collect();
+    set_state("edited", &paths.join(" "));
+}
+
+/// Asks the page's script to put the stored edits into the URL and copy it.
+pub fn share_edits() {
+    let Some(window) = web_sys::window() else { return };
+    let share = js_sys::Reflect::get(&window, &"shareShaderEdits".into()).ok();
+    match share.and_then(|f| f.dyn_into::<js_sys::Function>().ok()) {
+        Some(share) => drop(share.call0(&window)),
+        None => log::warn!("this page has no shareShaderEdits(): a page built by `cargo xtask book` has"),
+    }
+}
+
+/// What the shader panel shows, for tests that read the page:
+/// `data-shader-error` (empty when the last build worked),
+/// `data-shader-error-line` and `data-edit-to-frame-ms`.
+pub fn show_editor_state(editor: &crate::editor::ShaderEditor) {
+    let error = editor.error();
+    let state = |key: &str, value: String| {
+        let body = web_sys::window().and_then(|w| w.document()).and_then(|d| d.body());
+        if body.and_then(|b| b.dataset().get(key)).as_deref() != Some(value.as_str()) {
+            set_state(key, &value);
+        }
+    };
+    state("shaderError", error.map_or_else(String::new, |e| e.message.clone()));
+    state("shaderErrorLine", error.and_then(|e| e.line).map_or_else(String::new, |line| line.to_string()));
+    state("shaderFile", editor.selected().unwrap_or_default().to_string());
+    if let Some(took) = editor.last_edit_to_frame {
+        state("editToFrameMs", format!("{:.1}", took.as_secs_f64() * 1000.0));
+    }
+}

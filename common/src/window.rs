@@ -22,6 +22,7 @@ use winit::keyboard::{KeyCode, PhysicalKey};
 use winit::window::{CursorGrabMode, Window, WindowId};
 
 use crate::args::{Args, check_size};
+use crate::editor::{Request, ShaderEditor};
 use crate::memory::MemoryUse;
 use crate::overlay::{FrameHistory, Overlay, Panel};
 use crate::probe::{self, Probe};
@@ -122,6 +123,13 @@ struct Running<C: Chapter> {
     /// What the overlay shows of memory, and when it was last read.
     memory: MemoryUse,
     memory_read: Option<Instant>,
+    /// The shader panel.
+    editor: ShaderEditor,
+    /// Files the panel saved, with the text saved: when the watcher then
+    /// reports them, they already agree, and nothing reloads twice.
+    saved: Vec<(String, String)>,
+    /// The edits the page last stored (browser), to store only changes.
+    stored_edits: Vec<(String, String)>,
 }
 
 impl<C: Chapter> ApplicationHandler<Opened<C>> for App<C> {
@@ -305,12 +313,33 @@ impl Opening {
 
         let view = args.view_index::<C>();
         let target = Target { format: scene_format, width: config.width, height: config.height };
-        let mut chapter = crate::chapter::create_prepared::<C>(&gpu, target, prepared, &args.chapter_flags)?;
-        chapter.select_view(view);
-        let overlay = Overlay::new(&window, &gpu, overlay_format);
-
+        // Shaders are read from the source tree from the start, so that an
+        // edit saved before this run is what the first frame shows.
         let watcher = shader::ShaderWatcher::start();
         gpu.read_shaders_from(watcher.as_ref().map(|_| PathBuf::from(shader::SHADER_DIR)));
+        // A page starts with the reader's stored edits, or a shared link's.
+        #[cfg(target_arch = "wasm32")]
+        gpu.start_with_shader_edits(crate::web::stored_edits(C::NAME));
+        let stored_edits = gpu.shader_edits();
+        let mut edits_failed = None;
+        let mut chapter = match crate::chapter::create_prepared::<C>(&gpu, target, prepared, &args.chapter_flags) {
+            Err(error) if !stored_edits.is_empty() => {
+                // Edits that no longer build must not keep the chapter from starting.
+                gpu.drop_shader_edits();
+                edits_failed = Some(format!("the stored shader edits did not build, so they are set aside: {error:#}"));
+                let prepared = C::prepare(&gpu).finish(&gpu);
+                crate::chapter::create_prepared::<C>(&gpu, target, prepared, &args.chapter_flags)?
+            }
+            made => made?,
+        };
+        chapter.select_view(view);
+        let overlay = Overlay::new(&window, &gpu, overlay_format);
+        let mut editor = ShaderEditor::new();
+        if let Some(file) = &args.edit {
+            editor
+                .open_on(&gpu, file, args.edit_at.as_deref())
+                .map_err(|e| crate::args::UsageError(format!("--edit {file}: {e}")))?;
+        }
         let status = match &watcher {
             Some(watcher) => format!("watching {} for edits", watcher.dir.display()),
             None => "shaders are built in (no source tree to watch)".into(),
@@ -318,6 +347,7 @@ impl Opening {
         // An unknown URL parameter is worth more than the line above.
         #[cfg(target_arch = "wasm32")]
         let status = crate::web::notice().unwrap_or(status);
+        let status = edits_failed.unwrap_or(status);
         Ok(Running {
             window,
             surface,
@@ -348,6 +378,9 @@ impl Opening {
             last_frame_done: Arc::new(AtomicBool::new(true)),
             memory: MemoryUse::default(),
             memory_read: None,
+            editor,
+            saved: Vec::new(),
+            stored_edits,
         })
     }
 }
@@ -403,6 +436,21 @@ impl<C: Chapter> Running<C> {
             .filter_map(|path| path.strip_prefix(&watcher.dir).ok())
             .map(|path| path.to_string_lossy().replace('\\', "/"))
             .collect();
+        // A file the panel saved holds what is already built from it.
+        let saved = &mut self.saved;
+        files.retain(|file| {
+            let on_disk = std::fs::read_to_string(watcher.dir.join(file)).ok();
+            match saved.iter().position(|(path, text)| path == file && Some(text) == on_disk.as_ref()) {
+                Some(i) => {
+                    saved.remove(i);
+                    false
+                }
+                None => true,
+            }
+        });
+        if files.is_empty() {
+            return;
+        }
         if let Some((_, failing)) = &self.shader_error {
             files.extend(failing.iter().filter(|f| !files.contains(f)).cloned().collect::<Vec<_>>());
         }
@@ -512,6 +560,7 @@ impl<C: Chapter> Running<C> {
             self.time += dt;
         }
         self.reload_shaders();
+        self.editor.update(&self.gpu);
         self.chapter.update(&self.input, dt);
         self.probe.saw(&self.input);
         self.input.end_frame();
@@ -529,8 +578,11 @@ impl<C: Chapter> Running<C> {
             &mut Frame { encoder: &mut encoder, target: &scene_view, time: self.time, view: self.view, timer: &timer },
         );
         let size = [self.config.width, self.config.height];
+        let can_save = self.watcher.is_some();
+        let can_share = cfg!(target_arch = "wasm32");
+        let mut request = Request::Nothing;
         let extra = {
-            let Self { overlay, window, gpu, .. } = self;
+            let Self { overlay, window, gpu, editor, .. } = self;
             let mut panel = Panel {
                 chapter: &mut self.chapter,
                 view: &mut self.view,
@@ -539,11 +591,17 @@ impl<C: Chapter> Running<C> {
                 history: &self.history,
                 shader_error: self.shader_error.as_ref().map(|(error, _)| error.as_str()),
                 show_help: &mut self.show_help,
+                shaders_open: editor.open,
                 status: &self.status,
                 adapter: gpu.adapter.get_info().name,
                 memory: self.memory,
             };
-            overlay.draw(gpu, &mut encoder, &overlay_view, size, window, |ctx| panel.show(ctx))
+            overlay.draw(gpu, &mut encoder, &overlay_view, size, window, |ctx| {
+                if panel.show(ctx) {
+                    editor.open = !editor.open;
+                }
+                request = editor.ui(ctx, gpu, can_save, can_share);
+            })
         };
         self.gpu.queue.submit(extra.into_iter().chain([encoder.finish()]));
         if cfg!(target_arch = "wasm32") {
@@ -553,9 +611,43 @@ impl<C: Chapter> Running<C> {
         }
         self.window.pre_present_notify();
         self.gpu.queue.present(frame);
+        self.editor.drew();
+        self.answer(request);
         Ok(true)
     }
     // ANCHOR_END: frame
+
+    /// Does what the shader panel asked for, and (in a page) keeps the
+    /// reader's edits in the page's storage.
+    fn answer(&mut self, request: Request) {
+        match request {
+            Request::Nothing => {}
+            Request::Save { path, text } => {
+                let file = PathBuf::from(shader::SHADER_DIR).join(&path);
+                match std::fs::write(&file, &text) {
+                    Ok(()) => {
+                        // The file now holds the edit: build from the file again.
+                        let _ = self.gpu.set_shader_edit(&path, None);
+                        self.status = format!("saved {}", file.display());
+                        self.saved.push((path, text));
+                    }
+                    Err(error) => self.status = format!("cannot save {}: {error}", file.display()),
+                }
+            }
+            Request::Share => {
+                #[cfg(target_arch = "wasm32")]
+                crate::web::share_edits();
+            }
+        }
+        let edits = self.gpu.shader_edits();
+        if edits != self.stored_edits {
+            #[cfg(target_arch = "wasm32")]
+            crate::web::store_edits(C::NAME, &edits);
+            self.stored_edits = edits;
+        }
+        #[cfg(target_arch = "wasm32")]
+        crate::web::show_editor_state(&self.editor);
+    }
 
     /// Tells the probe how the frame went, when anyone reads it.
     fn write_probe(&mut self) {
