@@ -11,7 +11,8 @@
 //! - `browser [CHAPTER...]`: only the browser test, on the built book.
 //! - `window [CHAPTER...]`: only the window test.
 //! - `bench [CHAPTER...]`: release build, frame times per view, written into the book
-//!   (`bench sizes`: every default view at three sizes; `bench web`: in Chromium).
+//!   (`bench sizes`: every default view at three sizes; `bench web`: in Chromium;
+//!   `bench saved RAW OUT`: the tables of a run `xtask/gpu-bench.sh` saved).
 //! - `assets`: paint every texture under `assets/` from code (deterministic).
 
 use std::path::{Path, PathBuf};
@@ -20,6 +21,7 @@ use std::process::{Command, ExitCode};
 use anyhow::{Context as _, bail, ensure};
 
 mod assets;
+mod bench_tables;
 mod book;
 mod prerequisites;
 mod web;
@@ -65,6 +67,7 @@ cargo xtask window [CHAPTER..]             drive every chapter's window under Xv
 cargo xtask bench [CHAPTER..]              release build; frame times at 1280x720 into book/src/bench/
 cargo xtask bench web                      wasm sizes, first frames and frame times in Chromium into book/src/bench/web.md
 cargo xtask bench sizes                    every default view at 1280x720, 1920x1080, 2560x1440 into book/src/bench/sizes.md
+cargo xtask bench saved RAW OUT            tables from what xtask/gpu-bench.sh saved in RAW (no toolchain there) into OUT
 cargo xtask assets                         paint every texture under assets/ from code
 ";
 
@@ -215,38 +218,65 @@ const SEED_SIZES: [(u32, u32); 3] = [(1280, 720), (1920, 1080), (2560, 1440)];
 /// and frames per second, from the release binaries already built, written
 /// to `book/src/bench/sizes.md` for the book's page on frame rates.
 fn bench_sizes() -> anyhow::Result<()> {
-    let chapters = chapter_names()?;
-    let mut rows = String::new();
-    let mut adapter = String::new();
-    for chapter in &chapters {
-        let binary = target_dir().join("release").join(chapter);
+    let mut runs = Vec::new();
+    for chapter in chapter_names()? {
+        let binary = target_dir().join("release").join(&chapter);
         // The first view listed is the default.
         let views = run_bench(&binary, &["--list-views"])?;
         let view = views.split_whitespace().next().context("no views listed")?.to_string();
-        let mut cells = Vec::new();
         for (width, height) in SEED_SIZES {
             let size = format!("{width}x{height}");
             println!("$ {chapter} --bench --frames 10 --view {view} --size {size}");
-            let table = run_bench(&binary, &["--bench", "--frames", "10", "--view", &view, "--size", &size])?;
-            // "triangle on ADAPTER, 1920x1080, 10 frames per view"
-            let heading = table.lines().next().unwrap_or_default();
-            let on = heading.split_once(" on ").map_or("", |(_, rest)| rest);
-            adapter = on.split(&format!(", {size}")).next().unwrap_or_default().to_string();
-            let row = table.lines().find(|l| l.contains("| frame (CPU+GPU) |")).context("no frame row")?;
-            let median: f64 = row.split('|').nth(4).context("no median")?.trim().parse()?;
-            cells.push(format!("{median:.1} ms, {:.1} FPS", 1000.0 / median));
+            let printed = run_bench(&binary, &["--bench", "--frames", "10", "--view", &view, "--size", &size])?;
+            runs.push(bench_tables::SizeRun { chapter: chapter.clone(), view: view.clone(), size, printed });
         }
-        rows.push_str(&format!("| {chapter} (`{view}`) | {} |\n", cells.join(" | ")));
     }
-    let heading: Vec<String> = SEED_SIZES.iter().map(|(w, h)| format!("{w} × {h}")).collect();
+    let (adapter, table) = bench_tables::sizes_table(&runs)?;
     let page = format!(
         "Measured by `cargo xtask bench sizes` (release build, each chapter's first view, 10 frames at each \
-         size; median frame): {adapter}.\n\n| chapter | {} |\n|---|---:|---:|---:|\n{rows}",
-        heading.join(" | ")
+         size; median frame): {adapter}.\n\n{table}"
     );
     let path = root().join("book/src/bench/sizes.md");
     std::fs::write(&path, page)?;
     println!("wrote {}", path.display());
+    Ok(())
+}
+
+/// `cargo xtask bench saved RAW OUT`: the tables of a bench run where no
+/// Rust toolchain is (a lent GPU machine), from the files
+/// `xtask/gpu-bench.sh` saved in `RAW` (`gpu.txt`, `sizes.txt`,
+/// `CHAPTER.txt`): `OUT/sizes.md` and `OUT/CHAPTER.md` for each chapter saved.
+fn bench_saved(raw: &Path, out: &Path) -> anyhow::Result<()> {
+    let read = |name: &str| {
+        let path = raw.join(name);
+        std::fs::read_to_string(&path).with_context(|| format!("cannot read {}", path.display()))
+    };
+    let cpu = bench_tables::saved_cpu(&read("gpu.txt")?, &raw.join("gpu.txt"))?;
+    let shown = |path: &Path| path.strip_prefix(root()).unwrap_or(path).display().to_string();
+    let command = format!("cargo xtask bench saved {} {}", shown(raw), shown(out));
+    std::fs::create_dir_all(out).with_context(|| format!("cannot create {}", out.display()))?;
+    let runs = bench_tables::parse_size_runs(&read("sizes.txt")?, &raw.join("sizes.txt"))?;
+    let (adapter, table) = bench_tables::sizes_table(&runs)?;
+    let page = format!(
+        "Measured by `xtask/gpu-bench.sh` (release build, each chapter's first view, 10 frames at each size; \
+         median frame), tabulated by `{command}`: {adapter}; CPU: {cpu}.\n\n{table}"
+    );
+    std::fs::write(out.join("sizes.md"), page)?;
+    let mut written = 0;
+    for chapter in chapter_names()? {
+        let name = format!("{chapter}.txt");
+        if !raw.join(&name).exists() {
+            continue;
+        }
+        let (heading, tables) = bench_tables::chapter_tables(&chapter, &read(&name)?, &raw.join(&name))?;
+        let page = format!(
+            "Measured by `xtask/gpu-bench.sh` (release build, `{chapter} --bench --size 1280x720`), tabulated by \
+             `{command}`: {heading}; CPU: {cpu}.\n\n{tables}"
+        );
+        std::fs::write(out.join(format!("{chapter}.md")), page)?;
+        written += 1;
+    }
+    println!("wrote {} and {written} chapters' tables into {}", out.join("sizes.md").display(), out.display());
     Ok(())
 }
 
@@ -289,6 +319,12 @@ fn bench(args: &[String]) -> anyhow::Result<()> {
         }
         cargo(&build)?;
         return bench_sizes();
+    }
+    if args.first().map(String::as_str) == Some("saved") {
+        let [_, raw, out] = args else {
+            bail!("usage: cargo xtask bench saved RAW OUT (RAW: the folder `xtask/gpu-bench.sh` saved)");
+        };
+        return bench_saved(&root().join(raw), &root().join(out));
     }
     prerequisites::ensure_adapter()?;
     let all = chapter_names()?;
