@@ -6,7 +6,7 @@ enable clip_distances;
 // Every rock is the same 60 vertices; what makes each one itself is 32
 // bytes of instance data: where it stands, which way it faces, how it is
 // stretched, and how light its stone is.
-#import terrain::{globals, lit, clipped, plane_distance}
+#import terrain::{globals, lit, clipped, plane_distance, chunk_colour}
 #import fog::{fog, visibility}
 
 // ANCHOR: rock
@@ -25,6 +25,8 @@ struct RockOutput {
     @location(0) world_position: vec3<f32>,
     @location(1) normal: vec3<f32>,
     @location(2) shade: f32,
+    // The terrain chunk the rock stands in: its group.
+    @location(3) @interpolate(flat) chunk: u32,
 };
 
 // What the fragment shader reads (clip distances are for vertex shaders only).
@@ -33,6 +35,7 @@ struct RockInput {
     @location(0) world_position: vec3<f32>,
     @location(1) normal: vec3<f32>,
     @location(2) shade: f32,
+    @location(3) @interpolate(flat) chunk: u32,
 };
 
 fn turn(v: vec3<f32>, yaw: f32) -> vec3<f32> {
@@ -52,6 +55,9 @@ fn rock_vertex(rock: Rock, position: vec3<f32>, normal: vec3<f32>) -> RockOutput
     // normal matrix, worked out by hand.
     out.normal = turn(normal / rock.scale_shade.xyz, yaw);
     out.shade = rock.scale_shade.w;
+    // Chunks are grid.y quads of scale.x metres a side, grid.x to a row.
+    let cell = vec2<u32>(max(rock.position_yaw.xz, vec2<f32>(0.0)) / (f32(globals.grid.y) * globals.scale.x));
+    out.chunk = min(cell.y, globals.grid.x - 1u) * globals.grid.x + min(cell.x, globals.grid.x - 1u);
 #ifdef CLIP_DISTANCES
     out.clip_distances[0] = plane_distance(world);
 #endif
@@ -99,4 +105,14 @@ fn fs_main(in: RockInput) -> @location(0) vec4<f32> {
 @fragment
 fn fs_flat(in: RockInput) -> @location(0) vec4<f32> {
     return vec4<f32>(0.2, 0.1, 0.07, 1.0);
+}
+
+// The `rock-chunks` view: each rock in its group's colour, the colour
+// chapter 03's `chunks` view gives the chunk, lit but without fog.
+@fragment
+fn fs_groups(in: RockInput) -> @location(0) vec4<f32> {
+    if clipped(in.world_position) {
+        discard;
+    }
+    return vec4<f32>(lit(chunk_colour(in.chunk), normalize(in.normal)), 1.0);
 }

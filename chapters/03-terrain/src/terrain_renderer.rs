@@ -67,6 +67,14 @@ pub struct Viewpoint {
 }
 // ANCHOR_END: viewpoint
 
+impl Viewpoint {
+    /// The frustum of the camera this viewpoint was last aimed from: later
+    /// chapters cull what they group by chunk (chapter 05's rocks) with it.
+    pub fn frustum(&self) -> &Frustum {
+        &self.frustum
+    }
+}
+
 /// The terrain, ready to draw: its data and the layout of group 0. Later
 /// chapters draw the same ground with shaders of their own that
 /// `#import terrain`.

@@ -1,6 +1,8 @@
 //! The Mars plain so far: chapter 03's terrain in chapter 04's fog, strewn
-//! with this chapter's rocks, drawn instanced, one call per rock, or flat.
-//! Chapters 05, 06 and 07 each own one and draw it through explicit inputs.
+//! with this chapter's rocks, culled by chunk and drawn instanced (a call
+//! per run of visible groups, or all of them in one indirect call), one call
+//! per rock, or flat. Chapters 05, 06 and 07 each own one and draw it
+//! through explicit inputs.
 
 use std::sync::Arc;
 
@@ -11,7 +13,8 @@ use fog::{FogBinding, FogSettings, fog_shader};
 use terrain::heightfield::HeightField;
 use terrain::{Shading, Sun, TerrainData, TerrainRenderer, Viewpoint};
 
-use crate::rock_field::{MAX_ONE_PER_DRAW, RockField, RockInstance};
+use crate::rock_field::{MAX_ONE_PER_DRAW, MAX_ROCKS, RockField, RockInstance};
+use crate::rock_groups::{RockRuns, visible_runs};
 
 /// Standing on the plain, eyes 3.5 m up, looking across the rocks at the cliff.
 pub fn plain_camera(field: &HeightField, aspect: f32) -> Camera {
@@ -27,27 +30,45 @@ pub fn plain_camera(field: &HeightField, aspect: f32) -> Camera {
 /// How the rocks are drawn.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum Mode {
-    /// All rocks in one instanced draw call.
+    /// One instanced draw call per run of rocks to draw (all of them, or
+    /// the visible groups, neighbours in the buffer joined).
     Instanced,
+    /// The same runs in one `multi_draw_indexed_indirect` call, from a list
+    /// of draws written to a buffer each frame (`MarsPlain::write_draw_list`).
+    Indirect,
     /// One draw call per rock, each with its own uniform offset.
     OnePerDraw,
     /// Instanced, with a flat colour and no lighting or fog: the floor.
     Flat,
+    /// Instanced, each rock in its chunk group's colour.
+    Groups,
 }
 
-/// What a view shows: the rock count, how they are drawn, and whether the
-/// terrain is drawn too (the bench views leave it out so that the numbers
-/// are the rocks' alone).
+/// What a view shows: how many rocks are in the world (the first of the
+/// buffer, nearest the start), how they are drawn, whether only the groups
+/// in view are drawn, and whether the terrain is drawn too (the bench views
+/// leave it out so that the numbers are the rocks' alone).
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Setup {
     pub rocks: u32,
     pub mode: Mode,
     pub terrain: bool,
+    /// Draw only the rock groups whose box the camera's frustum keeps.
+    pub cull: bool,
 }
 
 impl Setup {
-    /// The plain as the book shows it: the terrain and 200,000 rocks in one draw call.
-    pub const DEFAULT: Self = Self { rocks: 200_000, mode: Mode::Instanced, terrain: true };
+    /// The plain as the book shows it: the terrain and a million rocks over
+    /// the whole map, the groups in view drawn instanced.
+    pub const DEFAULT: Self = Self { rocks: MAX_ROCKS, mode: Mode::Instanced, terrain: true, cull: true };
+}
+
+/// What a device drawing the plain needs: chapter 03's needs, and indirect
+/// draws that may start past instance 0, for `Mode::Indirect` (without
+/// them, that mode draws as `Instanced` does).
+pub fn gpu_needs() -> common::GpuNeeds {
+    let terrain = terrain::gpu_needs();
+    common::GpuNeeds { optional: terrain.optional | wgpu::Features::INDIRECT_FIRST_INSTANCE, ..terrain }
 }
 
 fn rocks_shader() -> ShaderFile {
@@ -61,6 +82,7 @@ struct Pipelines {
     instanced: wgpu::RenderPipeline,
     one_per_draw: wgpu::RenderPipeline,
     flat: wgpu::RenderPipeline,
+    groups: wgpu::RenderPipeline,
 }
 
 fn rock_pipeline(
@@ -96,13 +118,17 @@ fn rock_pipeline(
     })
 }
 
-/// Draw calls recorded for one picture of the plain.
+/// Draw calls recorded for one picture of the plain, and the rocks drawn.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
 pub struct DrawCalls {
     /// One per terrain chunk in view.
     pub terrain: u32,
-    /// One for all rocks, or one per rock.
+    /// One per run of rock groups, one in all (indirect), or one per rock.
     pub rocks: u32,
+    /// Rocks drawn: the world's (`Setup::rocks`), less the culled groups'.
+    pub rocks_drawn: u32,
+    /// Rock groups (chunks with rocks) drawn.
+    pub rock_groups: u32,
 }
 
 impl DrawCalls {
@@ -122,6 +148,13 @@ pub struct MarsPlain {
     /// The fog's uniform (group 1), the same for every picture of a frame.
     pub fog: FogBinding,
     singles_group: wgpu::BindGroup,
+    /// The draws of `Mode::Indirect`, written each frame: one
+    /// `DrawIndexedIndirectArgs` per run, at most one per group.
+    draw_list: wgpu::Buffer,
+    /// Whether indirect draws may start at an instance other than 0 (the
+    /// `INDIRECT_FIRST_INSTANCE` feature); without it `Mode::Indirect` draws
+    /// as `Mode::Instanced` does.
+    indirect_ok: bool,
     /// Rebuilt when fog.wgsl, rocks.wgsl or terrain.wgsl is saved (hot reload).
     pipelines: Reloadable<Pipelines>,
 }
@@ -133,7 +166,14 @@ impl MarsPlain {
     pub fn new(gpu: &Gpu, format: wgpu::TextureFormat, terrain: Arc<TerrainData>) -> anyhow::Result<Self> {
         let device = &gpu.device;
         let terrain = TerrainRenderer::new(gpu, terrain);
-        let rocks = RockField::get(gpu, terrain.field());
+        let rocks = RockField::get(gpu, terrain.field(), &terrain.mesh().bounds);
+        let draw_list = device.create_buffer(&wgpu::BufferDescriptor {
+            label: Some("rock draw list"),
+            size: (rocks.groups.len().max(1) * std::mem::size_of::<wgpu::util::DrawIndexedIndirectArgs>()) as u64,
+            usage: wgpu::BufferUsages::INDIRECT | wgpu::BufferUsages::COPY_DST,
+            mapped_at_creation: false,
+        });
+        let indirect_ok = device.features().contains(wgpu::Features::INDIRECT_FIRST_INSTANCE);
         let fog = FogBinding::new(device);
         let single_layout = device.create_bind_group_layout(&wgpu::BindGroupLayoutDescriptor {
             label: Some("one rock"),
@@ -160,7 +200,7 @@ impl MarsPlain {
             [layout("rocks", &shared), layout("one rock per draw", &[shared[0], shared[1], Some(&single_layout)])];
         let pipelines = Reloadable::new(gpu, move |gpu| Self::pipelines(gpu, &layouts, format))?;
         let singles_group = Self::singles_group(device, &single_layout, &rocks);
-        Ok(Self { terrain, rocks, fog, singles_group, pipelines })
+        Ok(Self { terrain, rocks, fog, singles_group, draw_list, indirect_ok, pipelines })
     }
 
     fn pipelines(
@@ -175,6 +215,7 @@ impl MarsPlain {
             instanced: rock_pipeline(gpu, &module, &layouts[0], format, "vs_instanced", "fs_main"),
             one_per_draw: rock_pipeline(gpu, &module, &layouts[1], format, "vs_single", "fs_main"),
             flat: rock_pipeline(gpu, &module, &layouts[0], format, "vs_instanced", "fs_flat"),
+            groups: rock_pipeline(gpu, &module, &layouts[0], format, "vs_instanced", "fs_groups"),
         })
         .map_err(ShaderError)
     }
@@ -199,10 +240,29 @@ impl MarsPlain {
         self.rocks.placed
     }
 
+    /// Rock groups with rocks in them, of the first `count` rocks.
+    pub fn rock_groups(&self, count: u32) -> u32 {
+        visible_runs(&self.rocks.groups, count, None).groups
+    }
+
+    /// The rocks, grouped by chunk.
+    pub fn rock_field(&self) -> &RockField {
+        &self.rocks
+    }
+
+    /// Bytes of the buffers this plain made on the GPU, by our own count:
+    /// (terrain vertices and indices, rocks and their draw list). Uniforms
+    /// and the terrain's per-chunk flags come on top; they are kilobytes.
+    pub fn gpu_bytes(&self) -> (u64, u64) {
+        let mesh = self.terrain.mesh();
+        let terrain = mesh.vertex_buffer.size() + mesh.index_buffer.size() + mesh.coarse_index_buffer.size();
+        (terrain, self.rocks.gpu_bytes() + self.draw_list.size())
+    }
+
     /// Makes the terrain again from `self.terrain.settings`, and the rocks on it.
     pub fn regenerate(&mut self, gpu: &Gpu) {
         self.terrain.regenerate(gpu);
-        self.rocks = RockField::get(gpu, self.terrain.field());
+        self.rocks = RockField::get(gpu, self.terrain.field(), &self.terrain.mesh().bounds);
         let layout = self.pipelines.get().one_per_draw.get_bind_group_layout(2);
         self.singles_group = Self::singles_group(&gpu.device, &layout, &self.rocks);
     }
@@ -218,6 +278,37 @@ impl MarsPlain {
         self.terrain.aim(queue, viewpoint, camera, sun, Shading::Shaded, clip);
     }
 
+    /// The rocks `setup` draws from `viewpoint`: the first `setup.rocks`
+    /// (at most `MAX_ONE_PER_DRAW` one call per rock), less the groups the
+    /// viewpoint's frustum culls when `setup.cull`.
+    pub fn rock_runs(&self, viewpoint: &Viewpoint, setup: Setup) -> RockRuns {
+        let most = if setup.mode == Mode::OnePerDraw { MAX_ONE_PER_DRAW } else { u32::MAX };
+        let count = setup.rocks.min(self.rocks.placed).min(most);
+        visible_runs(&self.rocks.groups, count, setup.cull.then(|| viewpoint.frustum()))
+    }
+
+    // ANCHOR: write_draw_list
+    /// For `Mode::Indirect`: writes this frame's draws from `viewpoint`, one
+    /// record of five numbers per run, which `draw` then hands the GPU in
+    /// one call. Call it after `aim`, for the one viewpoint drawn in that
+    /// mode (the list is the plain's, not the viewpoint's).
+    pub fn write_draw_list(&self, queue: &wgpu::Queue, viewpoint: &Viewpoint, setup: Setup) {
+        let draws: Vec<u8> = (self.rock_runs(viewpoint, setup).runs.iter())
+            .flat_map(|run| {
+                let draw = wgpu::util::DrawIndexedIndirectArgs {
+                    index_count: self.rocks.mesh.index_count,
+                    instance_count: run.len() as u32,
+                    first_index: 0,
+                    base_vertex: 0,
+                    first_instance: run.start,
+                };
+                draw.as_bytes().to_vec()
+            })
+            .collect();
+        queue.write_buffer(&self.draw_list, 0, &draws);
+    }
+    // ANCHOR_END: write_draw_list
+
     // ANCHOR: draw
     /// Records the terrain (unless `setup` leaves it out) and `setup.rocks`
     /// rocks into `pass`, as seen from `viewpoint`.
@@ -230,38 +321,50 @@ impl MarsPlain {
             pass.set_pipeline(&self.pipelines.get().terrain);
             calls.terrain = self.terrain.draw(pass, viewpoint) as u32;
         }
-        calls.rocks = self.draw_rocks(pass, setup);
+        let drawn = self.rock_runs(viewpoint, setup);
+        calls.rocks = self.draw_rocks(pass, setup.mode, &drawn);
+        (calls.rocks_drawn, calls.rock_groups) = (drawn.rocks, drawn.groups);
         calls
     }
     // ANCHOR_END: draw
 
     // ANCHOR: draw_rocks
-    /// Draws the first `setup.rocks` rocks; returns the number of draw calls.
-    fn draw_rocks(&self, pass: &mut wgpu::RenderPass<'_>, setup: Setup) -> u32 {
-        let Setup { mode, .. } = setup;
-        let rocks = setup.rocks.min(self.rocks.placed);
+    /// Draws the rocks of `drawn`'s runs; returns the number of draw calls.
+    fn draw_rocks(&self, pass: &mut wgpu::RenderPass<'_>, mode: Mode, drawn: &RockRuns) -> u32 {
         let mesh = &self.rocks.mesh;
         let pipelines = self.pipelines.get();
         pass.set_vertex_buffer(0, mesh.vertex_buffer.slice(..));
         pass.set_index_buffer(mesh.index_buffer.slice(..), wgpu::IndexFormat::Uint32);
         match mode {
-            Mode::Instanced | Mode::Flat => {
-                pass.set_pipeline(if mode == Mode::Flat { &pipelines.flat } else { &pipelines.instanced });
+            Mode::Indirect if self.indirect_ok => {
+                pass.set_pipeline(&pipelines.instanced);
                 pass.set_vertex_buffer(1, self.rocks.instances.slice(..));
-                // Every rock, one call: the GPU loops over the instances itself.
-                pass.draw_indexed(0..mesh.index_count, 0, 0..rocks);
+                // One call: the GPU reads each run's draw from the list.
+                pass.multi_draw_indexed_indirect(&self.draw_list, 0, drawn.runs.len() as u32);
                 1
+            }
+            Mode::Instanced | Mode::Indirect | Mode::Flat | Mode::Groups => {
+                pass.set_pipeline(match mode {
+                    Mode::Flat => &pipelines.flat,
+                    Mode::Groups => &pipelines.groups,
+                    _ => &pipelines.instanced,
+                });
+                pass.set_vertex_buffer(1, self.rocks.instances.slice(..));
+                // One call per run of rocks; the GPU loops over its instances itself.
+                for run in &drawn.runs {
+                    pass.draw_indexed(0..mesh.index_count, 0, run.clone());
+                }
+                drawn.runs.len() as u32
             }
             Mode::OnePerDraw => {
                 pass.set_pipeline(&pipelines.one_per_draw);
-                let rocks = rocks.min(MAX_ONE_PER_DRAW);
-                for i in 0..rocks {
+                for i in drawn.runs.iter().flat_map(|run| run.clone()) {
                     // A bind group change and a draw per rock, validated and
                     // recorded one by one: this is the cost instancing removes.
                     pass.set_bind_group(2, &self.singles_group, &[i * self.rocks.single_stride]);
                     pass.draw_indexed(0..mesh.index_count, 0, 0..1);
                 }
-                rocks
+                drawn.rocks
             }
         }
     }

@@ -1,15 +1,18 @@
 //! The rocks: one small record per rock, read by the GPU once per instance;
-//! a million of them scattered over the plain; and the `RockField` that
-//! holds them on the GPU, made once and shared.
+//! a million of them scattered over the whole map; and the `RockField` that
+//! holds them on the GPU, grouped by terrain chunk, made once and shared.
 
 use std::sync::Arc;
 
+use common::glam::Vec3;
 use common::wgpu::util::DeviceExt as _;
 use common::{Gpu, Mesh, wgpu};
-use terrain::heightfield::HeightField;
+use terrain::chunks::Aabb;
+use terrain::heightfield::{HeightField, TerrainSettings};
 
 use crate::mars_plain::plain_camera;
 use crate::rng::Rng;
+use crate::rock_groups::{RockGroup, group_by_chunk};
 use crate::rock_mesh::rock_mesh;
 
 // ANCHOR: instance
@@ -39,23 +42,20 @@ impl RockInstance {
 /// How many places a rock may try before the scatter gives up on it.
 pub const ATTEMPTS_PER_ROCK: usize = 20;
 
-/// Up to `count` rocks scattered over a 1.6 km square of the plain in front
-/// of the start camera, each on the ground, half buried, never on a steep
-/// slope. Placement is uniform, so the first n of them are a fair sample at
-/// any n: the rock-count slider just draws fewer. A random place on a slope
+/// Up to `count` rocks scattered over the whole map, each on the ground,
+/// half buried, never on a steep slope. A random place on a slope
 /// is rejected and another tried; on terrain that is steep almost
 /// everywhere (the sliders can make it so) that could go on for ever, so
 /// after `ATTEMPTS_PER_ROCK × count` tries the scatter stops, with fewer rocks.
 pub fn scatter(field: &HeightField, count: usize, seed: u64) -> Vec<RockInstance> {
     let mut rng = Rng::new(seed);
-    let centre = plain_camera(field, 1.0).position;
+    let extent = field.settings.extent();
     let mut rocks = Vec::with_capacity(count);
     for _ in 0..count.saturating_mul(ATTEMPTS_PER_ROCK) {
         if rocks.len() == count {
             break;
         }
-        let x = centre.x + rng.range(-800.0, 800.0);
-        let z = centre.z + rng.range(-1400.0, 200.0);
+        let (x, z) = (rng.range(0.0, extent), rng.range(0.0, extent));
         // Dust does not stay on steep slopes, and neither do rocks.
         let normal = field.normal((x / field.settings.spacing) as i64, (z / field.settings.spacing) as i64);
         if normal.y < 0.9 {
@@ -76,31 +76,54 @@ pub fn scatter(field: &HeightField, count: usize, seed: u64) -> Vec<RockInstance
 }
 // ANCHOR_END: scatter
 
-/// The most rocks the instance buffer holds, and the most drawn one by one.
+/// The rocks on the default map (64 × 64 chunks, 4 km a side): about
+/// 60,000 a square kilometre. And the most drawn one by one.
 pub const MAX_ROCKS: u32 = 1_000_000;
 pub const MAX_ONE_PER_DRAW: u32 = 20_000;
+
+/// How many rocks the scatter tries to place on a map of `settings`: as
+/// many a chunk as on the default map, so a million there.
+pub fn rocks_on_map(settings: &TerrainSettings) -> usize {
+    const DEFAULT_CHUNKS: u64 = 64 * 64;
+    (u64::from(MAX_ROCKS) * u64::from(settings.chunks_per_side.pow(2)) / DEFAULT_CHUNKS) as usize
+}
 /// The seed of the rocks' scatter and of their mesh.
 pub(crate) const SEED: u64 = 5;
 
-/// The rocks on the GPU: the one mesh, every rock's instance record, and
-/// the first `MAX_ONE_PER_DRAW` of them again, one per 256-byte uniform
-/// slot, for the one-draw-per-rock comparison. Made once per terrain and
-/// device, and shared (a million rocks take a moment to scatter).
+// ANCHOR: rock_field
+/// The rocks on the GPU: the one mesh, every rock's instance record grouped
+/// by terrain chunk, and the first `MAX_ONE_PER_DRAW` of them again, one per
+/// 256-byte uniform slot, for the one-draw-per-rock comparison. Made once
+/// per terrain and device, and shared (a million rocks take a moment to
+/// scatter).
 pub struct RockField {
     pub(crate) mesh: Mesh,
     pub(crate) instances: wgpu::Buffer,
     pub(crate) singles: wgpu::Buffer,
     pub(crate) single_stride: u32,
-    /// How many rocks the scatter placed (fewer than `MAX_ROCKS` only on
+    /// One group per terrain chunk, nearest the start camera first: which
+    /// instances it holds, and the box they fit in.
+    pub groups: Vec<RockGroup>,
+    /// How many rocks the scatter placed (fewer than `rocks_on_map` only on
     /// terrain too steep for them).
     pub placed: u32,
 }
+// ANCHOR_END: rock_field
 
 impl RockField {
-    pub fn get(gpu: &Gpu, field: &HeightField) -> Arc<Self> {
+    /// The rocks of the terrain whose height field is `field` and whose
+    /// chunks' boxes are `chunk_bounds` (chapter 03's `TerrainMesh::bounds`).
+    pub fn get(gpu: &Gpu, field: &HeightField, chunk_bounds: &[Aabb]) -> Arc<Self> {
         gpu.cached((field.settings, SEED), || {
             let device = &gpu.device;
-            let rocks = scatter(field, MAX_ROCKS as usize, SEED);
+            let mesh = rock_mesh(SEED);
+            let scattered = scatter(field, rocks_on_map(&field.settings), SEED);
+            // The farthest any rock reaches from where it stands: the mesh's
+            // radius, stretched by the largest scale of any rock.
+            let radius = mesh.vertices.iter().map(|v| Vec3::from(v.position).length()).fold(0.0, f32::max);
+            let stretch = scattered.iter().flat_map(|r| r.scale).fold(0.0, f32::max);
+            let start = plain_camera(field, 1.0).position;
+            let (rocks, groups) = group_by_chunk(&scattered, &field.settings, chunk_bounds, radius * stretch, start);
             let instances = device.create_buffer_init(&wgpu::util::BufferInitDescriptor {
                 label: Some("rock instances"),
                 contents: bytemuck::cast_slice(&rocks),
@@ -118,13 +141,21 @@ impl RockField {
                 usage: wgpu::BufferUsages::UNIFORM,
             });
             Self {
-                mesh: rock_mesh(SEED).upload(device, "rock"),
+                mesh: mesh.upload(device, "rock"),
                 instances,
                 singles,
                 single_stride,
+                groups,
                 placed: rocks.len() as u32,
             }
         })
+    }
+
+    /// Bytes of the buffers the rocks hold on the GPU: the mesh, the
+    /// instances and the one-per-draw slots.
+    pub fn gpu_bytes(&self) -> u64 {
+        let mesh = self.mesh.vertex_buffer.size() + self.mesh.index_buffer.size();
+        mesh + self.instances.size() + self.singles.size()
     }
 }
 
@@ -160,6 +191,23 @@ mod tests {
             (0..size * size).map(|i| if i % size < size / 2 { 0.0 } else { 1.2 * (i % size) as f32 }).collect();
         let field = HeightField { settings, size, heights: half };
         assert_eq!(scatter(&field, 1_000, SEED).len(), 1_000);
+    }
+
+    #[test]
+    fn rocks_cover_the_whole_map() {
+        let field = HeightField::generate(TerrainSettings { chunks_per_side: 16, ..Default::default() });
+        let rocks = scatter(&field, rocks_on_map(&field.settings), SEED);
+        assert_eq!(rocks_on_map(&TerrainSettings::default()), MAX_ROCKS as usize);
+        assert_eq!(rocks.len(), 62_500, "a million a 64 × 64-chunk map, a sixteenth on 16 × 16");
+        // Every one of the 4 × 4 quarters of the map has its share, give or
+        // take what the cliff and the slopes refuse.
+        let quarter = field.settings.extent() / 4.0;
+        let mut counts = [0usize; 16];
+        for rock in &rocks {
+            let cell = |v: f32| ((v / quarter) as usize).min(3);
+            counts[cell(rock.position[2]) * 4 + cell(rock.position[0])] += 1;
+        }
+        assert!(counts.iter().all(|&c| c > rocks.len() / 16 / 2), "{counts:?}");
     }
 
     #[test]

@@ -124,7 +124,7 @@ impl Chapter for SkyboxChapter {
             controller: FlyController { speed: 20.0, ..Default::default() },
             movement: Movement::Fly,
             fog: FogSettings::HAZE,
-            rocks: instancing::Setup { rocks: 200_000, mode: instancing::Mode::Instanced, terrain: true },
+            rocks: instancing::Setup::DEFAULT,
             settings: Settings::DEFAULT,
             day_seconds: 240.0,
             phase: Settings::DEFAULT.start_phase,

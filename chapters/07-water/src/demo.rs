@@ -12,7 +12,7 @@ use common::{
     ViewRow, anyhow, egui, views_of, wgpu,
 };
 use fog::FogSettings;
-use instancing::{MarsPlain, Mode, Setup, plain_camera};
+use instancing::{MarsPlain, Setup, plain_camera};
 use skybox::{Sky, SkyViewpoint, sun_at};
 use terrain::ground::{self, Movement};
 use terrain::heightfield::HeightField;
@@ -277,7 +277,7 @@ impl Chapter for WaterChapter {
             movement: Movement::Fly,
             orbiting: None,
             fog: FogSettings::HAZE,
-            rocks: Setup { rocks: 200_000, mode: Mode::Instanced, terrain: true },
+            rocks: Setup::DEFAULT,
             settings,
             day_seconds: 240.0,
             level,

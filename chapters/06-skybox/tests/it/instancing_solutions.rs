@@ -11,7 +11,9 @@ use common::headless::{OFFSCREEN_FORMAT, Offscreen, capture, read_texture};
 use common::wgpu::util::DeviceExt as _;
 use common::{Camera, Chapter, Gpu, MeshData, PassTimer, ShaderFile, Target, Vertex, image, shader, wgpu};
 use fog::{FogBinding, FogSettings};
-use instancing::{InstancingChapter, RockInstance, plain_camera, rock_mesh, scatter};
+use instancing::{
+    InstancingChapter, MAX_ROCKS, RockGroup, RockInstance, RockRuns, plain_camera, rock_mesh, scatter, visible_runs,
+};
 use terrain::chunks::Aabb;
 use terrain::culling::Frustum;
 use terrain::heightfield::{HeightField, TerrainSettings};
@@ -241,89 +243,55 @@ fn exercise_3_four_rock_meshes_cost_three_more_calls() {
     let rock_pixels = |picture: &image::RgbaImage| picture.pixels().filter(|&&p| p != sky).count();
     eprintln!("rock pixels with one mesh {}, with four {}", rock_pixels(&one), rock_pixels(&four));
     assert_ne!(four, one);
-    // Three more calls: the default view's 1,133 become 1,136, and the
-    // meshes take 3 × 60 vertices × 32 bytes = 5,760 bytes more.
+    // Three more calls where there was one, and the meshes take
+    // 3 × 60 vertices × 32 bytes = 5,760 bytes more.
     assert_eq!(3 * one_mesh.vertices.len() * size_of::<Vertex>(), 5_760);
 }
 
-// ANCHOR: rocks_by_chunk
-/// Exercise 4: the rocks sorted by the terrain chunk they stand in, and
-/// the range of them in each chunk (`n × n` chunks of `size` metres).
-fn rocks_by_chunk(mut rocks: Vec<RockInstance>, n: u32, size: f32) -> (Vec<RockInstance>, Vec<Range<u32>>) {
-    let chunk_of = |rock: &RockInstance| {
-        let [x, _, z] = rock.position.map(|c| (c / size).clamp(0.0, n as f32 - 1.0) as u32);
-        z * n + x
-    };
-    rocks.sort_by_key(chunk_of);
-    let mut counts = vec![0; (n * n) as usize];
-    rocks.iter().for_each(|rock| counts[chunk_of(rock) as usize] += 1);
-    let mut start = 0;
-    let ranges = counts
-        .iter()
-        .map(|count| {
-            start += count;
-            start - count..start
-        })
-        .collect();
-    (rocks, ranges)
+// ANCHOR: near_and_far
+/// Exercise 4: the runs the chapter draws, split by distance: the groups
+/// whose box comes nearer than `near` metres to the eye keep the full rock,
+/// the others are drawn with a coarse one. Each half is a list of runs of
+/// its own, one instanced call each, as before.
+fn near_and_far(groups: &[RockGroup], count: u32, frustum: &Frustum, eye: Vec3, near: f32) -> (RockRuns, RockRuns) {
+    // The nearest point of a box to the eye is the eye clamped into it.
+    let distance = |b: &Aabb| eye.clamp(b.min, b.max).distance(eye);
+    let (close, far): (Vec<RockGroup>, Vec<RockGroup>) =
+        groups.iter().cloned().partition(|group| distance(&group.bounds) < near);
+    (visible_runs(&close, count, Some(frustum)), visible_runs(&far, count, Some(frustum)))
 }
-
-/// Exercise 4: the instance ranges to draw, one call each: the rocks of
-/// every chunk whose box (grown by the largest rock, so that no rock can
-/// poke out of a culled chunk) the frustum keeps. Chunks next to each
-/// other in a row are next to each other in the sorted rocks, so their
-/// ranges join into one call.
-fn visible_rock_ranges(
-    ranges: &[Range<u32>],
-    bounds: &[Aabb],
-    frustum: &Frustum,
-    largest_rock: f32,
-) -> Vec<Range<u32>> {
-    let mut calls: Vec<Range<u32>> = Vec::new();
-    for (range, b) in ranges.iter().zip(bounds) {
-        let grown = Aabb { min: b.min - Vec3::splat(largest_rock), max: b.max + Vec3::splat(largest_rock) };
-        if range.is_empty() || !frustum.intersects(&grown) {
-            continue;
-        }
-        match calls.last_mut() {
-            Some(last) if last.end == range.start => last.end = range.end,
-            _ => calls.push(range.clone()),
-        }
-    }
-    calls
-}
-// ANCHOR_END: rocks_by_chunk
+// ANCHOR_END: near_and_far
 
 #[test]
-fn exercise_4_culling_rocks_by_chunk_draws_fewer_rocks_and_the_same_picture() {
+fn exercise_4_far_rocks_with_a_coarse_mesh_save_three_fifths_of_the_vertices() {
     let gpu = crate::plain_gpu();
-    let lab = RockLab::new(gpu);
-    let (field, mesh) = (lab.terrain.field(), lab.terrain.mesh());
-    let rocks = scatter(field, 200_000, 5);
-    // The largest rock: 2.1 m at most, stretched by at most 1.5.
-    let largest = rocks.iter().map(|r| r.scale.iter().copied().fold(0.0, f32::max)).fold(0.0, f32::max);
-    assert!(largest <= 3.15);
-    let chunk_size = field.settings.extent() / mesh.chunks_per_side as f32;
-    let (sorted, ranges) = rocks_by_chunk(rocks.clone(), mesh.chunks_per_side, chunk_size);
-    let frustum = Frustum::from_view_projection(lab.camera.view_projection());
-    let calls = visible_rock_ranges(&ranges, &mesh.bounds, &frustum, largest);
-    let drawn: u32 = calls.iter().map(|r| r.len() as u32).sum();
-    let chunks_with_rocks = ranges.iter().filter(|r| !r.is_empty()).count();
+    let target = Target { format: OFFSCREEN_FORMAT, width: 320, height: 180 };
+    let chapter: InstancingChapter = common::chapter::create(gpu, target, &Default::default()).unwrap();
+    // The default view's camera, with its far plane in the haze.
+    let camera = Camera { far: FogSettings::HAZE.far_plane(), ..chapter.camera };
+    let frustum = Frustum::from_view_projection(camera.view_projection());
+    let groups = &chapter.plain.rock_field().groups;
+    let all = visible_runs(groups, MAX_ROCKS, Some(&frustum));
+    let (near, far) = near_and_far(groups, MAX_ROCKS, &frustum, camera.position, 300.0);
+    assert_eq!(near.rocks + far.rocks, all.rocks, "every rock drawn once, near or far");
+    // 60 vertices a rock; an octahedron, flat-shaded, has 8 × 3 = 24.
+    let (before, after) = (60 * all.rocks, 60 * near.rocks + 24 * far.rocks);
+    let saved = 100.0 * f64::from(before - after) / f64::from(before);
     eprintln!(
-        "{drawn} of {} rocks drawn, in {} calls ({chunks_with_rocks} chunks hold rocks)",
-        rocks.len(),
-        calls.len()
+        "{} rocks: {} within 300 m, {} beyond; {before} vertices become {after} ({saved:.0} % fewer), in {} + {} calls",
+        all.rocks,
+        near.rocks,
+        far.rocks,
+        near.runs.len(),
+        far.runs.len()
     );
-    let rock = rock_mesh(5);
-    let all = lab.draw(gpu, &rocks, &[(&rock, 0..rocks.len() as u32)]);
-    let calls_with_mesh: Vec<_> = calls.iter().map(|r| (&rock, r.clone())).collect();
-    let culled = lab.draw(gpu, &sorted, &calls_with_mesh);
-    let differing = all.pixels().zip(culled.pixels()).filter(|(a, b)| a != b).count();
-    eprintln!("{differing} pixels differ");
-    // Two thirds of the rocks are in view (the scatter lies ahead of the
-    // camera), in one call per row of chunks, and the picture is the same.
-    assert_eq!(differing, 0);
-    assert!(drawn.abs_diff(131_610) < 500 && calls.len() == 18, "{drawn} rocks in {} calls", calls.len());
+    // Within 300 m is (300 / 2088)² of the view's area, about 2 %: nearly
+    // every rock is far, and 36 of its 60 vertices go.
+    assert!(near.rocks * 20 < all.rocks);
+    assert!((58.0..60.0).contains(&saved), "{saved}");
+    // The figures page 05's solution gives.
+    assert_eq!((all.rocks, near.rocks, before, after), (276_571, 6_279, 16_594_260, 6_863_748));
+    assert_eq!((near.runs.len(), far.runs.len()), (14, 776));
 }
 
 /// Exercise 5: chapter 03's visible chunks in one instanced call. All the

@@ -1,6 +1,6 @@
 //! Chapter 06's integration tests, one binary: the sun in the sky is the
-//! light on the ground, and the worked solutions to the exercises of pages
-//! 04, 05 and 06.
+//! light on the ground, chapter 05's rocks culled by chunk, and the worked
+//! solutions to the exercises of pages 04, 05 and 06.
 //!
 //! One test binary per crate: each links wgpu, naga, egui and winit, so
 //! every extra file in `tests/` would be another link of all of them.
@@ -15,12 +15,14 @@ use common::Gpu;
 
 mod fog_solutions;
 mod instancing_solutions;
+mod rock_culling;
 mod solutions;
 mod sun;
 
 /// The device every test here that draws the Mars plain shares, with the
-/// needs of the chapters that draw it (`terrain::gpu_needs`).
+/// needs of the plain (`instancing::gpu_needs`: chapter 03's, and indirect
+/// draws for chapter 05's `multi-draw` view).
 pub fn plain_gpu() -> &'static Gpu {
     static GPU: OnceLock<Gpu> = OnceLock::new();
-    GPU.get_or_init(|| Gpu::headless(terrain::gpu_needs()).expect("an adapter (lavapipe will do)"))
+    GPU.get_or_init(|| Gpu::headless(instancing::gpu_needs()).expect("an adapter (lavapipe will do)"))
 }

@@ -1,0 +1,121 @@
+//! Memory against map size, as the Mars project measured it (its heap: 1.9
+//! MB for a map of 4 × 4 sections, 29 MB for 12 × 12): the plain made on
+//! maps of 1025², 2049² and 4097² heights, each on a device of its own, and
+//! the bytes it holds, by our own count of its buffers and by wgpu's count
+//! of everything the device gained (`common::memory`).
+
+use common::headless::OFFSCREEN_FORMAT;
+use common::memory::gpu_bytes;
+use common::{Gpu, anyhow, wgpu};
+use terrain::TerrainData;
+use terrain::heightfield::TerrainSettings;
+
+use crate::mars_plain::{MarsPlain, gpu_needs};
+
+// ANCHOR: map_memory
+/// What the plain holds on one map.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct MapMemory {
+    /// Heights along one side of the map.
+    pub samples: u32,
+    pub chunks: u32,
+    pub rocks: u32,
+    /// The height field, on the CPU: 4 bytes a height.
+    pub heights: u64,
+    /// On the GPU: the terrain's vertices and shared indices.
+    pub terrain: u64,
+    /// On the GPU: the rock mesh, the instances, the one-per-draw slots and
+    /// the indirect draw list.
+    pub rock_bytes: u64,
+    /// Everything the device gained, buffers and textures, by wgpu's count;
+    /// `None` where the backend keeps none.
+    pub counted: Option<u64>,
+}
+
+impl MapMemory {
+    /// Makes the plain on a map of `chunks_per_side` × `chunks_per_side`
+    /// chunks, on a new device, and measures what it holds.
+    pub fn measure(chunks_per_side: u32) -> anyhow::Result<Self> {
+        let gpu = Gpu::headless(gpu_needs())?;
+        let before = gpu_bytes(&gpu.device).unwrap_or(0);
+        let settings = TerrainSettings { chunks_per_side, ..Default::default() };
+        let plain = MarsPlain::new(&gpu, OFFSCREEN_FORMAT, TerrainData::get(&gpu, settings))?;
+        // Buffers made with contents go up through staging buffers of the
+        // same size, freed once the queue has copied them: count after that.
+        gpu.queue.submit([]);
+        gpu.device.poll(wgpu::PollType::wait_indefinitely())?;
+        let counted = gpu_bytes(&gpu.device).map(|after| after - before);
+        let (terrain, rock_bytes) = plain.gpu_bytes();
+        let field = plain.terrain.field();
+        Ok(Self {
+            samples: field.size,
+            chunks: chunks_per_side,
+            rocks: plain.rocks_placed(),
+            heights: (field.heights.len() * std::mem::size_of::<f32>()) as u64,
+            terrain,
+            rock_bytes,
+            counted,
+        })
+    }
+}
+// ANCHOR_END: map_memory
+
+impl MapMemory {
+    /// One row of the book's table, sizes in MB.
+    pub fn row(&self) -> String {
+        let mb = |bytes: u64| format!("{:.1}", bytes as f64 / 1e6);
+        format!(
+            "| {0}² | {1} × {1} | {2} | {3} | {4} | {5} | {6} |",
+            self.samples,
+            self.chunks,
+            common::book_figures::thousands(self.rocks.into()),
+            mb(self.heights),
+            mb(self.terrain),
+            mb(self.rock_bytes),
+            self.counted.map_or("n/a".into(), mb)
+        )
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn the_plain_on_a_1025_map_holds_the_buffers_we_count() {
+        let memory = MapMemory::measure(16).unwrap();
+        eprintln!("{}", memory.row());
+        assert_eq!((memory.samples, memory.rocks), (1025, 62_500));
+        assert_eq!(memory.heights, 4 * 1025 * 1025);
+        // Worked out here, not read from the buffers: 8 bytes for each of
+        // 65 × 65 vertices in 256 chunks, the shared 16-bit indices (64 × 64
+        // quads, and 8 × 8 coarse ones, 6 indices each); 32 bytes a rock,
+        // 60 vertices of 32 bytes and 60 32-bit indices for the mesh, 20
+        // bytes of draw list per group, and 20,000 uniform slots of 32 bytes
+        // or more (each starts at a multiple of the device's alignment for
+        // uniform offsets: 32 bytes on lavapipe, 256 on many GPUs).
+        let terrain = 8 * 65 * 65 * 256 + 2 * 6 * (64 * 64 + 8 * 8);
+        assert_eq!(memory.terrain, terrain);
+        let slots = memory.rock_bytes - (32 * 62_500 + 60 * 32 + 60 * 4 + 20 * 256);
+        assert!(
+            slots.is_multiple_of(20_000) && [32, 64, 128, 256].contains(&(slots / 20_000)),
+            "{slots} bytes of slots"
+        );
+        // wgpu counts every buffer the plain made: ours, and the uniforms
+        // and per-chunk flags on top, a few kilobytes.
+        if let Some(counted) = memory.counted {
+            let ours = memory.terrain + memory.rock_bytes;
+            assert!(counted >= ours && counted - ours < 64 * 1024, "wgpu counts {counted} bytes, we {ours}");
+        }
+    }
+
+    /// The book's table, by hand (4097² takes a while in a debug build):
+    /// `cargo test -p instancing --release -- --ignored memory_table --nocapture`.
+    #[test]
+    #[ignore]
+    fn memory_table() {
+        for chunks in [16, 32, 64] {
+            println!("{}", MapMemory::measure(chunks).unwrap().row());
+        }
+    }
+}
