@@ -4,13 +4,18 @@
 // same `light_surface`: once per face, per vertex, or per fragment.
 #import lighting::lights::{frame, Surface, light_surface, heat}
 
-// 32 bytes, as GpuMaterial in lib.rs. Emissive light is already scaled by
-// how much it shows now (lamps only at night).
+// 64 bytes, as GpuMaterial in city_meshes.rs. Emissive light is already
+// scaled by how much it shows now (lamps only at night). The albedo turns
+// into albedo_high between the heights high_from and high_to: the
+// countryside's sand and grass; other materials have one colour both ways.
 struct Material {
     albedo: vec3<f32>,
     specular: f32,
     emissive: vec3<f32>,
     shininess: f32,
+    albedo_high: vec3<f32>,
+    high_from: f32,
+    high_to: f32,
 };
 @group(1) @binding(0) var<storage, read> materials: array<Material>;
 
@@ -48,9 +53,14 @@ fn place(vertex: Vertex, instance: Instance) -> Placed {
     return Placed(world, normalize(normal_matrix * vertex.normal), instance.material);
 }
 
-fn surface_of(material: Material) -> Surface {
-    return Surface(material.albedo, material.specular, material.shininess);
+// ANCHOR: by_height
+// The surface at a point `world`: its colour blended by height (countryside.rs:
+// ground_colour), the same formula for every material.
+fn surface_of(material: Material, world: vec3<f32>) -> Surface {
+    let high = smoothstep(material.high_from, material.high_to, world.y);
+    return Surface(mix(material.albedo, material.albedo_high, high), material.specular, material.shininess);
 }
+// ANCHOR_END: by_height
 
 // ANCHOR: phong
 // Phong shading: the normal is interpolated, and each fragment is lit.
@@ -73,7 +83,7 @@ fn fs_phong(in: PhongOutput) -> @location(0) vec4<f32> {
         return vec4<f32>(heat(in.world), 1.0);
     }
     let material = materials[in.material];
-    let lit = light_surface(in.world, normalize(in.normal), surface_of(material));
+    let lit = light_surface(in.world, normalize(in.normal), surface_of(material, in.world));
     return vec4<f32>(lit + material.emissive, 1.0);
 }
 // ANCHOR_END: phong
@@ -89,7 +99,7 @@ struct LitOutput {
 fn lit_vertex(vertex: Vertex, instance: Instance) -> LitOutput {
     let placed = place(vertex, instance);
     let material = materials[placed.material];
-    let lit = light_surface(placed.world, placed.normal, surface_of(material)) + material.emissive;
+    let lit = light_surface(placed.world, placed.normal, surface_of(material, placed.world)) + material.emissive;
     return LitOutput(frame.view_proj * vec4<f32>(placed.world, 1.0), placed.world, lit);
 }
 

@@ -70,6 +70,16 @@ pub enum Material {
     TailLight,
     CarPaint,
     Drone,
+    /// The countryside's ground: sand near the water, grass above
+    /// (countryside.rs), by the height of each point.
+    Countryside,
+    /// The river.
+    Water,
+    /// The trees' trunks and foliage.
+    Bark,
+    Leaves,
+    /// The billboard's panel.
+    Billboard,
 }
 
 /// How a material responds to light.
@@ -87,7 +97,7 @@ pub struct Surface {
 }
 
 impl Material {
-    pub const ALL: [Material; 14] = [
+    pub const ALL: [Material; 19] = [
         Material::Ground,
         Material::Road,
         Material::Concrete,
@@ -102,6 +112,11 @@ impl Material {
         Material::TailLight,
         Material::CarPaint,
         Material::Drone,
+        Material::Countryside,
+        Material::Water,
+        Material::Bark,
+        Material::Leaves,
+        Material::Billboard,
     ];
 
     pub fn surface(self) -> Surface {
@@ -120,6 +135,13 @@ impl Material {
             Material::TailLight => (Vec3::new(0.4, 0.02, 0.02), 0.5, 32.0, Vec3::new(5.0, 0.2, 0.1), false),
             Material::CarPaint => (Vec3::new(0.55, 0.08, 0.05), 0.8, 80.0, Vec3::ZERO, false),
             Material::Drone => (Vec3::new(0.12, 0.12, 0.14), 0.7, 64.0, Vec3::ZERO, false),
+            // The sand's colour; city_meshes.rs blends it to grass by height.
+            Material::Countryside => (crate::countryside::SAND, 0.03, 8.0, Vec3::ZERO, false),
+            Material::Water => (Vec3::new(0.02, 0.055, 0.08), 0.9, 160.0, Vec3::ZERO, false),
+            // Bark as tree.mtl has it; the foliage darker than its 0.12, 0.33, 0.12, as deep as the grass.
+            Material::Bark => (Vec3::new(0.30, 0.19, 0.11), 0.05, 8.0, Vec3::ZERO, false),
+            Material::Leaves => (Vec3::new(0.06, 0.17, 0.06), 0.04, 12.0, Vec3::ZERO, false),
+            Material::Billboard => (Vec3::new(0.75, 0.74, 0.70), 0.15, 16.0, Vec3::ZERO, false),
         };
         Surface { albedo, specular, shininess, emissive, at_night }
     }

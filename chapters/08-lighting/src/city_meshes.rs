@@ -4,10 +4,11 @@
 //! materials as `city.wgsl` reads them, and its three pipelines.
 
 use common::chapter::mesh_pipeline;
-use common::glam::{Mat3, Vec3};
+use common::glam::{Mat3, Mat4, Vec3};
 use common::{Gpu, Mesh, MeshData, ShaderError, ShaderFile, Vertex, shader, wgpu};
 
-use crate::city::{City, Material, Piece, Shape};
+use crate::city::{Material, Piece, Shape};
+use crate::countryside;
 use crate::post::HDR_FORMAT;
 
 // ANCHOR: instance
@@ -25,15 +26,19 @@ pub struct GpuInstance {
 
 impl GpuInstance {
     pub fn of(piece: &Piece) -> Self {
-        let normal = Mat3::from_mat4(piece.model).inverse().transpose();
+        Self::new(piece.model, piece.material)
+    }
+
+    pub fn new(model: Mat4, material: Material) -> Self {
+        let normal = Mat3::from_mat4(model).inverse().transpose();
         Self {
-            model: piece.model.to_cols_array_2d(),
+            model: model.to_cols_array_2d(),
             normal: [
                 normal.x_axis.extend(0.0).into(),
                 normal.y_axis.extend(0.0).into(),
                 normal.z_axis.extend(0.0).into(),
             ],
-            material: piece.material as u32,
+            material: material as u32,
             _padding: [0; 3],
         }
     }
@@ -76,7 +81,11 @@ pub fn faceted(mesh: &MeshData) -> MeshData {
 }
 // ANCHOR_END: faceted
 
-/// `Material` in city.wgsl: 32 bytes.
+// ANCHOR: material
+/// `Material` in city.wgsl: 64 bytes. The albedo turns into `albedo_high`
+/// between the heights `high_from` and `high_to` (a smoothstep of the
+/// point's y): the countryside's sand and grass. Every other material has
+/// the same colour both ways.
 #[repr(C)]
 #[derive(Clone, Copy, Debug, bytemuck::Pod, bytemuck::Zeroable)]
 pub struct GpuMaterial {
@@ -84,7 +93,12 @@ pub struct GpuMaterial {
     pub specular: f32,
     pub emissive: [f32; 3],
     pub shininess: f32,
+    pub albedo_high: [f32; 3],
+    pub high_from: f32,
+    pub high_to: f32,
+    pub _padding: [f32; 3],
 }
+// ANCHOR_END: material
 
 /// The city's materials as they look at this time of day (lamps and
 /// windows glow only as night falls), with or without highlights.
@@ -94,11 +108,19 @@ pub(crate) fn materials(night: f32, highlights: bool) -> Vec<GpuMaterial> {
         .map(|m| {
             let s = m.surface();
             let glow = if s.at_night { night } else { 1.0 };
+            let (albedo_high, high_from, high_to) = match m {
+                Material::Countryside => (countryside::GRASS, countryside::SAND_UP_TO, countryside::GRASS_FROM),
+                _ => (s.albedo, 0.0, 1.0),
+            };
             GpuMaterial {
                 albedo: s.albedo.into(),
                 specular: if highlights { s.specular } else { 0.0 },
                 emissive: (s.emissive * glow).into(),
                 shininess: s.shininess,
+                albedo_high: albedo_high.into(),
+                high_from,
+                high_to,
+                _padding: [0.0; 3],
             }
         })
         .collect()
@@ -128,43 +150,66 @@ pub(crate) fn build_pipelines(gpu: &Gpu, layout: &wgpu::PipelineLayout) -> Resul
     .map_err(ShaderError)
 }
 
+/// A mesh of its own, not one of the city's shapes, and its copies, none
+/// of which move: the countryside's ground, a tree's trunk, its foliage.
+pub struct Model {
+    pub name: &'static str,
+    pub mesh: MeshData,
+    pub placed: Vec<(Mat4, Material)>,
+}
+
 /// The city's meshes, smooth and faceted, and the instance buffer.
 pub(crate) struct CityMeshes {
+    /// The shapes' meshes in `Shape::ALL`'s order, then the models'.
     smooth: Vec<Mesh>,
     faceted: Vec<Mesh>,
     instances: wgpu::Buffer,
-    /// Per shape, which instances it draws this frame.
+    /// Per mesh, which instances it draws this frame.
     ranges: Vec<std::ops::Range<u32>>,
-    /// The pieces that never move, grouped by shape, ready to copy.
+    /// The copies that never move, per mesh, ready to copy.
     still: Vec<Vec<GpuInstance>>,
 }
 
 impl CityMeshes {
-    pub(crate) fn new(device: &wgpu::Device, city: &City) -> Self {
-        let smooth = Shape::ALL.iter().map(|s| s.mesh().upload(device, &format!("{s:?}"))).collect();
-        let faceted = Shape::ALL.iter().map(|s| faceted(&s.mesh()).upload(device, &format!("{s:?} faceted"))).collect();
-        let still = Shape::ALL
+    /// The shapes, with the `pieces` that never move, and the `models`.
+    pub(crate) fn new(device: &wgpu::Device, pieces: &[Piece], models: &[Model]) -> Self {
+        let meshes: Vec<(String, MeshData)> = Shape::ALL
             .iter()
-            .map(|shape| city.pieces.iter().filter(|p| p.shape == *shape).map(GpuInstance::of).collect())
+            .map(|s| (format!("{s:?}"), s.mesh()))
+            .chain(models.iter().map(|m| (m.name.to_string(), m.mesh.clone())))
             .collect();
+        let smooth = meshes.iter().map(|(name, mesh)| mesh.upload(device, name)).collect();
+        let faceted =
+            meshes.iter().map(|(name, mesh)| faceted(mesh).upload(device, &format!("{name} faceted"))).collect();
+        let still: Vec<Vec<GpuInstance>> = Shape::ALL
+            .iter()
+            .map(|shape| pieces.iter().filter(|p| p.shape == *shape).map(GpuInstance::of).collect())
+            .chain(
+                models.iter().map(|m| m.placed.iter().map(|&(at, material)| GpuInstance::new(at, material)).collect()),
+            )
+            .collect();
+        let count: usize = still.iter().map(Vec::len).sum();
         let instances = device.create_buffer(&wgpu::BufferDescriptor {
             label: Some("city instances"),
-            size: (city.pieces.len() as u64 + 1024) * std::mem::size_of::<GpuInstance>() as u64,
+            size: (count as u64 + 1024) * std::mem::size_of::<GpuInstance>() as u64,
             usage: wgpu::BufferUsages::VERTEX | wgpu::BufferUsages::COPY_DST,
             mapped_at_creation: false,
         });
         Self { smooth, faceted, instances, ranges: Vec::new(), still }
     }
 
-    /// Writes this frame's instances: the still pieces and the moving ones,
-    /// grouped by shape, so that each shape is one instanced draw.
+    /// Writes this frame's instances: the still pieces and this frame's
+    /// others (the moving ones, the countryside's), grouped by shape, then
+    /// the models', so that each mesh is one instanced draw.
     pub(crate) fn write(&mut self, gpu: &Gpu, moving: &[Piece]) {
         let mut all = Vec::new();
         self.ranges.clear();
-        for (i, shape) in Shape::ALL.iter().enumerate() {
+        for (i, still) in self.still.iter().enumerate() {
             let start = all.len() as u32;
-            all.extend_from_slice(&self.still[i]);
-            all.extend(moving.iter().filter(|p| p.shape == *shape).map(GpuInstance::of));
+            all.extend_from_slice(still);
+            if let Some(shape) = Shape::ALL.get(i) {
+                all.extend(moving.iter().filter(|p| p.shape == *shape).map(GpuInstance::of));
+            }
             self.ranges.push(start..all.len() as u32);
         }
         let bytes = (all.len() * std::mem::size_of::<GpuInstance>()) as u64;
@@ -179,11 +224,12 @@ impl CityMeshes {
         gpu.queue.write_buffer(&self.instances, 0, bytemuck::cast_slice(&all));
     }
 
-    /// One instanced draw per shape.
-    pub(crate) fn draw(&self, pass: &mut wgpu::RenderPass<'_>, faceted: bool) {
+    /// One instanced draw per mesh: the shapes', then (`models`) the models'.
+    pub(crate) fn draw(&self, pass: &mut wgpu::RenderPass<'_>, faceted: bool, models: bool) {
         pass.set_vertex_buffer(1, self.instances.slice(..));
         let meshes = if faceted { &self.faceted } else { &self.smooth };
-        for (mesh, range) in meshes.iter().zip(&self.ranges) {
+        let count = if models { meshes.len() } else { Shape::ALL.len() };
+        for (mesh, range) in meshes.iter().zip(&self.ranges).take(count) {
             if !range.is_empty() {
                 mesh.draw(pass, range.clone());
             }

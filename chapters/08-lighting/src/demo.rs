@@ -4,26 +4,29 @@
 //! frame.
 
 use common::chapter::storage_entry;
-use common::glam::Vec3;
+use common::glam::{Mat4, Vec2, Vec3};
 use common::wgpu::util::DeviceExt as _;
 use common::{
     Camera, Chapter, FlyController, Frame, Gpu, Input, Preparation, Reloadable, Target, View, ViewRow, anyhow, egui,
     views_of, wgpu, winit::keyboard::KeyCode,
 };
 
+use crate::billboard::Billboard;
 use crate::bloom::BloomSettings;
-use crate::city::{City, Clocks, Traffic};
-use crate::city_meshes::{CityMeshes, GpuMaterial, Pipelines, build_pipelines, materials};
+use crate::city::{City, Clocks, Material, Piece, Traffic};
+use crate::city_meshes::{CityMeshes, GpuMaterial, Model, Pipelines, build_pipelines, materials};
 use crate::city_sky::CitySky;
 use crate::clusters::{self, CLUSTERS, ClusterLists};
+use crate::countryside::{self, Countryside};
 use crate::lights::{self, Daylight, Light, TimeOfDay, daylight};
+use crate::moving_parts::MovingParts;
 use crate::paths;
 use crate::post::{HdrTarget, PostChain, PostOutput, PostSettings};
 use crate::scene_lights::{Highlight, LoopOptions, MAX_LIGHTS, SceneLights};
 
 // ANCHOR: views
 /// Every view, once: what it shows, and for a preset where the camera goes.
-pub const VIEW_TABLE: [ViewRow<Settings, CameraPreset>; 28] = [
+pub const VIEW_TABLE: [ViewRow<Settings, CameraPreset>; 31] = [
     ViewRow::mode("day", "the city at noon, from above", Settings::DAY),
     ViewRow::mode("night", "the city at night: street lamps, lit buildings, headlights, bloom", Settings::NIGHT),
     ViewRow::preset(
@@ -125,6 +128,24 @@ pub const VIEW_TABLE: [ViewRow<Settings, CameraPreset>; 28] = [
         Settings::NIGHT,
         CameraPreset::Skyline,
     ),
+    ViewRow::preset(
+        "landscape",
+        "in the morning over the countryside north of the city: the river at its tide, beaches, trees, the road on its bridge",
+        Settings { time_of_day: TimeOfDay::Morning, ..Settings::DAY },
+        CameraPreset::Landscape,
+    ),
+    ViewRow::preset(
+        "billboard",
+        "at night in front of the billboard on the hill across the river, lit by its three spot lights",
+        Settings::NIGHT,
+        CameraPreset::Billboard,
+    ),
+    ViewRow::preset(
+        "moving-parts",
+        "in the evening, the tallest tower from over the avenue: the crown turning on its roof, the neon sign riding up its face",
+        Settings { time_of_day: TimeOfDay::Evening, ..Settings::DAY },
+        CameraPreset::MovingParts,
+    ),
     ViewRow::bench("lights-1", "bench: the night city with 1 light, culled", Settings::bench(1, true)),
     ViewRow::bench("lights-16", "bench: 16 lights, culled per cluster", Settings::bench(16, true)),
     ViewRow::bench("lights-64", "bench: 64 lights, culled per cluster", Settings::bench(64, true)),
@@ -157,18 +178,27 @@ pub enum CameraPreset {
     Drone,
     /// Outside the south-east corner, at eye height ([`skyline_camera`]).
     Skyline,
+    /// Over the countryside north of the city ([`landscape_camera`]).
+    Landscape,
+    /// In front of the billboard on its hill ([`billboard_camera`]).
+    Billboard,
+    /// Facing the tallest tower's crown and sign ([`moving_parts_camera`]).
+    MovingParts,
 }
 // ANCHOR_END: views
 
 impl CameraPreset {
     /// The overlay's camera buttons: every place but the sphere's close-up,
     /// which the shading views use.
-    pub const PLACES: [(&'static str, CameraPreset); 7] = [
+    pub const PLACES: [(&'static str, CameraPreset); 10] = [
         ("street", CameraPreset::Street),
         ("rooftop", CameraPreset::Rooftop),
         ("lollipop", CameraPreset::Lollipop),
         ("hill", CameraPreset::Hill),
         ("skyline", CameraPreset::Skyline),
+        ("landscape", CameraPreset::Landscape),
+        ("billboard", CameraPreset::Billboard),
+        ("moving parts", CameraPreset::MovingParts),
         ("follow a car", CameraPreset::Follow),
         ("ride a drone", CameraPreset::Drone),
     ];
@@ -184,6 +214,9 @@ impl CameraPreset {
             Self::Lollipop => still(lollipop_camera(aspect)),
             Self::Hill => still(hill_camera(aspect)),
             Self::Skyline => still(skyline_camera(aspect)),
+            Self::Landscape => still(landscape_camera(aspect)),
+            Self::Billboard => still(billboard_camera(&billboard(), aspect)),
+            Self::MovingParts => still(moving_parts_camera(&MovingParts::new(city), aspect)),
             Self::Follow | Self::Drone => {
                 // The drone over the hill: nothing stands between it and the city.
                 let riding = if self == Self::Follow { Riding::Car(0) } else { Riding::Drone(3) };
@@ -258,7 +291,7 @@ impl LightTerm {
             match self {
                 Self::Ambient => {}
                 Self::Diffuse => material.specular = 0.0,
-                Self::Specular => material.albedo = [0.0; 3],
+                Self::Specular => (material.albedo, material.albedo_high) = ([0.0; 3], [0.0; 3]),
             }
         }
         match self {
@@ -299,6 +332,9 @@ pub struct Settings {
     pub bloom: BloomSettings,
     pub display: Display,
     pub exposure: f32,
+    /// The countryside, the billboard and its spots around the city (off:
+    /// the city alone, as the bench measures its lights).
+    pub countryside: bool,
 }
 
 impl Settings {
@@ -316,6 +352,7 @@ impl Settings {
         bloom: BloomSettings::DEFAULT,
         display: Display::Scene,
         exposure: 1.0,
+        countryside: true,
     };
 
     /// The city at noon: what the chapter starts with.
@@ -331,9 +368,10 @@ impl Settings {
     };
 
     /// The bench's night city with the first `lights` lights, culled per
-    /// cluster or (`culling` false) visited by every fragment.
+    /// cluster or (`culling` false) visited by every fragment; the city
+    /// alone, so that every covered pixel is one the lights are meant for.
     pub const fn bench(lights: u32, culling: bool) -> Self {
-        Self { lights: LightCount::First(lights), culling, ..Self::NIGHT }
+        Self { lights: LightCount::First(lights), culling, countryside: false, ..Self::NIGHT }
     }
 }
 
@@ -415,7 +453,39 @@ pub fn drone_camera(drone: Vec3, aspect: f32) -> Camera {
 pub fn skyline_camera(aspect: f32) -> Camera {
     city_camera(Vec3::new(235.0, 16.0, 235.0), Vec3::new(0.0, 30.0, 0.0), aspect)
 }
+
+/// A camera at `eye` looking at `target`, seeing past the countryside's
+/// far edge (1 km out from the middle of the city, both ways).
+fn countryside_camera(eye: Vec3, target: Vec3, aspect: f32) -> Camera {
+    Camera { near: 0.3, far: 2500.0, ..Camera::looking_at(eye, target, aspect) }
+}
+
+/// 24 m over the river's south bank, east of the road north, looking
+/// north-west across the river, its beaches and the bridge, to the
+/// billboard's hill.
+pub fn landscape_camera(aspect: f32) -> Camera {
+    countryside_camera(Vec3::new(170.0, 24.0, -300.0), Vec3::new(10.0, 0.0, -480.0), aspect)
+}
+
+/// In front of the billboard, a little below its middle and 45 m out,
+/// looking up at it.
+pub fn billboard_camera(billboard: &Billboard, aspect: f32) -> Camera {
+    let eye = billboard.centre + billboard.facing * 45.0 + billboard.across * 8.0 - Vec3::Y * 6.0;
+    countryside_camera(eye, billboard.centre, aspect)
+}
+
+/// East of the tallest tower, over the avenue, looking at the face the
+/// sign rides up, the crown on the roof above it.
+pub fn moving_parts_camera(parts: &MovingParts, aspect: f32) -> Camera {
+    let target = parts.sign_face.with_y((parts.sign_low + parts.crown_base.y) / 2.0);
+    city_camera(target + Vec3::new(75.0, -5.0, 40.0), target, aspect)
+}
 // ANCHOR_END: places
+
+/// The billboard on its hill across the river, facing the city.
+pub fn billboard() -> Billboard {
+    Billboard::new(countryside::BILLBOARD_HILL, Vec2::ZERO, countryside::height)
+}
 
 // ANCHOR: frame_lights
 /// The lights of this frame: the moving ones (cars, drones), then the
@@ -453,6 +523,13 @@ pub fn beacons(count: usize) -> Vec<Light> {
 
 pub struct LightingChapter {
     pub city: City,
+    /// The crown and the sign that move on the city's towers.
+    pub moving_parts: MovingParts,
+    /// The billboard across the river, and its spot lights.
+    pub billboard: Billboard,
+    /// The countryside's roads and bridge and the billboard's pieces,
+    /// drawn with the city's shapes when the countryside is on.
+    countryside_pieces: Vec<Piece>,
     pub settings: Settings,
     pub clocks: Clocks,
     pub camera: Camera,
@@ -508,6 +585,7 @@ impl Chapter for LightingChapter {
     fn new(gpu: &Gpu, target: Target, (): ()) -> anyhow::Result<Self> {
         let device = &gpu.device;
         let city = City::new();
+        let Scenery { meshes, billboard, countryside_pieces } = scenery(device, &city)?;
         let scene_lights = SceneLights::new(device);
         let materials = device.create_buffer_init(&wgpu::util::BufferInitDescriptor {
             label: Some("materials"),
@@ -539,7 +617,10 @@ impl Chapter for LightingChapter {
             riding: None,
             last_time: 0.0,
             beacons: beacons(MAX_LIGHTS as usize),
-            meshes: CityMeshes::new(device, &city),
+            meshes,
+            moving_parts: MovingParts::new(&city),
+            billboard,
+            countryside_pieces,
             city,
             scene_lights,
             materials,
@@ -602,6 +683,9 @@ impl Chapter for LightingChapter {
         // The frame's lights and materials, with only one term of the
         // light in the `ambient`, `diffuse` and `specular` views.
         let mut lights = frame_lights(&self.city, &traffic, &self.beacons, s.lights, day.night);
+        if s.lights == LightCount::City && s.countryside {
+            lights.extend(self.billboard.lights(day.night));
+        }
         let mut materials = materials(day.night, s.highlights);
         if let Display::Term(term) = s.display {
             term.isolate(&mut day, &mut lights, &mut materials);
@@ -617,7 +701,13 @@ impl Chapter for LightingChapter {
         let options =
             LoopOptions { culling: s.culling, highlight: s.highlight, heat_map: s.display == Display::LightTiles };
         self.scene_lights.write(gpu, &camera, &day, &lights, &self.last_lists, options);
-        self.meshes.write(gpu, &traffic.pieces());
+        let mut pieces = traffic.pieces();
+        pieces.extend(self.moving_parts.pieces(frame.time));
+        if s.countryside {
+            pieces.extend_from_slice(&self.countryside_pieces);
+            pieces.push(Countryside::water(frame.time));
+        }
+        self.meshes.write(gpu, &pieces);
         gpu.queue.write_buffer(&self.materials, 0, bytemuck::cast_slice(&materials));
         self.sky.write(gpu, &camera, &day);
 
@@ -640,7 +730,7 @@ impl Chapter for LightingChapter {
                 Shading::Gouraud => &pipelines.gouraud,
                 Shading::Phong => &pipelines.phong,
             });
-            self.meshes.draw(&mut pass, s.shading == Shading::Flat);
+            self.meshes.draw(&mut pass, s.shading == Shading::Flat, s.countryside);
             // The sky is a background, not light a surface reflects.
             if !matches!(s.display, Display::Term(_)) {
                 self.sky.draw(&mut pass);
@@ -678,8 +768,10 @@ impl Chapter for LightingChapter {
             ui.radio_value(&mut s.highlight, Highlight::BlinnPhong, "Blinn-Phong");
             ui.checkbox(&mut s.highlights, "on");
         });
-        let city_lights =
-            self.city.fixed_lights.len() as u32 + 2 * self.city.cars.len() as u32 + self.city.drones.len() as u32;
+        let city_lights = self.city.fixed_lights.len() as u32
+            + 2 * self.city.cars.len() as u32
+            + self.city.drones.len() as u32
+            + if s.countryside { self.billboard.lights(1.0).len() as u32 } else { 0 };
         let mut count = match s.lights {
             LightCount::City => city_lights,
             LightCount::First(n) => n,
@@ -688,6 +780,7 @@ impl Chapter for LightingChapter {
             s.lights = if count == city_lights { LightCount::City } else { LightCount::First(count) };
         }
         ui.checkbox(&mut s.culling, "cull lights per cluster (off: every fragment visits every light)");
+        ui.checkbox(&mut s.countryside, "countryside and billboard");
         ui.checkbox(&mut s.bloom_on, "bloom");
         ui.add(egui::Slider::new(&mut s.bloom.threshold, 0.2..=4.0).text("bloom threshold"));
         ui.add(egui::Slider::new(&mut s.bloom.strength, 0.0..=2.0).text("bloom strength"));
@@ -753,6 +846,40 @@ impl Chapter for LightingChapter {
         )
     }
 }
+
+/// What [`scenery`] makes.
+struct Scenery {
+    meshes: CityMeshes,
+    billboard: Billboard,
+    countryside_pieces: Vec<Piece>,
+}
+
+// ANCHOR: scenery
+/// The meshes on the GPU: the city's shapes with the city's still pieces,
+/// and the countryside's ground and trees as models of their own; with
+/// the billboard, and the pieces the countryside adds to the city's shapes
+/// (its roads and bridge, the billboard's panel, posts and digits).
+fn scenery(device: &wgpu::Device, city: &City) -> anyhow::Result<Scenery> {
+    let countryside = Countryside::new();
+    let billboard = billboard();
+    let (trunk, foliage) = countryside::tree_meshes().map_err(anyhow::Error::msg)?;
+    let models = [
+        Model { name: "countryside", mesh: countryside.ground, placed: vec![(Mat4::IDENTITY, Material::Countryside)] },
+        Model {
+            name: "tree trunk",
+            mesh: trunk,
+            placed: countryside.trees.iter().map(|&t| (t, Material::Bark)).collect(),
+        },
+        Model {
+            name: "tree foliage",
+            mesh: foliage,
+            placed: countryside.trees.iter().map(|&t| (t, Material::Leaves)).collect(),
+        },
+    ];
+    let countryside_pieces = countryside.pieces.iter().chain(&billboard.pieces).copied().collect();
+    Ok(Scenery { meshes: CityMeshes::new(device, &city.pieces, &models), billboard, countryside_pieces })
+}
+// ANCHOR_END: scenery
 
 impl LightingChapter {
     /// Puts the camera where `preset` says, for the cars and drones where
@@ -823,6 +950,37 @@ mod tests {
             heights.push(camera.position.y);
         }
         assert!(heights.windows(2).all(|h| h[0] != h[1]), "the camera bobs with the drone: {heights:?}");
+    }
+
+    /// The page's count: the city's 339 lights and the billboard's 3 spots.
+    #[test]
+    fn the_night_has_342_lights_with_the_billboards_spots() {
+        let city = City::new();
+        let traffic = city.traffic(6.0, 6.0);
+        let lights = frame_lights(&city, &traffic, &[], LightCount::City, 1.0);
+        assert_eq!(lights.len() + billboard().lights(1.0).len(), 342);
+    }
+
+    #[test]
+    fn the_preset_views_keep_their_subjects_in_the_picture() {
+        let city = City::new();
+        let traffic = city.traffic(6.0, 6.0);
+        let parts = MovingParts::new(&city);
+        let board = billboard();
+        let in_view = |preset: CameraPreset, point: Vec3| {
+            let camera = preset.place(&city, &traffic, 16.0 / 9.0).0;
+            let clip = camera.view_projection() * point.extend(1.0);
+            clip.w > 0.0 && (clip.x / clip.w).abs() < 0.95 && (clip.y / clip.w).abs() < 0.95
+        };
+        for corner in board.corners() {
+            assert!(in_view(CameraPreset::Billboard, corner), "the billboard's corner {corner}");
+        }
+        assert!(in_view(CameraPreset::Landscape, board.centre), "the billboard from the landscape view");
+        let bridge = Vec3::new(0.0, countryside::BRIDGE_DECK, countryside::river_z(0.0));
+        assert!(in_view(CameraPreset::Landscape, bridge), "the bridge");
+        let crown = parts.crown_base + Vec3::Y * 6.0;
+        let sign = parts.sign_face.with_y(parts.sign_height(6.0));
+        assert!(in_view(CameraPreset::MovingParts, crown) && in_view(CameraPreset::MovingParts, sign));
     }
 
     #[test]

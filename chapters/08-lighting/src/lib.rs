@@ -3,7 +3,9 @@
 //! shaded flat, per vertex (Gouraud) or per fragment (Phong), with Phong or
 //! Blinn-Phong highlights; rendered in HDR, with bloom and tone mapping; and
 //! the lights culled per cluster, so that a fragment only visits the few
-//! that can reach it.
+//! that can reach it. Around the city, the countryside: ground coloured by
+//! its height, a river with tides, trees and roads; on the towers, parts
+//! that move; across the river, a billboard lit by spot lights.
 //!
 //! The modules below come in the order the book explains them; the
 //! re-exports after them are the pieces later chapters compose.
@@ -26,6 +28,12 @@ pub mod bloom;
 pub mod post;
 // The sky over the city.
 pub mod city_sky;
+// Around the city: ground by a height function, a river with tides, trees, roads.
+pub mod countryside;
+// Parts of buildings that move: a turning crown, a sliding sign.
+pub mod moving_parts;
+// The billboard on the hill, lit by spot lights.
+pub mod billboard;
 // The chapter itself: its settings, views, cameras and frame.
 pub mod demo;
 
@@ -33,8 +41,8 @@ pub use city_meshes::{GpuInstance, GpuMaterial, faceted};
 pub use city_sky::CitySky;
 pub use demo::{
     CameraPreset, Display, LightCount, LightTerm, LightingChapter, Riding, Settings, Shading, VIEW_TABLE,
-    aerial_camera, beacons, drone_camera, follow_camera, frame_lights, hill_camera, lollipop_camera, rooftop_camera,
-    skyline_camera, sphere_camera, street_camera,
+    aerial_camera, beacons, billboard, billboard_camera, drone_camera, follow_camera, frame_lights, hill_camera,
+    landscape_camera, lollipop_camera, rooftop_camera, skyline_camera, sphere_camera, street_camera,
 };
 pub use post::{HDR_FORMAT, HdrTarget, PostChain, PostOutput, PostSettings, ToneMap};
 pub use scene_lights::{Highlight, LoopOptions, MAX_LIGHTS, SceneLights};
