@@ -59,5 +59,6 @@ pub fn all() -> Vec<(&'static str, String)> {
         ("voronoi-cones.svg", voronoi_water::voronoi_cones()),
         ("jump-flooding.svg", voronoi_water::jump_flooding()),
         ("moving-grid.svg", voronoi_water::moving_grid()),
+        ("sail-swell.svg", voronoi_water::sail_swell()),
     ]
 }

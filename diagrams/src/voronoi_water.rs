@@ -1,7 +1,7 @@
 //! Chapter 11's figures: the Voronoi diagram as cones and a depth test,
 //! jump flooding pass by pass (with the chapter's `voronoi::jump_steps`),
-//! and the sea's grid following the boat in whole cells (the chapter's
-//! `sea::grid_origin_for`).
+//! the sea's grid following the boat in whole cells (the chapter's
+//! `sea::grid_origin_for`), and the sail's swell (`sail::belly`).
 
 use common::glam::Vec2;
 
@@ -475,5 +475,123 @@ pub fn moving_grid() -> String {
         INK,
     );
     svg.text(Vec2::new(20.0, 40.0), "was already defined — nothing swims.", 11.0, "start", INK);
+    svg.finish()
+}
+
+/// A colour between `a` and `b` (`#rrggbb`), `t` of the way.
+fn blend(a: &str, b: &str, t: f32) -> String {
+    let channel = |c: &str, i: usize| f32::from(u8::from_str_radix(&c[1 + 2 * i..3 + 2 * i], 16).unwrap_or(0));
+    let mixed: Vec<String> = (0..3)
+        .map(|i| format!("{:02x}", (channel(a, i) + (channel(b, i) - channel(a, i)) * t.clamp(0.0, 1.0)).round() as u8))
+        .collect();
+    format!("#{}", mixed.concat())
+}
+
+/// Chapter 11: how the sail swells. Left, the cloth from the side, shaded
+/// by the chapter's `sail::belly`: zero along the mast, the boom and the
+/// free edge, deepest in the middle. Right, from above: the wind, its part
+/// across the boat (`sail::wind_across`), and the cloth's section a third
+/// of the way up, moved by `sail::swell`, to scale.
+pub fn sail_swell() -> String {
+    use voronoi_water::sail::{SWELL_DEPTH, belly, swell, wind_across};
+    let mut svg = Svg::new(640.0, 340.0);
+    svg.text(
+        Vec2::new(20.0, 24.0),
+        "The cloth moves sideways by depth × across × belly(u, v), with",
+        11.0,
+        "start",
+        INK,
+    );
+    svg.text(
+        Vec2::new(20.0, 40.0),
+        &format!("belly(u, v) = 27 u v (1 − u − v) and depth = {} m", trim(SWELL_DEPTH)),
+        11.0,
+        "start",
+        INK,
+    );
+    // The cloth from the starboard side, bow to the left: the model's sizes.
+    let (luff, foot, scale) = (7.9 - 3.32, 3.4 + 0.92, 48.0);
+    let origin = Vec2::new(60.0, 300.0);
+    let at = |u: f32, v: f32| origin + Vec2::new(u * foot, -v * luff) * scale;
+    const FINE: usize = 24;
+    for j in 0..FINE {
+        for i in 0..FINE - j {
+            let step = 1.0 / FINE as f32;
+            let (u, v) = (i as f32 * step, j as f32 * step);
+            let mut triangles = vec![[(u, v), (u + step, v), (u, v + step)]];
+            if i + j + 1 < FINE {
+                triangles.push([(u + step, v), (u + step, v + step), (u, v + step)]);
+            }
+            for t in triangles {
+                let (cu, cv) = ((t[0].0 + t[1].0 + t[2].0) / 3.0, (t[0].1 + t[1].1 + t[2].1) / 3.0);
+                let fill = blend("#f4efe6", ACCENT, belly(cu, cv));
+                let points: Vec<Vec2> = t.iter().map(|&(u, v)| at(u, v)).collect();
+                svg.polygon(&points, &fill, &fill);
+            }
+        }
+    }
+    // The model's own grid: 6 rows.
+    for k in 1..6 {
+        let t = k as f32 / 6.0;
+        svg.line(at(t, 0.0), at(0.0, t), MUTED, 0.5);
+        svg.line(at(t, 0.0), at(t, 1.0 - t), MUTED, 0.5);
+        svg.line(at(0.0, t), at(1.0 - t, t), MUTED, 0.5);
+    }
+    svg.line(at(0.0, -0.05), at(0.0, 1.08), INK, 3.0);
+    svg.line(at(-0.02, 0.0), at(1.04, 0.0), "#7a4a22", 4.0);
+    svg.polyline(&[at(1.0, 0.0), at(0.0, 1.0)], MUTED, 1.0);
+    svg.circle(at(1.0 / 3.0, 1.0 / 3.0), 3.0, INK);
+    svg.text(at(1.0 / 3.0, 1.0 / 3.0) + Vec2::new(6.0, -6.0), "belly 1 at (⅓, ⅓)", 10.0, "start", INK);
+    svg.text(at(0.0, 0.55) + Vec2::new(-8.0, 0.0), "mast: 0", 10.0, "end", INK);
+    svg.text(at(0.5, 0.0) + Vec2::new(0.0, 16.0), "boom: 0 (u →)", 10.0, "middle", INK);
+    svg.text(at(0.55, 0.45) + Vec2::new(8.0, 0.0), "free edge: 0", 10.0, "start", INK);
+    svg.text(at(0.0, 1.0) + Vec2::new(8.0, -4.0), "v ↑", 10.0, "start", INK);
+    // From above, the bow up: the boat's frame, the wind and the section.
+    let (centre, top) = (Vec2::new(470.0, 190.0), 28.0);
+    let plan = |x: f32, z: f32| centre + Vec2::new(x, z) * top;
+    let hull = [(0.0, -4.0), (1.1, -1.5), (1.2, 1.5), (1.0, 4.0), (-1.0, 4.0), (-1.2, 1.5), (-1.1, -1.5)];
+    let outline: Vec<Vec2> = hull.iter().map(|&(x, z)| plan(x, z)).collect();
+    svg.polygon(&outline, "#eef3f8", MUTED);
+    svg.text(plan(0.0, -4.0) + Vec2::new(0.0, -8.0), "bow", 10.0, "middle", MUTED);
+    // A wind from the port bow, blowing to starboard and aft (heading 0).
+    let wind = Vec2::new(0.8, 0.6);
+    let across = wind_across(0.0, wind);
+    let from = plan(-3.4, -2.6);
+    let tip = from + wind * 2.6 * top;
+    svg.arrow(from, tip, BLUE);
+    svg.text(from + Vec2::new(-6.0, 4.0), "wind", 11.0, "end", BLUE);
+    let foot_of = Vec2::new(tip.x, from.y);
+    svg.dashed(tip, foot_of, BLUE);
+    svg.arrow(from, foot_of, ACCENT);
+    svg.text(
+        (from + foot_of) / 2.0 + Vec2::new(0.0, -10.0),
+        &format!("across = {} (to starboard)", trim(across)),
+        10.0,
+        "middle",
+        ACCENT,
+    );
+    // The section a third of the way up: from the mast aft, 2/3 of the foot.
+    let v = 1.0 / 3.0;
+    let (mast_z, steps) = (-0.92, 24);
+    let flat: Vec<Vec2> = (0..=steps).map(|k| plan(0.0, mast_z + (1.0 - v) * foot * k as f32 / steps as f32)).collect();
+    let full: Vec<Vec2> = (0..=steps)
+        .map(|k| {
+            let u = (1.0 - v) * k as f32 / steps as f32;
+            plan(swell(u, v, across), mast_z + u * foot)
+        })
+        .collect();
+    svg.polyline(&flat, MUTED, 1.0);
+    svg.polyline(&full, ACCENT, 2.5);
+    svg.circle(plan(0.0, mast_z), 3.5, INK);
+    let deepest = swell(1.0 / 3.0, v, across);
+    svg.text(
+        plan(swell(1.0 / 3.0, v, across), mast_z + foot / 3.0) + Vec2::new(8.0, 4.0),
+        &format!("{} m downwind", trim(deepest)),
+        10.0,
+        "start",
+        ACCENT,
+    );
+    svg.text(Vec2::new(370.0, 330.0), "from above, to scale: the cloth a third of the way up", 10.0, "start", INK);
+    svg.text(Vec2::new(20.0, 330.0), "from the side: belly(u, v), dark where deep", 10.0, "start", INK);
     svg.finish()
 }

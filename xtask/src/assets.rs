@@ -323,8 +323,8 @@ mod tests {
         }
         std::fs::remove_dir_all(fresh).unwrap();
         assert_eq!(
-            checked, 53,
-            "12 cube faces, 3 water maps, 6 × 2 textures, 9 models with their MTL, 3 parallax layers, 4 gradients, and the README"
+            checked, 57,
+            "12 cube faces, 3 water maps, 6 × 2 textures, 11 models with their MTL, 3 parallax layers, 4 gradients, and the README"
         );
     }
 

@@ -13,6 +13,9 @@ pub const LENGTH: f32 = 8.0;
 pub const BEAM: f32 = 2.6;
 /// … and floats with its keel this far below the water.
 pub const DRAFT: f32 = 0.5;
+/// Its mast's top, above the keel: nothing of the boat, its sail and its
+/// sailor reaches higher.
+pub const MAST_TOP: f32 = 8.2;
 
 /// Where the boat is and which way it points. A heading of 0 points the
 /// bow towards −z; positive turns it left (counter-clockwise from above).

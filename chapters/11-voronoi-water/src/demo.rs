@@ -1,8 +1,8 @@
 //! The chapter itself: the settings each view applies, the views, the
 //! orbit camera and the day's clock, who sails (the course or the keys),
 //! and `impl Chapter`, which composes this chapter's diagram, water, sea,
-//! sky and islands with chapter 08's lights and post chain, chapter 09's
-//! boat and chapter 10's shadow map into a frame.
+//! sky, islands and sail with chapter 08's lights and post chain, chapter
+//! 09's boat and chapter 10's shadow map into a frame.
 
 use common::glam::Vec3;
 use common::{
@@ -21,6 +21,7 @@ use textures::{Draw, DrawList, obj, upload_model};
 use crate::atmosphere::{self, Atmosphere, DAY_SECONDS, Sky};
 use crate::boat::{self, Helm, Orders, Pose};
 use crate::islands::IslandRenderer;
+use crate::sail::{self, Rig};
 use crate::sea::{self, SeaRenderer, SeaSettings};
 use crate::sites;
 use crate::voronoi::{Method, Voronoi, VoronoiSettings};
@@ -28,7 +29,7 @@ use crate::water_texture::{self, Picture, Processing, WaterTexture};
 
 // ANCHOR: views
 /// Every view, once: what it shows, and for a preset where the camera goes.
-pub const VIEW_TABLE: [ViewRow<Settings, CameraPreset>; 24] = [
+pub const VIEW_TABLE: [ViewRow<Settings, CameraPreset>; 25] = [
     ViewRow::preset(
         "default",
         "sunset: the boat sails into the sun over the Voronoi sea",
@@ -95,6 +96,12 @@ pub const VIEW_TABLE: [ViewRow<Settings, CameraPreset>; 24] = [
         "the seed's magic carpet: a grid of 24 m, three boat lengths",
         Settings { small_grid: true, ..Settings::SUNSET },
     ),
+    ViewRow::preset(
+        "sail",
+        "close by the boat's side: the sail filled by the wind, the sailor at the helm",
+        Settings::SUNSET,
+        CameraPreset::Sail,
+    ),
     ViewRow::bench("cones-64-512", "64 sites by cones at 512²", Settings::diagram(Method::Cones, 64, 512)),
     ViewRow::bench("jfa-64-512", "64 sites by jump flooding at 512²", Settings::diagram(Method::JumpFlooding, 64, 512)),
     ViewRow::bench("cones-1024-512", "1,024 sites by cones at 512²", Settings::diagram(Method::Cones, 1024, 512)),
@@ -137,6 +144,8 @@ pub enum CameraPreset {
     Sunset,
     /// [`HIGH_ORBIT`]: high over the boat, to see the grid.
     High,
+    /// [`SAIL_ORBIT`]: beside the boat, on the side its sail fills towards.
+    Sail,
 }
 // ANCHOR_END: views
 
@@ -222,6 +231,9 @@ const ROUND_THE_BOAT: Orbit = Orbit::new(1.95, 0.22, 26.0).within((0.02, 1.5), (
 pub const SUNSET_ORBIT: Orbit = ROUND_THE_BOAT;
 /// High over the boat, to see the grid.
 pub const HIGH_ORBIT: Orbit = Orbit { pitch: 1.2, distance: 110.0, ..ROUND_THE_BOAT };
+/// Close by the boat's port quarter at the snapshot time, when the wind
+/// fills the sail towards that side (a test checks both).
+pub const SAIL_ORBIT: Orbit = Orbit { yaw: 0.45, pitch: 0.1, distance: 12.5, ..ROUND_THE_BOAT };
 
 /// The camera looking at a point 2 m above `boat` from `orbit`.
 pub fn orbit_camera(orbit: &Orbit, boat: Vec3, aspect: f32) -> Camera {
@@ -287,6 +299,11 @@ pub struct VoronoiWaterChapter {
     boat_renderer: ShadowedRenderer,
     materials: Materials,
     boat: GpuModel,
+    /// The sail as made (flat) and the sailor, on the CPU: the sail is
+    /// bent from it every frame.
+    pub rig: Rig,
+    sail: GpuModel,
+    sailor: GpuModel,
     boat_instance: wgpu::Buffer,
     post: PostChain,
     target: Target,
@@ -315,7 +332,7 @@ impl VoronoiWaterChapter {
         let corners: Vec<Vec3> = (0..8)
             .map(|i| {
                 let x = if i & 1 == 0 { -boat::BEAM / 2.0 } else { boat::BEAM / 2.0 };
-                let y = if i & 2 == 0 { 0.0 } else { 8.2 };
+                let y = if i & 2 == 0 { 0.0 } else { boat::MAST_TOP };
                 let z = if i & 4 == 0 { -boat::LENGTH / 2.0 } else { boat::LENGTH / 2.0 };
                 model.transform_point3(Vec3::new(x, y, z))
             })
@@ -342,8 +359,10 @@ const BOAT_FILES: &[(&str, &[u8])] = textures::builtin![
     "textures/metal/normal.png",
 ];
 
+/// A file the chapter carries (the boat's, or the sail's and the
+/// sailor's), by its path under `assets/`.
 fn read_builtin(path: &std::path::Path) -> Result<Vec<u8>, common::files::ReadError> {
-    textures::builtin::find(BOAT_FILES, path)
+    textures::builtin::find(BOAT_FILES, path).or_else(|_| sail::read_builtin(path))
 }
 
 impl Chapter for VoronoiWaterChapter {
@@ -388,13 +407,17 @@ impl Chapter for VoronoiWaterChapter {
         let sky = Sky::new(gpu, &scene_lights.layout, &atmosphere)?;
         // The boat: chapter 09's model, materials and loader.
         let loaded = obj::load(std::path::Path::new("models/boat/boat.obj"), &read_builtin)?;
-        for warning in &loaded.warnings {
+        // Its sail and sailor: two more models, through the same loader.
+        let rig = sail::load(&sail::read_builtin)?;
+        for warning in loaded.warnings.iter().chain(&rig.warnings) {
             eprintln!("warning: {warning}");
         }
         let mut mips = MipMaker::new(gpu)?;
         let mut up = Uploader::new(gpu, &mut mips, &read_builtin);
         let mut materials = Materials::new(&mut up);
         let boat = upload_model(&mut up, &mut materials, &loaded.model, "boat");
+        let sail = upload_model(&mut up, &mut materials, &rig.sail, "sail");
+        let sailor = upload_model(&mut up, &mut materials, &rig.sailor, "sailor");
         up.finish();
         let boat_renderer = ShadowedRenderer::new(gpu, &scene_lights, &materials, &shadow_map)?;
         let boat_instance = device.create_buffer(&wgpu::BufferDescriptor {
@@ -423,6 +446,9 @@ impl Chapter for VoronoiWaterChapter {
             boat_renderer,
             materials,
             boat,
+            rig,
+            sail,
+            sailor,
             boat_instance,
             post,
             target,
@@ -442,6 +468,7 @@ impl Chapter for VoronoiWaterChapter {
     fn reset_camera(&mut self, view: usize) {
         self.orbit = match VIEW_TABLE[view].camera {
             Some(CameraPreset::High) => HIGH_ORBIT,
+            Some(CameraPreset::Sail) => SAIL_ORBIT,
             Some(CameraPreset::Sunset) | None => SUNSET_ORBIT,
         };
     }
@@ -518,12 +545,21 @@ impl Chapter for VoronoiWaterChapter {
         let (focus, bounds) = self.shadow_focus(&pose, day.direction);
         let light = fit_light(day.direction, &focus, bounds, self.shadow_map.size);
         self.shadow_map.write(gpu, &light, &shadow);
+        // ANCHOR: rig_draw
+        // The sail filled by the wind across it; the boat, the sail and the
+        // sailor all placed by the boat's one instance, its model matrix.
+        let across = sail::wind_across(pose.helm.heading, sail::wind());
+        gpu.queue.write_buffer(&self.sail.vertices, 0, bytemuck::cast_slice(&self.rig.bent_sail(across)));
         gpu.queue.write_buffer(&self.boat_instance, 0, bytemuck::bytes_of(&ModelInstance::new(pose.model(), 0.0)));
         let list = DrawList {
             materials: &self.materials,
             instances: &self.boat_instance,
-            draws: vec![Draw { model: &self.boat, instances: 0..1 }],
+            draws: [&self.boat, &self.sail, &self.sailor]
+                .into_iter()
+                .map(|model| Draw { model, instances: 0..1 })
+                .collect(),
         };
+        // ANCHOR_END: rig_draw
         self.shadow_map.render(gpu, frame.encoder, frame.timer, &shadow, &list);
         if s.show == Show::ShadowMap {
             // Depths stretched over the boat's (its first eight points).
@@ -622,5 +658,26 @@ impl Chapter for VoronoiWaterChapter {
             self.settings.voronoi.method.label(),
             self.voronoi.cone_radius
         )
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use common::glam::Vec2;
+
+    use super::*;
+
+    #[test]
+    fn the_sail_view_looks_at_the_side_the_sail_fills_towards() {
+        let heading = boat::on_course(SNAPSHOT_TIME).heading;
+        let across = sail::wind_across(heading, sail::wind());
+        assert!(across.abs() > 0.5, "at the snapshot the wind is only {across} across the sail");
+        let ahead = boat::forward(heading);
+        let filled_side = Vec2::new(-ahead.y, ahead.x) * across.signum();
+        let back = SAIL_ORBIT.back();
+        let eye = Vec2::new(back.x, back.z).normalize();
+        // Within 45° of that side: the belly faces the eye.
+        let off = eye.angle_to(filled_side).abs().to_degrees();
+        assert!(off < 45.0, "the eye is {off}° off the side the sail fills to");
     }
 }

@@ -3,8 +3,9 @@
 //! by drawing cones with a depth test or by jump flooding, then coloured,
 //! blurred and edged with foam; the sea is one fixed grid that follows the
 //! boat, its waves worked out in the vertex shader from where each vertex
-//! is in the world. The finale: it composes chapter 07's waves, chapter
-//! 08's light and bloom, chapter 09's boat and chapter 10's shadow map.
+//! is in the world; the boat's sail fills with the wind across it. The
+//! finale: it composes chapter 07's waves, chapter 08's light and bloom,
+//! chapter 09's model loader and chapter 10's shadow map.
 //!
 //! The modules below come in the order the book explains them; the
 //! re-exports after them keep the demo's names at the crate's root.
@@ -19,6 +20,8 @@ pub mod water_texture;
 pub mod sea;
 // Where the boat sails, and how it rides the waves.
 pub mod boat;
+// Its sail, which fills with the wind, and its sailor.
+pub mod sail;
 // Colour from gradients: the sky, the sun's light, the islands.
 pub mod atmosphere;
 // Islands on the horizon.
@@ -27,6 +30,6 @@ pub mod islands;
 pub mod demo;
 
 pub use demo::{
-    CameraPreset, DayClock, HIGH_ORBIT, Play, SNAPSHOT_TIME, SUNSET_ORBIT, Settings, Show, VIEW_TABLE,
+    CameraPreset, DayClock, HIGH_ORBIT, Play, SAIL_ORBIT, SNAPSHOT_TIME, SUNSET_ORBIT, Settings, Show, VIEW_TABLE,
     VoronoiWaterChapter, orbit_camera, orders_from,
 };

@@ -35,13 +35,17 @@ pub fn periodic_wave(angle: f32, wavelength: f32, amplitude: f32) -> Wave {
     Wave { direction: Vec2::new(m, n) / cycles, amplitude, wavelength: PERIOD_METRES / cycles, speed: omega / k }
 }
 
+/// The way the wind blows, radians from +x towards +z: the longest wave
+/// runs with it, and the sail fills with it.
+pub const WIND_ANGLE: f32 = 0.7;
+
 /// The sea's eight waves: wind from the south-west, wavelengths from 72 m
 /// to 17 m (four grid cells at least, so the grid can draw them), each
 /// as steep as the others: amplitude 1/90 of the wavelength.
 pub fn sea_waves() -> [Wave; 8] {
     let wavelengths = [72.0, 52.0, 40.0, 31.0, 25.0, 21.0, 18.5, 17.0];
     let spread = [0.0, 0.45, -0.4, 0.8, -0.75, 0.25, -0.2, 0.6];
-    std::array::from_fn(|i| periodic_wave(0.7 + spread[i], wavelengths[i], wavelengths[i] / 90.0))
+    std::array::from_fn(|i| periodic_wave(WIND_ANGLE + spread[i], wavelengths[i], wavelengths[i] / 90.0))
 }
 
 /// Scene time as the waves see it: reduced modulo their period, which

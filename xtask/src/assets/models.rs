@@ -1,12 +1,13 @@
 //! Models for chapters 09 to 11, written as Wavefront OBJ with MTL
 //! materials: a car with body, glass, tyres and lights; a stepped office
-//! tower; the boat that chapter 11 sails; chapter 10's tree, rock, crate,
-//! player, floating island and low-poly sphere. Built from code like everything
+//! tower; the boat that chapter 11 sails, with its sail and sailor;
+//! chapter 10's tree, rock, crate, player, floating island and low-poly
+//! sphere. Built from code like everything
 //! under `assets/`, and written the way exporters write them: several
 //! objects, quads and n-gons, some faces with relative (negative) indices.
 //!
 //! Conventions: metres, y up, the car's and the boat's front towards −z,
-//! standing on y = 0. Texture coordinates follow OBJ (v up the image).
+//! standing on y = 0; the sail and the sailor are in the boat's frame. Texture coordinates follow OBJ (v up the image).
 
 use std::fmt::Write as _;
 use std::path::Path;
@@ -471,6 +472,173 @@ fn boat() -> String {
     obj.obj
 }
 
+const SAIL_MTL: &str = "\
+# The sail's materials (chapter 11): canvas, a wooden boom, a rope sheet.
+newmtl cloth
+Kd 0.920 0.880 0.780
+Ks 0.050 0.050 0.050
+Ns 8
+
+newmtl spar
+Kd 0.450 0.270 0.130
+Ks 0.150 0.150 0.150
+Ns 16
+
+newmtl rope
+Kd 0.680 0.580 0.400
+Ks 0.050 0.050 0.050
+Ns 8
+";
+
+/// Rows of the sail's cloth from the boom to the head: 6² = 36 triangles
+/// a side.
+const SAIL_ROWS: usize = 6;
+
+/// The boat's mainsail, a boom under it and the sheet that holds the boom,
+/// in the boat's own frame (so the boat's model matrix places them): the
+/// mast is the boat's, its aft face at z = −0.94. The cloth is a triangle
+/// in the plane x = 0, from the tack (at the mast, on the boom) up the
+/// luff to the head and aft along the foot to the clew; its texture
+/// coordinates are its own coordinates, u along the foot and v up the luff,
+/// each 0 to 1, which chapter 11 reads to swell it. Both sides are
+/// written, since a sail is seen (and casts its shadow) from either.
+fn sail() -> String {
+    let mut obj = ObjWriter::new(
+        "The boat's sail, boom and sheet for chapter 11, in the boat's frame, written by `cargo xtask assets`.",
+        Some("sail.mtl"),
+    );
+    let (tack, head, clew) = (Vec3::new(0.0, 3.32, -0.92), Vec3::new(0.0, 7.9, -0.92), Vec3::new(0.0, 3.32, 3.4));
+    obj.object("sail");
+    obj.material("cloth");
+    // The triangular grid: corner (i, j) at u = i / rows, v = j / rows,
+    // i + j ≤ rows. Positions and uvs are shared by both sides.
+    let mut corner = std::collections::HashMap::new();
+    for j in 0..=SAIL_ROWS {
+        for i in 0..=SAIL_ROWS - j {
+            let (u, v) = (i as f32 / SAIL_ROWS as f32, j as f32 / SAIL_ROWS as f32);
+            let position = obj.position(tack + (clew - tack) * u + (head - tack) * v);
+            let uv = obj.uv(Vec2::new(u, v));
+            corner.insert((i, j), (position, uv));
+        }
+    }
+    let mut triangles = Vec::new();
+    for j in 0..SAIL_ROWS {
+        for i in 0..SAIL_ROWS - j {
+            triangles.push([(i, j), (i + 1, j), (i, j + 1)]);
+            if i + j + 1 < SAIL_ROWS {
+                triangles.push([(i + 1, j), (i + 1, j + 1), (i, j + 1)]);
+            }
+        }
+    }
+    // (tack, clew, head) turns counter-clockwise seen from −x (port).
+    for side in [Vec3::X, Vec3::NEG_X] {
+        let normal = obj.normal(side);
+        for triangle in &triangles {
+            let mut corners: Vec<Corner> = triangle
+                .iter()
+                .map(|at| Corner { position: corner[at].0, uv: Some(corner[at].1), normal: Some(normal) })
+                .collect();
+            if side == Vec3::X {
+                corners.reverse();
+            }
+            obj.face(&corners, false);
+        }
+    }
+    obj.object("boom");
+    obj.material("spar");
+    obj.cuboid(Vec3::new(-0.05, 3.2, -0.94), Vec3::new(0.05, 3.32, 3.5), 1.0);
+    obj.object("sheet");
+    obj.material("rope");
+    obj.cuboid(Vec3::new(-0.015, 1.2, 3.42), Vec3::new(0.015, 3.2, 3.45), 1.0);
+    obj.obj
+}
+
+const SAILOR_MTL: &str = "\
+# The sailor's materials (chapter 11).
+newmtl skin
+Kd 0.900 0.620 0.460
+Ks 0.100 0.100 0.100
+Ns 12
+
+newmtl tunic
+Kd 0.180 0.520 0.160
+Ks 0.080 0.080 0.080
+Ns 10
+
+newmtl trousers
+Kd 0.880 0.840 0.700
+Ks 0.060 0.060 0.060
+Ns 10
+
+newmtl hat
+Kd 0.140 0.440 0.130
+Ks 0.080 0.080 0.080
+Ns 10
+
+newmtl boots
+Kd 0.300 0.170 0.080
+Ks 0.200 0.200 0.200
+Ns 24
+";
+
+/// An object of boxes from (low, high) corners, all in one material.
+fn boxes(obj: &mut ObjWriter, object: &str, material: &str, boxes: &[(Vec3, Vec3)]) {
+    obj.object(object);
+    obj.material(material);
+    for &(low, high) in boxes {
+        obj.cuboid(low, high, 0.5);
+    }
+}
+
+/// A sailor 1.6 m tall at the helm, between the cabin and the sheet, in
+/// the boat's frame (feet on the deck, y = 1.2), facing the bow (−z):
+/// boxes for boots, legs, body, arms, hands and head, and a pointed cap
+/// whose tip droops aft. Faceted, in the seed's toon manner.
+fn sailor() -> String {
+    let mut obj = ObjWriter::new(
+        "A sailor for chapter 11's boat, in the boat's frame, written by `cargo xtask assets`.",
+        Some("sailor.mtl"),
+    );
+    let b = |x0: f32, y0: f32, z0: f32, x1: f32, y1: f32, z1: f32| (Vec3::new(x0, y0, z0), Vec3::new(x1, y1, z1));
+    boxes(&mut obj, "boots", "boots", &[b(-0.17, 1.2, 2.84, -0.03, 1.32, 3.08), b(0.03, 1.2, 2.84, 0.17, 1.32, 3.08)]);
+    boxes(
+        &mut obj,
+        "legs",
+        "trousers",
+        &[b(-0.16, 1.32, 2.89, -0.04, 1.93, 3.03), b(0.04, 1.32, 2.89, 0.16, 1.93, 3.03)],
+    );
+    // The body and the arms; the head and the hands.
+    let body = [
+        b(-0.2, 1.88, 2.85, 0.2, 2.46, 3.07),
+        b(-0.3, 1.98, 2.9, -0.2, 2.44, 3.02),
+        b(0.2, 1.98, 2.9, 0.3, 2.44, 3.02),
+    ];
+    boxes(&mut obj, "body", "tunic", &body);
+    let skin = [
+        b(-0.13, 2.47, 2.83, 0.13, 2.75, 3.09),
+        b(-0.29, 1.88, 2.91, -0.21, 1.98, 3.01),
+        b(0.21, 1.88, 2.91, 0.29, 1.98, 3.01),
+    ];
+    boxes(&mut obj, "head", "skin", &skin);
+    obj.object("cap");
+    obj.material("hat");
+    // The cap: a six-sided cone on the head, its tip drooping aft.
+    const AROUND: usize = 6;
+    let (centre, radius, tip) = (Vec3::new(0.0, 2.72, 2.96), 0.17, Vec3::new(0.0, 2.98, 3.3));
+    let rim: Vec<Vec3> = (0..AROUND)
+        .map(|k| {
+            let (sin, cos) = (std::f32::consts::TAU * k as f32 / AROUND as f32).sin_cos();
+            centre + Vec3::new(radius * cos, 0.0, -radius * sin)
+        })
+        .collect();
+    for k in 0..AROUND {
+        facet(&mut obj, &[rim[k], rim[(k + 1) % AROUND], tip], 0.5);
+    }
+    let underside: Vec<Vec3> = rim.iter().rev().copied().collect();
+    facet(&mut obj, &underside, 0.5);
+    obj.obj
+}
+
 /// A surface of revolution about the vertical line through `centre`:
 /// `profile` is (radius, height) from bottom to top. Smooth normals from the
 /// profile's slope; u around, v up, one repeat around.
@@ -777,7 +945,7 @@ fn sphere() -> String {
 }
 
 /// (folder, file stem, OBJ text, MTL text, what it is).
-fn models() -> [(&'static str, String, &'static str, &'static str); 9] {
+fn models() -> [(&'static str, String, &'static str, &'static str); 11] {
     [
         (
             "car",
@@ -796,6 +964,18 @@ fn models() -> [(&'static str, String, &'static str, &'static str); 9] {
             boat(),
             BOAT_MTL,
             "the boat chapter 11 sails, 8 m: a hull lofted through 17 cross-sections, a stripe, an n-gon deck and transom, cabin and mast",
+        ),
+        (
+            "sail",
+            sail(),
+            SAIL_MTL,
+            "the boat's mainsail (chapter 11), in the boat's frame: a triangle of cloth 4.6 m up the mast and 4.3 m along the boom, 6 rows, both sides, its uvs its own coordinates (u along the foot, v up the luff); a wooden boom and a rope sheet",
+        ),
+        (
+            "sailor",
+            sailor(),
+            SAILOR_MTL,
+            "a sailor 1.6 m tall at the boat's helm (chapter 11), in the boat's frame: boxes for boots, legs, tunic, arms, hands and head, and a six-sided cap drooping aft; skin, tunic, trousers, hat and boots",
         ),
         (
             "tree",
