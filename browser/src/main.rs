@@ -289,6 +289,53 @@ impl ChapterPage {
         Ok(())
     }
 
+    /// Presses and releases one key, as a keyboard does: `text` is what it
+    /// types (none for Backspace, F2 or a chord), `modifiers` CDP's bits
+    /// (2: Ctrl).
+    fn press(&self, code: &str, key: &str, key_code: u32, text: Option<&str>, modifiers: u32) -> anyhow::Result<()> {
+        for kind in [Input::DispatchKeyEventTypeOption::KeyDown, Input::DispatchKeyEventTypeOption::KeyUp] {
+            let down = kind == Input::DispatchKeyEventTypeOption::KeyDown;
+            self.tab
+                .call_method(Input::DispatchKeyEvent {
+                    Type: kind,
+                    modifiers: Some(modifiers),
+                    timestamp: None,
+                    text: text.filter(|_| down).map(str::to_string),
+                    unmodified_text: None,
+                    key_identifier: None,
+                    code: Some(code.into()),
+                    key: Some(key.into()),
+                    windows_virtual_key_code: Some(key_code),
+                    native_virtual_key_code: None,
+                    auto_repeat: None,
+                    is_keypad: None,
+                    is_system_key: None,
+                    location: None,
+                    commands: None,
+                })
+                .map_err(|e| anyhow::anyhow!("pressing {code}: {e}"))?;
+        }
+        Ok(())
+    }
+
+    /// Types `text` key by key (digits, letters, space, '.', '-', '@').
+    fn type_keys(&self, text: &str) -> anyhow::Result<()> {
+        for c in text.chars() {
+            let typed = c.to_string();
+            let (code, key_code) = match c {
+                '0'..='9' => (format!("Digit{c}"), c as u32),
+                'a'..='z' | 'A'..='Z' => (format!("Key{}", c.to_ascii_uppercase()), c.to_ascii_uppercase() as u32),
+                ' ' => ("Space".into(), 32),
+                '.' => ("Period".into(), 190),
+                '-' => ("Minus".into(), 189),
+                '@' => ("Digit2".into(), 50),
+                _ => bail!("no key for {c:?}"),
+            };
+            self.press(&code, &typed, key_code, Some(&typed), 0)?;
+        }
+        Ok(())
+    }
+
     fn mouse(&self, kind: Input::DispatchMouseEventTypeOption, x: f64, y: f64, pressed: bool) -> anyhow::Result<()> {
         let button = if kind == Input::DispatchMouseEventTypeOption::MouseMoved {
             Input::MouseButton::None
@@ -549,6 +596,8 @@ fn test_pages(browser: &Browser, base: &str) -> anyhow::Result<()> {
     ensure!(console.iter().any(|e| e.contains("panicked")), "a panic did not reach the console: {console:?}");
     drop(page);
 
+    let panel = shader_panel(browser, base).context("the shader panel")?;
+
     let memory = MEMORY_CHAPTERS
         .iter()
         .map(|chapter| memory_stays_flat(browser, base, chapter).with_context(|| format!("{chapter}'s memory")))
@@ -577,10 +626,106 @@ fn test_pages(browser: &Browser, base: &str) -> anyhow::Result<()> {
     let shown = page.eval("document.getElementById('message').textContent")?;
     ensure!(shown.as_str().is_some_and(|s| s.contains("WebGPU")), "without WebGPU or WebGL the page showed '{shown}'");
     println!(
-        "browser pages ok: unknown parameter reported, bad view named, panic shown, memory flat ({memory}), \
-         on WebGL2 {on_webgl2}, no-adapter message"
+        "browser pages ok: unknown parameter reported, bad view named, panic shown, {panel}, memory flat \
+         ({memory}), on WebGL2 {on_webgl2}, no-adapter message"
     );
     Ok(())
+}
+
+// ANCHOR: shader_panel
+/// The shader panel in a page, driven by real key events: typing changes
+/// the canvas, a broken edit is reported at its line while frames go on,
+/// the shared link reproduces the change, and the banner's button goes
+/// back to the original. Chapter 01, whose picture does not move.
+fn shader_panel(browser: &Browser, base: &str) -> anyhow::Result<String> {
+    const FILE: &str = "triangle/triangle.wgsl";
+    let shipped_wgsl = include_str!("../../shaders/triangle/triangle.wgsl");
+    // The picture with the overlay hidden (F2), as shipped.
+    let shipped = {
+        let page = ChapterPage::open(browser, &page_url(base, "triangle", ""))?;
+        page.wait_for("frames", |p| p.drawn >= 2)?;
+        picture_alone(&page)?
+    };
+    // The cursor goes before `in.color, 1.0` in the fragment shader.
+    let at = "in.color, 1.0";
+    let page = ChapterPage::open(browser, &page_url(base, "triangle", &format!("?edit={FILE}&at=in.color%2C%201.0")))?;
+    page.wait_for("the editor to have the keyboard", |p| p.drawn >= 2)?;
+    ensure!(
+        page.state("probe").contains("typing=1"),
+        "?edit did not give the editor the keyboard: {}",
+        page.state("probe")
+    );
+    ensure!(page.state("shaderFile") == FILE, "the panel opened on '{}'", page.state("shaderFile"));
+    // `vec4<f32>(1.0 - in.color, 1.0)`: the colours inverted.
+    page.type_keys("1.0 - ")?;
+    // Keys reach the page a frame or more apart: a pause may build a part
+    // of the edit first, so wait for a build that worked.
+    let built = |page: &ChapterPage| !page.state("editToFrameMs").is_empty() && page.state("shaderError").is_empty();
+    wait_until(&page, "the edit to be built", built)?;
+    let probe = page.wait_for("frames", |_| true)?;
+    ensure!(page.state("probe").contains("held=0"), "typing moved the camera: {}", page.state("probe"));
+
+    // A broken edit: the message in the page, at the line typed on, and frames go on.
+    page.type_keys("@")?;
+    wait_until(&page, "the broken edit's error", |page| !page.state("shaderError").is_empty())?;
+    let line = shipped_wgsl.lines().position(|l| l.contains(at)).context("no such line")? + 1;
+    let shown = page.state("shaderErrorLine");
+    ensure!(
+        shown == line.to_string(),
+        "the error is on line {line}, the page marks '{shown}': {}",
+        page.state("shaderError")
+    );
+    page.wait_for("frames after the broken edit", |p| p.drawn >= probe.drawn + 3)?;
+    page.press("Backspace", "Backspace", 8, None, 0)?;
+    wait_until(&page, "the fixed edit", |page| page.state("shaderError").is_empty())?;
+    let edited = picture_alone(&page)?;
+    let centre = |picture: &image::RgbaImage| *picture.get_pixel(picture.width() / 2, picture.height() / 2);
+    let (before, after) = (centre(&shipped), centre(&edited));
+    let change: i32 = (0..3).map(|c| (i32::from(before[c]) - i32::from(after[c])).abs()).sum();
+    ensure!(change > 60, "the edit should change the centre's colour: {before:?} then {after:?}");
+
+    // Share: the link holds the edit; opened, it shows the same picture.
+    page.eval("window.shareShaderEdits()")?;
+    wait_until(&page, "the shared link", |page| page.state("shareUrl").contains("#edits="))?;
+    let link = page.state("shareUrl");
+    no_console_errors(&page)?;
+    drop(page);
+    let shared = ChapterPage::open(browser, &link)?;
+    shared.wait_for("frames of the shared link", |p| p.drawn >= 2)?;
+    ensure!(shared.state("edited") == FILE, "the shared page's banner names '{}'", shared.state("edited"));
+    let from_link = picture_alone(&shared)?;
+    ensure!(centre(&from_link) == after, "the link shows {:?}, the edit {after:?}", centre(&from_link));
+    // "Show the original": the stored edit is gone and the picture is back.
+    shared.eval("document.querySelector('#edited button').click()")?;
+    wait_until(&shared, "the original after the banner's button", |page| {
+        page.state("edited").is_empty() && Probe::parse(&page.state("probe")).is_some_and(|p| p.drawn >= 2)
+    })?;
+    let original = picture_alone(&shared)?;
+    ensure!(centre(&original) == before, "back to the original: {:?}, shipped {before:?}", centre(&original));
+    no_console_errors(&shared)?;
+    Ok(format!("shader panel ok (typed, error at line {line}, shared, restored)"))
+}
+// ANCHOR_END: shader_panel
+
+/// Waits until `ready` holds for the page.
+fn wait_until(page: &ChapterPage, what: &str, ready: impl Fn(&ChapterPage) -> bool) -> anyhow::Result<()> {
+    let deadline = Instant::now() + STEP;
+    while !ready(page) {
+        ensure!(page.state("status") != "error", "{what}: the page reports {}", page.state("error"));
+        ensure!(Instant::now() < deadline, "{what}: not within {STEP:?}");
+        std::thread::sleep(Duration::from_millis(50));
+    }
+    Ok(())
+}
+
+/// The canvas with the overlay hidden (F2, pressed again after).
+fn picture_alone(page: &ChapterPage) -> anyhow::Result<image::RgbaImage> {
+    page.press("F2", "F2", 113, None, 0)?;
+    let hidden = page.wait_for("frames", |_| true)?;
+    page.wait_for("two frames without the overlay", |p| p.drawn >= hidden.drawn + 2)?;
+    let picture = page.canvas()?;
+    page.press("F2", "F2", 113, None, 0)?;
+    Ok(picture)
 }
 
 /// Chapters whose pages are watched for memory growth: the runner alone,
@@ -667,21 +812,51 @@ fn bench_all(base: &str, chapters: &[course::Record], out: &Path) -> anyhow::Res
             page.state("probe").split_whitespace().find_map(|w| w.strip_prefix("surface=").map(str::to_string));
         let adapter = page.state("adapter");
         drop(page);
+        let (file, edit_ms) = edit_to_frame(&browser, base, entry.name)?;
         let webgl2 = webgl2(&browser, base, entry);
         let surface = surface.unwrap_or_default();
         println!(
             "{}: first frame {first_ms:.0} ms (longest task {longest_task_ms:.0} ms), {frame_ms:.1} ms a frame at \
-             {surface}; WebGL2: {webgl2}",
+             {surface}; an edit of {file} to its frame {edit_ms:.0} ms; WebGL2: {webgl2}",
             entry.name
         );
         rows.push(format!(
-            "{}\t{first_ms:.0}\t{longest_task_ms:.0}\t{frame_ms:.1}\t{surface}\t{webgl2}\t{adapter}",
+            "{}\t{first_ms:.0}\t{longest_task_ms:.0}\t{frame_ms:.1}\t{surface}\t{webgl2}\t{adapter}\t{file}\t{edit_ms:.0}",
             entry.name
         ));
     }
     std::fs::write(out, rows.join("\n") + "\n")?;
     Ok(())
 }
+
+// ANCHOR: edit_to_frame
+/// Edits to measure per chapter.
+const EDITS: usize = 5;
+
+/// The page's own measure of a shader edit, from Ctrl+Enter to the frame
+/// drawn with it (`data-edit-to-frame-ms`), median of [`EDITS`] edits of
+/// the chapter's main file (a space typed at its start, then Ctrl+Enter).
+fn edit_to_frame(browser: &Browser, base: &str, chapter: &str) -> anyhow::Result<(String, f64)> {
+    let page = ChapterPage::open(browser, &page_url(base, chapter, "?edit="))?;
+    page.wait_for("the editor to have the keyboard", |p| p.drawn >= 1)?;
+    ensure!(page.state("probe").contains("typing=1"), "{chapter}: ?edit= did not give the editor the keyboard");
+    let mut samples = Vec::new();
+    for _ in 0..EDITS {
+        let built = page.state("editsBuilt").parse::<u64>().unwrap_or(0);
+        page.type_keys(" ")?;
+        page.press("Enter", "Enter", 13, None, 2)?;
+        wait_until(&page, "the edit to be built and drawn", |page| {
+            page.state("editsBuilt").parse::<u64>().unwrap_or(0) > built
+        })?;
+        ensure!(page.state("shaderError").is_empty(), "{chapter}: {}", page.state("shaderError"));
+        samples.push(page.state("editToFrameMs").parse::<f64>().context("no edit-to-frame figure")?);
+    }
+    // The stored edits must not follow the reader to the chapter's other pages.
+    page.eval("document.querySelector('#edited button').click()")?;
+    samples.sort_by(f64::total_cmp);
+    Ok((page.state("shaderFile"), samples[EDITS / 2]))
+}
+// ANCHOR_END: edit_to_frame
 
 /// The longest the page's thread was busy at a stretch since it began
 /// loading, by the browser's own Long Tasks API (which reports tasks over

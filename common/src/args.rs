@@ -62,8 +62,9 @@ pub struct Args {
     pub bench: bool,
 
     /// Open the window with the shader panel on FILE, a WGSL file under shaders/ that the chapter
-    /// builds from (the panel lists them), like triangle/triangle.wgsl.
-    #[arg(long, value_name = "FILE", conflicts_with_all = ["screenshot", "bench"])]
+    /// builds from (the panel lists them), like triangle/triangle.wgsl; with no FILE, on the chapter's
+    /// main file.
+    #[arg(long, value_name = "FILE", num_args = 0..=1, default_missing_value = "", conflicts_with_all = ["screenshot", "bench"])]
     pub edit: Option<String>,
 
     /// Where the shader panel puts the cursor: the first place this text occurs in the `edit` file

@@ -110,6 +110,14 @@ fn run_headless<C: Chapter>(args: &Args) -> anyhow::Result<()> {
             notes.push(format!("- {}: setup (`Chapter::new`) {:.0} ms{extra}", report.view, report.setup_ms));
             notes.push(format!("- {}: {}", report.view, report.memory.summary()));
         }
+        if args.view.is_none() {
+            let (file, edit) = headless::edit_to_frame::<C>(&gpu, &request(0), 5, &args.chapter_flags)?;
+            notes.push(format!(
+                "- a shader edit to the frame that shows it (`{file}`, 5 edits built with Ctrl+Enter): \
+                 median {:.0} ms (min {:.0}, p95 {:.0})",
+                edit.median, edit.min, edit.p95
+            ));
+        }
         println!("\n{}", notes.join("\n"));
         let baseline = C::BENCH_BASELINE.and_then(|name| medians.iter().find(|(view, _)| *view == name));
         if let Some(&(name, base)) = baseline {

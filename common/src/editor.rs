@@ -15,10 +15,12 @@ use web_time::{Duration, Instant};
 
 use crate::{Gpu, ShaderError, ShaderFile};
 
+// ANCHOR: pause_before_build
 /// How long typing must pause before an edit is built (Ctrl+Enter builds
 /// at once): long enough not to rebuild on every key, short enough to feel
 /// live.
 pub const PAUSE_BEFORE_BUILD: Duration = Duration::from_millis(400);
+// ANCHOR_END: pause_before_build
 
 /// An error, as the panel shows it: the message, and the line (1-based) in
 /// the file it names, when that is the file being edited.
@@ -52,7 +54,8 @@ pub struct ShaderEditor {
     buffers: HashMap<&'static str, String>,
     /// When typing last changed the open file and it has not been built yet.
     typed_at: Option<Instant>,
-    build_now: bool,
+    /// When the open file should be built from: Ctrl+Enter's moment.
+    build_from: Option<Instant>,
     error: Option<PanelError>,
     /// A character index to put the cursor at, once the editor exists.
     cursor_to: Option<usize>,
@@ -61,6 +64,8 @@ pub struct ShaderEditor {
     /// How long the last build took, from the end of typing (or
     /// Ctrl+Enter) to the frame drawn with it: see [`ShaderEditor::drew`].
     pub last_edit_to_frame: Option<Duration>,
+    /// Builds done, failed ones included.
+    pub builds: u64,
     built_at: Option<Instant>,
 }
 
@@ -116,9 +121,9 @@ impl ShaderEditor {
         }
     }
 
-    /// Builds the open file's text now (Ctrl+Enter).
+    /// Builds the open file's text at the next update (Ctrl+Enter).
     pub fn build_now(&mut self) {
-        self.build_now = true;
+        self.build_from = Some(Instant::now());
     }
 
     fn refresh_files(&mut self, gpu: &Gpu) {
@@ -148,17 +153,11 @@ impl ShaderEditor {
             self.status = "not built: the last good version keeps drawing".into();
             self.error = Some(PanelError { message: format!("the pipeline could not be created: {message}"), line });
         }
-        let paused = self.typed_at.is_some_and(|at| at.elapsed() >= PAUSE_BEFORE_BUILD);
-        if !(paused || self.build_now) {
-            return;
-        }
-        let started = if self.build_now {
-            Instant::now()
-        } else {
-            self.typed_at.map_or_else(Instant::now, |at| at + PAUSE_BEFORE_BUILD)
-        };
+        // Typing ended a pause ago, or Ctrl+Enter was pressed: that moment
+        // (the last key) starts the clock of `last_edit_to_frame`.
+        let paused = self.typed_at.filter(|at| at.elapsed() >= PAUSE_BEFORE_BUILD);
+        let Some(started) = self.build_from.take().or(paused) else { return };
         self.typed_at = None;
-        self.build_now = false;
         let (Some(path), Some(text)) = (self.selected, self.text().map(str::to_string)) else { return };
         self.apply(gpu, path, &text);
         self.built_at = Some(started);
@@ -171,6 +170,7 @@ impl ShaderEditor {
         let own = gpu.shader_root().and_then(|root| std::fs::read_to_string(root.join(path)).ok());
         let is_own = own.as_deref().unwrap_or(self.shipped(path).unwrap_or_default()) == text;
         let result = gpu.edit_shader(path, if is_own { None } else { Some(text) });
+        self.builds += 1;
         match result {
             Ok(rebuilt) => {
                 self.error = None;
@@ -209,7 +209,8 @@ impl ShaderEditor {
 
     /// Draws the panel (when open) and returns what the runner should do.
     /// `can_save`: the desktop with a source tree; `can_share`: a page.
-    pub fn ui(&mut self, ctx: &egui::Context, gpu: &Gpu, can_save: bool, can_share: bool) -> Request {
+    /// `chapter` is the chapter's name: the panel opens on its main file.
+    pub fn ui(&mut self, ctx: &egui::Context, gpu: &Gpu, chapter: &str, can_save: bool, can_share: bool) -> Request {
         if !self.open {
             return Request::Nothing;
         }
@@ -217,9 +218,9 @@ impl ShaderEditor {
             self.refresh_files(gpu);
         }
         if self.selected.is_none()
-            && let Some(first) = self.files.first().map(|file| file.path)
+            && let Some(main) = main_file(gpu, chapter)
         {
-            self.select(gpu, first);
+            self.select(gpu, main);
         }
         let mut request = Request::Nothing;
         let mut open = self.open;
@@ -250,7 +251,7 @@ impl ShaderEditor {
                 self.select(gpu, chosen);
             }
             if ui.button("build").on_hover_text("Ctrl+Enter; edits also build after a pause in typing").clicked() {
-                self.build_now = true;
+                self.build_now();
             }
             if ui.button("revert").on_hover_text("back to the text this file shipped with").clicked() {
                 self.revert(gpu);
@@ -265,7 +266,7 @@ impl ShaderEditor {
         });
         // Ctrl+Enter is the panel's, before the editor could take the Enter.
         if ui.input_mut(|i| i.consume_key(egui::Modifiers::COMMAND, egui::Key::Enter)) {
-            self.build_now = true;
+            self.build_now();
         }
         let error_line = self.error.as_ref().and_then(|error| error.line);
         let text = self.buffers.entry(path).or_default();
@@ -319,6 +320,15 @@ impl ShaderEditor {
         }
         request
     }
+}
+
+/// The file a chapter's panel opens on: of its own files (under
+/// `shaders/<chapter>/`), the one the most pipeline sets are made from.
+pub fn main_file(gpu: &Gpu, chapter: &str) -> Option<&'static str> {
+    let files = gpu.shader_files();
+    let own = files.iter().filter(|file| file.path.starts_with(&format!("{chapter}/")));
+    // The first of the most used: `max_by_key` keeps the last of equals.
+    own.rev().max_by_key(|file| gpu.shader_users(file.path)).or(files.first()).map(|file| file.path)
 }
 
 // ANCHOR: error_line

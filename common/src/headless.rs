@@ -293,3 +293,42 @@ pub fn bench<C: Chapter>(
         memory,
     })
 }
+
+// ANCHOR: edit_to_frame
+/// How long a shader edit takes to reach the picture: the chapter's main
+/// file (the one its shader panel opens on) is edited `edits` times
+/// through the panel's own entry points, each built at once (Ctrl+Enter),
+/// and each time from the key to the GPU finishing the next frame is
+/// measured. The edit appends a comment: the picture stays the same, and
+/// the whole path runs (compose, validate, create the pipelines).
+pub fn edit_to_frame<C: Chapter>(
+    gpu: &Gpu,
+    request: &RenderRequest,
+    edits: usize,
+    flags: &FlagValues,
+) -> anyhow::Result<(&'static str, Stats)> {
+    let target = Target { format: OFFSCREEN_FORMAT, width: request.width, height: request.height };
+    let mut chapter = crate::chapter::create::<C>(gpu, target, flags)?;
+    chapter.select_view(request.view);
+    let offscreen = Offscreen::new(&gpu.device, target);
+    let file = crate::editor::main_file(gpu, C::NAME).context("the chapter builds no pipeline from WGSL")?;
+    let mut editor = crate::editor::ShaderEditor::new();
+    editor.open_on(gpu, file, None)?;
+    let original = editor.text().unwrap_or_default().to_string();
+    let mut samples = Vec::new();
+    for i in 0..edits {
+        editor.type_text(&format!("{original}\n// edit {i}\n"));
+        editor.build_now();
+        let start = Instant::now();
+        editor.update(gpu);
+        if let Some(error) = editor.error() {
+            bail!("editing {file} failed: {}", error.message);
+        }
+        draw_frame(gpu, &mut chapter, &offscreen.view, request.time, request.view, &PassTimer::off());
+        gpu.device.poll(wgpu::PollType::wait_indefinitely()).context("waiting for the frame")?;
+        samples.push(start.elapsed().as_secs_f64() * 1e3);
+    }
+    editor.revert(gpu);
+    Ok((file, Stats::of(&samples).context("no edits measured")?))
+}
+// ANCHOR_END: edit_to_frame

@@ -13,6 +13,7 @@ use crate::{Chapter, Gpu};
 /// as the key help lists them after the chapter's own.
 const RUNNER_KEYS: &[(&str, &str)] = &[
     ("F1", "show or hide this help"),
+    ("F2", "hide or show the overlay, to see the picture whole (also while typing)"),
     ("F12", "save a screenshot (PNG) of the scene"),
     ("P", "pause or resume scene time"),
     ("Tab", "lock the pointer for mouse look (Esc unlocks)"),

@@ -269,6 +269,12 @@ impl Gpu {
         used
     }
 
+    /// How many live pipeline sets ([`Reloadable`]s) are made from the file
+    /// at `path`, directly or through a file that imports it.
+    pub fn shader_users(&self, path: &str) -> usize {
+        self.shaders.using(&[path]).len()
+    }
+
     /// The text the file at `path` is built from now (an edit, the source
     /// tree's, or the embedded copy), or `None` for a file no live
     /// pipeline uses.

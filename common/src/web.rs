@@ -251,6 +251,7 @@ pub fn show_editor_state(editor: &crate::editor::ShaderEditor) {
     state("shaderError", error.map_or_else(String::new, |e| e.message.clone()));
     state("shaderErrorLine", error.and_then(|e| e.line).map_or_else(String::new, |line| line.to_string()));
     state("shaderFile", editor.selected().unwrap_or_default().to_string());
+    state("editsBuilt", editor.builds.to_string());
     if let Some(took) = editor.last_edit_to_frame {
         state("editToFrameMs", format!("{:.1}", took.as_secs_f64() * 1000.0));
     }

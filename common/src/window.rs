@@ -106,6 +106,8 @@ struct Running<C: Chapter> {
     /// every one of them builds.
     shader_error: Option<(String, Vec<String>)>,
     show_help: bool,
+    /// F2 hides the overlay (its windows keep their state).
+    overlay_hidden: bool,
     frames_left: Option<u32>,
     pointer_locked: bool,
     dragging: bool,
@@ -189,6 +191,11 @@ impl<C: Chapter> ApplicationHandler<Opened<C>> for App<C> {
                 // keyboard now: a key held down must never stay held.
                 if event.state == ElementState::Released {
                     app.input.key_up(key);
+                    return;
+                }
+                // Not text: works while typing into the shader panel.
+                if key == KeyCode::F2 {
+                    app.overlay_hidden = !app.overlay_hidden;
                     return;
                 }
                 if app.overlay.ctx.egui_wants_keyboard_input() {
@@ -336,6 +343,8 @@ impl Opening {
         let overlay = Overlay::new(&window, &gpu, overlay_format);
         let mut editor = ShaderEditor::new();
         if let Some(file) = &args.edit {
+            // `--edit` alone: the chapter's main file.
+            let file = if file.is_empty() { crate::editor::main_file(&gpu, C::NAME).unwrap_or_default() } else { file };
             editor
                 .open_on(&gpu, file, args.edit_at.as_deref())
                 .map_err(|e| crate::args::UsageError(format!("--edit {file}: {e}")))?;
@@ -366,6 +375,7 @@ impl Opening {
             watcher,
             shader_error: None,
             show_help: false,
+            overlay_hidden: false,
             frames_left: args.frames,
             pointer_locked: false,
             dragging: false,
@@ -596,11 +606,15 @@ impl<C: Chapter> Running<C> {
                 adapter: gpu.adapter.get_info().name,
                 memory: self.memory,
             };
+            let hidden = self.overlay_hidden;
             overlay.draw(gpu, &mut encoder, &overlay_view, size, window, |ctx| {
+                if hidden {
+                    return;
+                }
                 if panel.show(ctx) {
                     editor.open = !editor.open;
                 }
-                request = editor.ui(ctx, gpu, can_save, can_share);
+                request = editor.ui(ctx, gpu, C::NAME, can_save, can_share);
             })
         };
         self.gpu.queue.submit(extra.into_iter().chain([encoder.finish()]));

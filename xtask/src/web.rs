@@ -76,7 +76,7 @@ pub fn build(out: &Path) -> anyhow::Result<()> {
     for chapter in &chapters {
         let dir = live.join(chapter);
         std::fs::create_dir_all(&dir)?;
-        std::fs::write(dir.join("index.html"), page(chapter))?;
+        std::fs::write(dir.join("index.html"), page(chapter, readme_picture(chapter).as_deref()))?;
     }
     println!("browser build: {} chapters' pages and one program in {}", chapters.len(), live.display());
     Ok(())
@@ -93,8 +93,25 @@ pub fn program_wasm(html: &Path) -> PathBuf {
 /// A chapter's page. Opened on its own it starts at once; inside the book's
 /// iframe it waits for a click, so that reading a page never starts GPU
 /// work unasked (and the book's arrow keys stay the book's until then).
-fn page(chapter: &str) -> String {
-    PAGE.replace("{chapter}", chapter)
+fn page(chapter: &str, picture: Option<&str>) -> String {
+    // The chapter's picture behind the button, dimmed, before anyone clicks.
+    let poster = picture.map_or_else(String::new, |file| {
+        format!(
+            "body.waiting {{ background: linear-gradient(#15171cb0, #15171cb0), url(../../figures/{chapter}/{file}) \
+             center / cover no-repeat #15171c; }}"
+        )
+    });
+    PAGE.replace("{poster}", &poster).replace("{chapter}", chapter)
+}
+
+/// The picture of `chapter` the README shows (its snapshot, which the book
+/// copies into `figures/`): the README's table is written from the course's
+/// records, so the choice is made once, there.
+fn readme_picture(chapter: &str) -> Option<String> {
+    let readme = std::fs::read_to_string(root().join("README.md")).ok()?;
+    let start = format!("tests/snapshots/{chapter}/");
+    let after = &readme[readme.find(&start)? + start.len()..];
+    Some(after[..after.find(".png")? + 4].to_string())
 }
 
 const PAGE: &str = r#"<!doctype html>
@@ -114,11 +131,16 @@ const PAGE: &str = r#"<!doctype html>
   #message.error { background: #15171ce8; color: #ffb4a6; font-family: ui-monospace, monospace; font-size: 13px; }
   button { font: inherit; font-size: 1.15em; padding: 0.6em 1.4em; border-radius: 6px; border: 1px solid #8894a8;
            background: #262a33; color: inherit; cursor: pointer; }
+  {poster}
+  #edited { position: absolute; left: 0; right: 0; bottom: 0; padding: 0.35em 0.8em; background: #3a2a10e8;
+            color: #ffd9a0; font-size: 13px; }
+  #edited button { font-size: 13px; padding: 0.15em 0.7em; margin-left: 0.6em; }
 </style>
 </head>
 <body data-chapter="{chapter}">
 <canvas id="chapter" tabindex="0"></canvas>
 <div id="message">loading {chapter}…</div>
+<div id="edited" hidden>This page runs a changed shader: <span></span><button type="button">show the original</button></div>
 <script type="module">
   import init from "../live.js";
   const message = document.getElementById("message");
@@ -127,10 +149,54 @@ const PAGE: &str = r#"<!doctype html>
     const status = document.body.dataset.status;
     if (status === "running" || status === "picture") message.className = "hidden";
   }).observe(document.body, { attributes: true, attributeFilter: ["data-status"] });
+
+  // Shader edits: the program keeps the reader's in the page's storage, one
+  // key per file (`shader-edit:CHAPTER:PATH`); a link carries them in its
+  // fragment, `#edits=`, as deflated JSON in URL-safe base64.
+  const prefix = "shader-edit:{chapter}:";
+  const editKeys = () => Object.keys(localStorage).filter(key => key.startsWith(prefix));
+  const toBase64 = bytes => btoa(String.fromCharCode(...bytes)).replace(/\+/g, "-").replace(/\//g, "_").replace(/=+$/, "");
+  const fromBase64 = text => Uint8Array.from(atob(text.replace(/-/g, "+").replace(/_/g, "/")), c => c.charCodeAt(0));
+  const through = async (bytes, stream) => new Uint8Array(await new Response(new Blob([bytes]).stream().pipeThrough(stream)).arrayBuffer());
+  // A shared link's edits replace the reader's own before the program starts.
+  async function takeLinkEdits() {
+    const found = location.hash.match(/^#edits=([A-Za-z0-9_-]+)$/);
+    if (!found) return;
+    try {
+      const json = new TextDecoder().decode(await through(fromBase64(found[1]), new DecompressionStream("deflate-raw")));
+      const edits = JSON.parse(json);
+      editKeys().forEach(key => localStorage.removeItem(key));
+      for (const [path, text] of Object.entries(edits)) localStorage.setItem(prefix + path, text);
+    } catch (error) {
+      message.textContent = `this link's shader edits could not be read (${error}); showing the original`;
+    }
+  }
+  // Called by the shader panel's "share" button.
+  window.shareShaderEdits = async () => {
+    const edits = Object.fromEntries(editKeys().map(key => [key.slice(prefix.length), localStorage.getItem(key)]));
+    const packed = await through(new TextEncoder().encode(JSON.stringify(edits)), new CompressionStream("deflate-raw"));
+    history.replaceState(null, "", `${location.pathname}${location.search}#edits=${toBase64(packed)}`);
+    document.body.dataset.shareUrl = location.href;
+    navigator.clipboard?.writeText(location.href).catch(() => {});
+  };
+  // The banner names the changed files while there are any.
+  const banner = document.getElementById("edited");
+  new MutationObserver(() => {
+    const edited = document.body.dataset.edited || "";
+    banner.hidden = edited === "";
+    banner.querySelector("span").textContent = edited;
+  }).observe(document.body, { attributes: true, attributeFilter: ["data-edited"] });
+  banner.querySelector("button").addEventListener("click", () => {
+    editKeys().forEach(key => localStorage.removeItem(key));
+    location.replace(`${location.pathname}${location.search}`);
+  });
+
   async function start() {
+    document.body.classList.remove("waiting");
     message.className = "";
     message.textContent = "starting {chapter}…";
     try {
+      await takeLinkEdits();
       await init({ module_or_path: "../live_bg.wasm" });
       document.getElementById("chapter").focus();
     } catch (error) {
@@ -145,6 +211,7 @@ const PAGE: &str = r#"<!doctype html>
   }
   const embedded = window.self !== window.top;
   if (embedded) {
+    document.body.classList.add("waiting");
     message.innerHTML = '<button type="button">▶ click to run {chapter}</button>';
     message.querySelector("button").addEventListener("click", start, { once: true });
   } else {
@@ -305,20 +372,22 @@ pub fn bench(tabulate_only: bool) -> anyhow::Result<()> {
     cargo(&build)?;
 
     let mut table = String::from(
-        "| chapter | page to first frame | longest task | frame in Chromium | native frame | WebGL2 |\n\
-         |---|---:|---:|---:|---:|---|\n",
+        "| chapter | page to first frame | longest task | frame in Chromium | native frame | a shader edit to its frame | WebGL2 |\n\
+         |---|---:|---:|---:|---:|---:|---|\n",
     );
     let mut adapter = String::new();
     for row in rows.lines() {
         let fields: Vec<&str> = row.split('\t').collect();
-        let [chapter, first_ms, longest_task_ms, frame_ms, surface, webgl2, browser_adapter] = fields[..] else {
+        let [chapter, first_ms, longest_task_ms, frame_ms, surface, webgl2, browser_adapter, edited, edit_ms] =
+            fields[..]
+        else {
             bail!("unexpected bench row: {row}");
         };
         adapter = browser_adapter.to_string();
         let native = native_frame_ms(chapter, surface)?;
         let webgl2 = webgl2_cell(webgl2);
         table.push_str(&format!(
-            "| {chapter} | {first_ms} ms | {longest_task_ms} ms | {frame_ms} ms | {native} | {webgl2} |\n"
+            "| {chapter} | {first_ms} ms | {longest_task_ms} ms | {frame_ms} ms | {native} | {edit_ms} ms (`{edited}`) | {webgl2} |\n"
         ));
     }
     let adapter = adapter.trim();

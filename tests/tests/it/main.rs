@@ -7,3 +7,4 @@ mod clipping;
 mod editor;
 mod hot_reload;
 mod light_culling;
+mod try_it_links;
