@@ -782,6 +782,14 @@ fn look(base: &str, target: &str) -> anyhow::Result<()> {
     println!("toDataURL: {} chars, {}", url.len(), &url[..url.len().min(80)]);
     std::fs::write(std::env::temp_dir().join("browser-look.b64"), url)?;
     println!("canvas: {}", out.display());
+    // The whole page too: the banner and messages are HTML, not canvas.
+    let png = page
+        .tab
+        .capture_screenshot(Page::CaptureScreenshotFormatOption::Png, None, None, true)
+        .map_err(|e| anyhow::anyhow!("a screenshot of the page: {e}"))?;
+    let whole = std::env::temp_dir().join("browser-look-page.png");
+    std::fs::write(&whole, png)?;
+    println!("page: {}", whole.display());
     Ok(())
 }
 

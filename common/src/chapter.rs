@@ -235,6 +235,9 @@ pub trait Chapter: Sized + 'static {
     /// A view the others are compared with: `--bench` then also prints each
     /// view's median frame as a multiple of this one's.
     const BENCH_BASELINE: Option<&'static str> = None;
+    /// The WGSL file (under `shaders/`) the shader panel opens on, where
+    /// `shaders/NAME/NAME.wgsl` or `shaders/NAME/scene.wgsl` is not it.
+    const MAIN_SHADER: Option<&'static str> = None;
     /// Chapter-specific keys for the F1 help, as (key, what it does).
     const KEYS: &'static [(&'static str, &'static str)] = &[];
     /// Flags of this chapter's own; their values reach [`Chapter::apply_flags`].

@@ -209,8 +209,15 @@ impl ShaderEditor {
 
     /// Draws the panel (when open) and returns what the runner should do.
     /// `can_save`: the desktop with a source tree; `can_share`: a page.
-    /// `chapter` is the chapter's name: the panel opens on its main file.
-    pub fn ui(&mut self, ctx: &egui::Context, gpu: &Gpu, chapter: &str, can_save: bool, can_share: bool) -> Request {
+    /// The panel opens on `main` (see [`main_file`]) unless told otherwise.
+    pub fn ui(
+        &mut self,
+        ctx: &egui::Context,
+        gpu: &Gpu,
+        main: Option<&'static str>,
+        can_save: bool,
+        can_share: bool,
+    ) -> Request {
         if !self.open {
             return Request::Nothing;
         }
@@ -218,16 +225,19 @@ impl ShaderEditor {
             self.refresh_files(gpu);
         }
         if self.selected.is_none()
-            && let Some(main) = main_file(gpu, chapter)
+            && let Some(main) = main
         {
             self.select(gpu, main);
         }
         let mut request = Request::Nothing;
         let mut open = self.open;
+        // On the right, beside the chapter's panel, leaving some picture.
+        let screen = ctx.content_rect();
+        let size = egui::vec2((screen.width() * 0.55).min(600.0), (screen.height() - 24.0).clamp(120.0, 440.0));
         egui::Window::new("Shaders")
             .open(&mut open)
-            .default_pos([ctx.content_rect().width() - 620.0, 12.0])
-            .default_size([600.0, 440.0])
+            .default_pos([(screen.width() - size.x - 12.0).max(0.0), 12.0])
+            .default_size(size)
             .show(ctx, |ui| request = self.panel(ui, gpu, can_save, can_share));
         self.open = open;
         request
@@ -322,13 +332,23 @@ impl ShaderEditor {
     }
 }
 
-/// The file a chapter's panel opens on: of its own files (under
-/// `shaders/<chapter>/`), the one the most pipeline sets are made from.
-pub fn main_file(gpu: &Gpu, chapter: &str) -> Option<&'static str> {
+/// The file chapter `C`'s panel opens on: the one it names
+/// ([`crate::Chapter::MAIN_SHADER`]), else `shaders/NAME/NAME.wgsl` or
+/// `shaders/NAME/scene.wgsl`, else the first of its own files that is not
+/// a module, else its first file.
+pub fn main_file<C: crate::Chapter>(gpu: &Gpu) -> Option<&'static str> {
     let files = gpu.shader_files();
-    let own = files.iter().filter(|file| file.path.starts_with(&format!("{chapter}/")));
-    // The first of the most used: `max_by_key` keeps the last of equals.
-    own.rev().max_by_key(|file| gpu.shader_users(file.path)).or(files.first()).map(|file| file.path)
+    let named = |path: &str| files.iter().find(|file| file.path == path).map(|file| file.path);
+    let own = format!("{}/", C::NAME);
+    C::MAIN_SHADER
+        .and_then(named)
+        .or_else(|| named(&format!("{own}{}.wgsl", C::NAME)))
+        .or_else(|| named(&format!("{own}scene.wgsl")))
+        .or_else(|| {
+            let mut own_files = files.iter().filter(|file| file.path.starts_with(&own));
+            own_files.find(|file| !file.embedded.contains("#define_import_path")).map(|file| file.path)
+        })
+        .or(files.first().map(|file| file.path))
 }
 
 // ANCHOR: error_line

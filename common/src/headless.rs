@@ -311,7 +311,7 @@ pub fn edit_to_frame<C: Chapter>(
     let mut chapter = crate::chapter::create::<C>(gpu, target, flags)?;
     chapter.select_view(request.view);
     let offscreen = Offscreen::new(&gpu.device, target);
-    let file = crate::editor::main_file(gpu, C::NAME).context("the chapter builds no pipeline from WGSL")?;
+    let file = crate::editor::main_file::<C>(gpu).context("the chapter builds no pipeline from WGSL")?;
     let mut editor = crate::editor::ShaderEditor::new();
     editor.open_on(gpu, file, None)?;
     let original = editor.text().unwrap_or_default().to_string();

@@ -125,8 +125,9 @@ struct Running<C: Chapter> {
     /// What the overlay shows of memory, and when it was last read.
     memory: MemoryUse,
     memory_read: Option<Instant>,
-    /// The shader panel.
+    /// The shader panel, and the file it opens on.
     editor: ShaderEditor,
+    main_shader: Option<&'static str>,
     /// Files the panel saved, with the text saved: when the watcher then
     /// reports them, they already agree, and nothing reloads twice.
     saved: Vec<(String, String)>,
@@ -342,9 +343,10 @@ impl Opening {
         chapter.select_view(view);
         let overlay = Overlay::new(&window, &gpu, overlay_format);
         let mut editor = ShaderEditor::new();
+        let main_shader = crate::editor::main_file::<C>(&gpu);
         if let Some(file) = &args.edit {
             // `--edit` alone: the chapter's main file.
-            let file = if file.is_empty() { crate::editor::main_file(&gpu, C::NAME).unwrap_or_default() } else { file };
+            let file = if file.is_empty() { main_shader.unwrap_or_default() } else { file };
             editor
                 .open_on(&gpu, file, args.edit_at.as_deref())
                 .map_err(|e| crate::args::UsageError(format!("--edit {file}: {e}")))?;
@@ -389,6 +391,7 @@ impl Opening {
             memory: MemoryUse::default(),
             memory_read: None,
             editor,
+            main_shader,
             saved: Vec::new(),
             stored_edits,
         })
@@ -590,6 +593,7 @@ impl<C: Chapter> Running<C> {
         let size = [self.config.width, self.config.height];
         let can_save = self.watcher.is_some();
         let can_share = cfg!(target_arch = "wasm32");
+        let main_shader = self.main_shader;
         let mut request = Request::Nothing;
         let extra = {
             let Self { overlay, window, gpu, editor, .. } = self;
@@ -614,7 +618,7 @@ impl<C: Chapter> Running<C> {
                 if panel.show(ctx) {
                     editor.open = !editor.open;
                 }
-                request = editor.ui(ctx, gpu, C::NAME, can_save, can_share);
+                request = editor.ui(ctx, gpu, main_shader, can_save, can_share);
             })
         };
         self.gpu.queue.submit(extra.into_iter().chain([encoder.finish()]));

@@ -376,6 +376,9 @@ pub fn bench(tabulate_only: bool) -> anyhow::Result<()> {
          |---|---:|---:|---:|---:|---:|---|\n",
     );
     let mut adapter = String::new();
+    let mut edits = String::from(
+        "| chapter | file edited | on the desktop (lavapipe) | in Chromium (SwiftShader) |\n|---|---|---:|---:|\n",
+    );
     for row in rows.lines() {
         let fields: Vec<&str> = row.split('\t').collect();
         let [chapter, first_ms, longest_task_ms, frame_ms, surface, webgl2, browser_adapter, edited, edit_ms] =
@@ -385,6 +388,9 @@ pub fn bench(tabulate_only: bool) -> anyhow::Result<()> {
         };
         adapter = browser_adapter.to_string();
         let native = native_frame_ms(chapter, surface)?;
+        let (native_file, native_edit) = native_edit_ms(chapter)?;
+        ensure!(native_file == edited, "{chapter}: the desktop edited {native_file}, the page {edited}");
+        edits.push_str(&format!("| {chapter} | `{edited}` | {native_edit} ms | {edit_ms} ms |\n"));
         let webgl2 = webgl2_cell(webgl2);
         table.push_str(&format!(
             "| {chapter} | {first_ms} ms | {longest_task_ms} ms | {frame_ms} ms | {native} | {edit_ms} ms (`{edited}`) | {webgl2} |\n"
@@ -420,7 +426,30 @@ pub fn bench(tabulate_only: bool) -> anyhow::Result<()> {
     let out = root().join("book/src/bench/web.md");
     std::fs::write(&out, page)?;
     println!("wrote {}", out.display());
+    let edits = format!(
+        "A shader edit to the first frame drawn with it, median of 5 edits of each chapter's main file (a \
+         change built with Ctrl+Enter), on {cpu}: on the desktop by `cargo xtask bench` (release build, \
+         headless, until the GPU has finished the frame), in the page by `cargo xtask bench web` (the page's \
+         own `data-edit-to-frame-ms`, until the frame is handed to the browser).\n\n{edits}"
+    );
+    let out = root().join("book/src/bench/edits.md");
+    std::fs::write(&out, edits)?;
+    println!("wrote {}", out.display());
     Ok(())
+}
+
+/// The file and median of `cargo xtask bench`'s shader-edit line for
+/// `chapter`, from its table in `book/src/bench/`.
+fn native_edit_ms(chapter: &str) -> anyhow::Result<(String, String)> {
+    let path = root().join(format!("book/src/bench/{chapter}.md"));
+    let text = std::fs::read_to_string(&path).with_context(|| format!("cannot read {}", path.display()))?;
+    let line = text
+        .lines()
+        .find(|l| l.contains("a shader edit to the frame"))
+        .with_context(|| format!("{} has no shader-edit line: run `cargo xtask bench {chapter}`", path.display()))?;
+    let file = line.split('`').nth(1).context("no file in the shader-edit line")?;
+    let median = line.split("median ").nth(1).and_then(|rest| rest.split(' ').next()).context("no median")?;
+    Ok((file.to_string(), median.to_string()))
 }
 
 /// The native release build's median frame for `chapter`'s first view at

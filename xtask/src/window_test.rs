@@ -5,7 +5,7 @@
 //! each), drags with the mouse and checks that the camera turned, holds a
 //! key and clicks the overlay and checks that the camera stops once the key
 //! is let go, watches memory over 2 × 10 frames (3 × 10 when both grew), then closes the window
-//! with Esc. Any panic, wgpu validation error, non-zero exit, frame that
+//! with Esc. One chapter runs once more with the shader panel open (`drive_panel`). Any panic, wgpu validation error, non-zero exit, frame that
 //! never comes or memory that grows frame after frame fails it.
 //!
 //! What cannot be seen in pixels (frames drawn, the surface's size, the
@@ -141,11 +141,12 @@ struct Session<'d> {
 }
 
 impl<'d> Session<'d> {
-    fn start(display: &'d Display, chapter: &str, dir: &Path) -> anyhow::Result<Self> {
+    fn start(display: &'d Display, chapter: &str, dir: &Path, extra: &[&str]) -> anyhow::Result<Self> {
         let probe = dir.join(format!("{chapter}.probe"));
         let log = dir.join(format!("{chapter}.log"));
         let _ = std::fs::remove_file(&probe);
         let child = Command::new(target_dir().join("debug").join(chapter))
+            .args(extra)
             .args(["--size", &format!("{}x{}", SIZE.0, SIZE.1), "--probe"])
             .arg(&probe)
             .env("DISPLAY", &display.name)
@@ -420,7 +421,7 @@ fn parse_xwd(bytes: &[u8]) -> anyhow::Result<(u32, u32, Vec<[u8; 3]>)> {
 /// Runs one chapter through everything; returns a one-line summary.
 fn drive(display: &Display, chapter: &str, dir: &Path) -> anyhow::Result<String> {
     let started = Instant::now();
-    let mut session = Session::start(display, chapter, dir)?;
+    let mut session = Session::start(display, chapter, dir, &[])?;
     let colours = session.scene_is_drawn()?;
     session.resize_through_one_pixel()?;
     session.minimise_and_restore()?;
@@ -446,6 +447,41 @@ fn drive(display: &Display, chapter: &str, dir: &Path) -> anyhow::Result<String>
         started.elapsed().as_secs_f64()
     ))
 }
+
+// ANCHOR: shader_panel
+/// The chapter whose window also runs with the shader panel open.
+const PANEL_CHAPTER: &str = "camera";
+
+/// The shader panel in a window: opened with `--edit`, it has the
+/// keyboard; W, A, S and D typed into it (a broken shader for a moment,
+/// then erased) never move the camera; the window goes through 1×1 and
+/// back with the panel open; Esc leaves the editor, then closes.
+fn drive_panel(display: &Display, dir: &Path) -> anyhow::Result<String> {
+    let started = Instant::now();
+    let mut session = Session::start(display, PANEL_CHAPTER, dir, &["--edit"])?;
+    session.x(&["windowfocus"])?;
+    let before = session.wait_for("the editor to have the keyboard", |p| p.typing)?.camera;
+    session.x(&["type", "--delay", "30", "wasd"])?;
+    session.frames(3, "frames while typing")?;
+    for _ in 0..4 {
+        session.x(&["key", "BackSpace"])?;
+    }
+    let typed = session.frames(3, "frames after erasing")?;
+    ensure!(typed.typing, "the editor lost the keyboard while typing");
+    ensure!(typed.camera == before, "keys typed into the editor moved the camera: {before:?} then {:?}", typed.camera);
+    session.resize_through_one_pixel()?;
+    let after = session.frames(2, "frames after resizing")?;
+    ensure!(after.camera == before, "the camera moved while the panel was open: {before:?} then {:?}", after.camera);
+    session.x(&["windowfocus"])?;
+    session.x(&["key", "Escape"])?;
+    session.wait_for("the editor to give the keyboard back", |p| !p.typing)?;
+    session.close()?;
+    Ok(format!(
+        "{PANEL_CHAPTER} with the shader panel: typed wasd, camera still, {CYCLES}× resized through 1×1, closed cleanly ({:.0} s)",
+        started.elapsed().as_secs_f64()
+    ))
+}
+// ANCHOR_END: shader_panel
 
 /// Builds the chapters, then runs the test for `chosen` chapters (all of
 /// them when empty).
@@ -484,7 +520,13 @@ pub fn run_built(chosen: &[String]) -> anyhow::Result<()> {
                     Err(error) => return failures.lock().unwrap().push(format!("X display: {error:#}")),
                 };
                 while let Some(chapter) = queue.get(next.fetch_add(1, std::sync::atomic::Ordering::SeqCst)) {
-                    match drive(&display, chapter, &dir) {
+                    let result = drive(&display, chapter, &dir).and_then(|summary| {
+                        if chapter.as_str() != PANEL_CHAPTER {
+                            return Ok(summary);
+                        }
+                        Ok(format!("{summary}\nwindow: {}", drive_panel(&display, &dir)?))
+                    });
+                    match result {
                         Ok(summary) => println!("window: {summary}"),
                         Err(error) => {
                             println!("window: {chapter} FAILED: {error:#}");

@@ -563,6 +563,7 @@ impl Chapter for LightingChapter {
     const SNAPSHOT_TIME: f32 = 6.0;
     const BENCH_FRAMES: u32 = 5;
     const BENCH_BASELINE: Option<&'static str> = Some("lights-1");
+    const MAIN_SHADER: Option<&'static str> = Some("lighting/city.wgsl");
     const KEYS: &'static [(&'static str, &'static str)] = &[
         ("W A S D / arrows", "move (leaves the car you follow)"),
         ("E / Space, Q / Shift+Space", "rise, fall"),

@@ -445,6 +445,7 @@ impl Chapter for TexturesChapter {
     const SNAPSHOT_TIME: f32 = 6.0;
     const BENCH_FRAMES: u32 = 5;
     const BENCH_BASELINE: Option<&'static str> = Some("no-normal-maps");
+    const MAIN_SHADER: Option<&'static str> = Some("textures/textured.wgsl");
     const KEYS: &'static [(&'static str, &'static str)] = &[
         ("W A S D / arrows", "move"),
         ("E / Space, Q / Shift+Space", "rise, fall"),

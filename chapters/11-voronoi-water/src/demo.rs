@@ -374,6 +374,7 @@ impl Chapter for VoronoiWaterChapter {
     const SNAPSHOT_TIME: f32 = SNAPSHOT_TIME;
     const BENCH_FRAMES: u32 = 10;
     const BENCH_BASELINE: Option<&'static str> = Some("cones-64-512");
+    const MAIN_SHADER: Option<&'static str> = Some("voronoi-water/sea.wgsl");
     const KEYS: &'static [(&'static str, &'static str)] = &[
         ("W S", "ahead, astern (the first key takes over from the course)"),
         ("A D", "turn"),
