@@ -332,6 +332,29 @@ impl ShaderEditor {
     }
 }
 
+// ANCHOR: absorb_saved
+/// Hot reload meets the panel's "save": of the `changed` files the watcher
+/// reports, those that now hold exactly the text the panel saved (`saved`,
+/// by path) are already built, so they are taken out of `changed` and out
+/// of `saved`; nothing reloads twice. `read` reads a file as it is now.
+pub fn absorb_saved(
+    saved: &mut Vec<(String, String)>,
+    changed: &mut Vec<String>,
+    read: impl Fn(&str) -> Option<String>,
+) {
+    changed.retain(|file| {
+        let now = read(file);
+        match saved.iter().position(|(path, text)| path == file && Some(text) == now.as_ref()) {
+            Some(i) => {
+                saved.remove(i);
+                false
+            }
+            None => true,
+        }
+    });
+}
+// ANCHOR_END: absorb_saved
+
 /// The file chapter `C`'s panel opens on: the one it names
 /// ([`crate::Chapter::MAIN_SHADER`]), else `shaders/NAME/NAME.wgsl` or
 /// `shaders/NAME/scene.wgsl`, else the first of its own files that is not
@@ -543,6 +566,27 @@ mod tests {
         assert_eq!(kind_of("vec3"), Some(Kind::Type));
         assert_eq!(kind_of("1.5e0"), Some(Kind::Number));
         assert_eq!(kind_of("/* a\nb */"), Some(Kind::Comment));
+    }
+
+    #[test]
+    fn a_saved_file_reloads_once_and_a_later_edit_on_disk_reloads() {
+        let disk = std::cell::RefCell::new(String::from("saved text"));
+        let read = |_: &str| Some(disk.borrow().clone());
+        let mut saved = vec![("a/b.wgsl".to_string(), "saved text".to_string())];
+        // The watcher reports the save: already built, nothing to reload.
+        let mut changed = vec!["a/b.wgsl".to_string(), "a/c.wgsl".to_string()];
+        absorb_saved(&mut saved, &mut changed, read);
+        assert_eq!(changed, ["a/c.wgsl"], "the saved file is not rebuilt; another changed one is");
+        assert!(saved.is_empty(), "a save is absorbed once");
+        // Someone edits the file in their editor afterwards: that reloads.
+        *disk.borrow_mut() = "their text".into();
+        let mut changed = vec!["a/b.wgsl".to_string()];
+        absorb_saved(&mut saved, &mut changed, read);
+        assert_eq!(changed, ["a/b.wgsl"]);
+        // A save the file no longer holds (changed again before the watcher spoke) reloads too.
+        let mut saved = vec![("a/b.wgsl".to_string(), "saved text".to_string())];
+        absorb_saved(&mut saved, &mut changed, read);
+        assert_eq!(changed, ["a/b.wgsl"]);
     }
 
     #[test]

@@ -450,16 +450,8 @@ impl<C: Chapter> Running<C> {
             .map(|path| path.to_string_lossy().replace('\\', "/"))
             .collect();
         // A file the panel saved holds what is already built from it.
-        let saved = &mut self.saved;
-        files.retain(|file| {
-            let on_disk = std::fs::read_to_string(watcher.dir.join(file)).ok();
-            match saved.iter().position(|(path, text)| path == file && Some(text) == on_disk.as_ref()) {
-                Some(i) => {
-                    saved.remove(i);
-                    false
-                }
-                None => true,
-            }
+        crate::editor::absorb_saved(&mut self.saved, &mut files, |file| {
+            std::fs::read_to_string(watcher.dir.join(file)).ok()
         });
         if files.is_empty() {
             return;

@@ -76,7 +76,12 @@ pub fn build(out: &Path) -> anyhow::Result<()> {
     for chapter in &chapters {
         let dir = live.join(chapter);
         std::fs::create_dir_all(&dir)?;
-        std::fs::write(dir.join("index.html"), page(chapter, readme_picture(chapter).as_deref()))?;
+        // The picture behind the page's button must be in the book: a page
+        // would show a dark box without it, and no test would notice.
+        let picture = readme_picture(chapter).with_context(|| format!("README.md shows no picture of {chapter}"))?;
+        let figure = root().join("tests/snapshots").join(chapter).join(&picture);
+        ensure!(figure.exists(), "{chapter}'s page would show {}, which does not exist", figure.display());
+        std::fs::write(dir.join("index.html"), page(chapter, &picture))?;
     }
     println!("browser build: {} chapters' pages and one program in {}", chapters.len(), live.display());
     Ok(())
@@ -93,14 +98,12 @@ pub fn program_wasm(html: &Path) -> PathBuf {
 /// A chapter's page. Opened on its own it starts at once; inside the book's
 /// iframe it waits for a click, so that reading a page never starts GPU
 /// work unasked (and the book's arrow keys stay the book's until then).
-fn page(chapter: &str, picture: Option<&str>) -> String {
+fn page(chapter: &str, picture: &str) -> String {
     // The chapter's picture behind the button, dimmed, before anyone clicks.
-    let poster = picture.map_or_else(String::new, |file| {
-        format!(
-            "body.waiting {{ background: linear-gradient(#15171cb0, #15171cb0), url(../../figures/{chapter}/{file}) \
-             center / cover no-repeat #15171c; }}"
-        )
-    });
+    let poster = format!(
+        "body.waiting {{ background: linear-gradient(#15171cb0, #15171cb0), url(../../figures/{chapter}/{picture}) \
+         center / cover no-repeat #15171c; }}"
+    );
     PAGE.replace("{poster}", &poster).replace("{chapter}", chapter)
 }
 
