@@ -283,15 +283,17 @@ impl ShaderEditor {
         let lines = text.lines().count().max(1) + usize::from(text.ends_with('\n'));
         let editor_height = (ui.available_height() - if self.error.is_some() { 110.0 } else { 24.0 }).max(80.0);
         let mut changed = false;
-        egui::ScrollArea::vertical().id_salt(path).max_height(editor_height).show(ui, |ui| {
+        // Lines never wrap (scroll sideways instead): a wrapped line would
+        // put the numbers beside the wrong lines.
+        egui::ScrollArea::both().id_salt(path).max_height(editor_height).show(ui, |ui| {
             ui.horizontal_top(|ui| {
                 let numbers: String = (1..=lines).map(|n| format!("{n:>4}\n")).collect();
                 ui.add(
                     egui::Label::new(egui::RichText::new(numbers).monospace().color(Color32::GRAY)).selectable(false),
                 );
-                let mut layouter = |ui: &egui::Ui, buffer: &dyn egui::TextBuffer, wrap: f32| {
+                let mut layouter = |ui: &egui::Ui, buffer: &dyn egui::TextBuffer, _wrap: f32| {
                     let mut job = highlight(buffer.as_str(), error_line);
-                    job.wrap.max_width = wrap;
+                    job.wrap.max_width = f32::INFINITY;
                     ui.fonts_mut(|fonts| fonts.layout_job(job))
                 };
                 let output = egui::TextEdit::multiline(text)
@@ -310,6 +312,9 @@ impl ShaderEditor {
                     let mut state = output.state;
                     state.cursor.set_char_range(Some(CCursorRange::one(CCursor::new(at))));
                     state.store(ui.ctx(), output.response.response.id);
+                    // Bring the place into view, a few lines below the top.
+                    let place = output.galley.pos_from_cursor(CCursor::new(at)).translate(output.galley_pos.to_vec2());
+                    ui.scroll_to_rect(place, Some(egui::Align::Center));
                 }
             });
         });

@@ -209,7 +209,7 @@ impl<C: Chapter> Panel<'_, C> {
             }
             let mut open = self.shaders_open;
             if ui
-                .toggle_value(&mut open, "✏ shaders")
+                .toggle_value(&mut open, "edit shaders")
                 .on_hover_text("edit this chapter's WGSL beside its picture")
                 .clicked()
             {
