@@ -20,8 +20,8 @@
 # chapter's first view at the seeds' sizes, each run after a
 # `=== CHAPTER VIEW WxH` line) and CHAPTER.txt (`CHAPTER --bench --size
 # 1280x720`, then the `time` of the run). The files in book/src/bench/gpu/raw/
-# came from this script's first form, which named the chapters itself and
-# wrote CHAPTER.md (renamed .txt here).
+# came from this script, run with OUT=/tmp/o and the folder brought back
+# as a tarball (a lent machine returns at most 8 files).
 set -u
 : "${OUT:?set OUT to the folder the results go to}"
 mkdir -p "$OUT"
