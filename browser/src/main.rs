@@ -268,17 +268,39 @@ impl ChapterPage {
     fn key(&self, code: &str, key: &str, down: bool) -> anyhow::Result<()> {
         let kind =
             if down { Input::DispatchKeyEventTypeOption::KeyDown } else { Input::DispatchKeyEventTypeOption::KeyUp };
+        let key_code = u32::from(key.to_ascii_uppercase().as_bytes()[0]);
+        self.key_event(kind, code, key, key_code, down.then_some(key), 0)
+    }
+
+    /// Presses and releases one key, as a keyboard does: `text` is what it
+    /// types (none for Backspace, F2 or a chord), `modifiers` CDP's bits
+    /// (2: Ctrl).
+    fn press(&self, code: &str, key: &str, key_code: u32, text: Option<&str>, modifiers: u32) -> anyhow::Result<()> {
+        self.key_event(Input::DispatchKeyEventTypeOption::KeyDown, code, key, key_code, text, modifiers)?;
+        self.key_event(Input::DispatchKeyEventTypeOption::KeyUp, code, key, key_code, None, modifiers)
+    }
+
+    /// One key event through the DevTools protocol.
+    fn key_event(
+        &self,
+        kind: Input::DispatchKeyEventTypeOption,
+        code: &str,
+        key: &str,
+        key_code: u32,
+        text: Option<&str>,
+        modifiers: u32,
+    ) -> anyhow::Result<()> {
         self.tab
             .call_method(Input::DispatchKeyEvent {
                 Type: kind,
-                modifiers: None,
+                modifiers: Some(modifiers),
                 timestamp: None,
-                text: down.then(|| key.to_string()),
+                text: text.map(str::to_string),
                 unmodified_text: None,
                 key_identifier: None,
                 code: Some(code.into()),
                 key: Some(key.into()),
-                windows_virtual_key_code: Some(i32::from(key.to_ascii_uppercase().as_bytes()[0]) as u32),
+                windows_virtual_key_code: Some(key_code),
                 native_virtual_key_code: None,
                 auto_repeat: None,
                 is_keypad: None,
@@ -286,36 +308,7 @@ impl ChapterPage {
                 location: None,
                 commands: None,
             })
-            .map_err(|e| anyhow::anyhow!("sending a key: {e}"))?;
-        Ok(())
-    }
-
-    /// Presses and releases one key, as a keyboard does: `text` is what it
-    /// types (none for Backspace, F2 or a chord), `modifiers` CDP's bits
-    /// (2: Ctrl).
-    fn press(&self, code: &str, key: &str, key_code: u32, text: Option<&str>, modifiers: u32) -> anyhow::Result<()> {
-        for kind in [Input::DispatchKeyEventTypeOption::KeyDown, Input::DispatchKeyEventTypeOption::KeyUp] {
-            let down = kind == Input::DispatchKeyEventTypeOption::KeyDown;
-            self.tab
-                .call_method(Input::DispatchKeyEvent {
-                    Type: kind,
-                    modifiers: Some(modifiers),
-                    timestamp: None,
-                    text: text.filter(|_| down).map(str::to_string),
-                    unmodified_text: None,
-                    key_identifier: None,
-                    code: Some(code.into()),
-                    key: Some(key.into()),
-                    windows_virtual_key_code: Some(key_code),
-                    native_virtual_key_code: None,
-                    auto_repeat: None,
-                    is_keypad: None,
-                    is_system_key: None,
-                    location: None,
-                    commands: None,
-                })
-                .map_err(|e| anyhow::anyhow!("pressing {code}: {e}"))?;
-        }
+            .map_err(|e| anyhow::anyhow!("sending {code}: {e}"))?;
         Ok(())
     }
 

@@ -66,6 +66,10 @@ pub struct ShaderEditor {
     pub last_edit_to_frame: Option<Duration>,
     /// Builds done, failed ones included.
     pub builds: u64,
+    /// Counts every change to what the panel shows (a build, an error, the
+    /// file opened, a new edit-to-frame figure), so that a page reports
+    /// its state only when it changed.
+    revision: u64,
     built_at: Option<Instant>,
 }
 
@@ -96,6 +100,11 @@ impl ShaderEditor {
         self.open = true;
         self.focus_editor = true;
         Ok(())
+    }
+
+    /// See the `revision` field: equal revisions show the same state.
+    pub fn revision(&self) -> u64 {
+        self.revision
     }
 
     /// The file open now, if any.
@@ -137,6 +146,7 @@ impl ShaderEditor {
         }
         self.selected = Some(path);
         self.error = None;
+        self.revision += 1;
     }
 
     fn shipped(&self, path: &str) -> Option<&'static str> {
@@ -152,6 +162,7 @@ impl ShaderEditor {
             let line = self.selected.and_then(|path| error_line(&message, path));
             self.status = "not built: the last good version keeps drawing".into();
             self.error = Some(PanelError { message: format!("the pipeline could not be created: {message}"), line });
+            self.revision += 1;
         }
         // Typing ended a pause ago, or Ctrl+Enter was pressed: that moment
         // (the last key) starts the clock of `last_edit_to_frame`.
@@ -171,6 +182,7 @@ impl ShaderEditor {
         let is_own = own.as_deref().unwrap_or(self.shipped(path).unwrap_or_default()) == text;
         let result = gpu.edit_shader(path, if is_own { None } else { Some(text) });
         self.builds += 1;
+        self.revision += 1;
         match result {
             Ok(rebuilt) => {
                 self.error = None;
@@ -199,6 +211,7 @@ impl ShaderEditor {
     pub fn drew(&mut self) {
         if let Some(started) = self.built_at.take() {
             self.last_edit_to_frame = Some(started.elapsed());
+            self.revision += 1;
         }
     }
 

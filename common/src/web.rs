@@ -242,12 +242,7 @@ pub fn share_edits() {
 /// `data-shader-error-line` and `data-edit-to-frame-ms`.
 pub fn show_editor_state(editor: &crate::editor::ShaderEditor) {
     let error = editor.error();
-    let state = |key: &str, value: String| {
-        let body = web_sys::window().and_then(|w| w.document()).and_then(|d| d.body());
-        if body.and_then(|b| b.dataset().get(key)).as_deref() != Some(value.as_str()) {
-            set_state(key, &value);
-        }
-    };
+    let state = |key: &str, value: String| set_state(key, &value);
     state("shaderError", error.map_or_else(String::new, |e| e.message.clone()));
     state("shaderErrorLine", error.and_then(|e| e.line).map_or_else(String::new, |line| line.to_string()));
     state("shaderFile", editor.selected().unwrap_or_default().to_string());

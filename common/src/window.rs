@@ -131,8 +131,9 @@ struct Running<C: Chapter> {
     /// Files the panel saved, with the text saved: when the watcher then
     /// reports them, they already agree, and nothing reloads twice.
     saved: Vec<(String, String)>,
-    /// The edits the page last stored (browser), to store only changes.
-    stored_edits: Vec<(String, String)>,
+    /// The panel's revision the page last reported (browser): its edits
+    /// are stored and its state shown only when that changes.
+    reported: Option<u64>,
 }
 
 impl<C: Chapter> ApplicationHandler<Opened<C>> for App<C> {
@@ -328,10 +329,10 @@ impl Opening {
         // A page starts with the reader's stored edits, or a shared link's.
         #[cfg(target_arch = "wasm32")]
         gpu.start_with_shader_edits(crate::web::stored_edits(C::NAME));
-        let stored_edits = gpu.shader_edits();
+        let restored = !gpu.shader_edits().is_empty();
         let mut edits_failed = None;
         let mut chapter = match crate::chapter::create_prepared::<C>(&gpu, target, prepared, &args.chapter_flags) {
-            Err(error) if !stored_edits.is_empty() => {
+            Err(error) if restored => {
                 // Edits that no longer build must not keep the chapter from starting.
                 gpu.drop_shader_edits();
                 edits_failed = Some(format!("the stored shader edits did not build, so they are set aside: {error:#}"));
@@ -393,7 +394,7 @@ impl Opening {
             editor,
             main_shader,
             saved: Vec::new(),
-            stored_edits,
+            reported: None,
         })
     }
 }
@@ -628,7 +629,7 @@ impl<C: Chapter> Running<C> {
     // ANCHOR_END: frame
 
     /// Does what the shader panel asked for, and (in a page) keeps the
-    /// reader's edits in the page's storage.
+    /// reader's edits in the page's storage when they changed.
     fn answer(&mut self, request: Request) {
         match request {
             Request::Nothing => {}
@@ -649,14 +650,15 @@ impl<C: Chapter> Running<C> {
                 crate::web::share_edits();
             }
         }
-        let edits = self.gpu.shader_edits();
-        if edits != self.stored_edits {
+        // A page keeps the reader's edits and shows the panel's state.
+        if cfg!(target_arch = "wasm32") && self.reported != Some(self.editor.revision()) {
             #[cfg(target_arch = "wasm32")]
-            crate::web::store_edits(C::NAME, &edits);
-            self.stored_edits = edits;
+            {
+                crate::web::store_edits(C::NAME, &self.gpu.shader_edits());
+                crate::web::show_editor_state(&self.editor);
+            }
+            self.reported = Some(self.editor.revision());
         }
-        #[cfg(target_arch = "wasm32")]
-        crate::web::show_editor_state(&self.editor);
     }
 
     /// Tells the probe how the frame went, when anyone reads it.
