@@ -14,6 +14,7 @@ use crate::cameras::{close_up_camera, overhead_camera, start_camera};
 use crate::culling::Frustum;
 use crate::ground::{self, Movement};
 use crate::heightfield::{HeightField, TerrainSettings};
+use crate::lod::Detail;
 use crate::terrain_data::TerrainData;
 use crate::terrain_renderer::{KEEP_ALL, SKY, Shading, Sun, TerrainRenderer, Viewpoint, gpu_needs};
 
@@ -178,6 +179,8 @@ impl Chapter for TerrainChapter {
             self.terrain.regenerate(gpu);
         }
         let shading = self.settings.shading;
+        self.terrain.shading = shading;
+        let detail = Detail::lod(self.target.height);
         let mut pass = frame.scene_pass("terrain", SKY, &self.depth);
         pass.set_pipeline(&self.pipeline.get());
         if shading == Shading::Chunks {
@@ -187,11 +190,11 @@ impl Chapter for TerrainChapter {
             self.terrain.write_chunk_flags(&gpu.queue, &frustum);
             self.drawn = self.terrain.mesh().bounds.iter().filter(|b| frustum.intersects(b)).count();
             let overhead = overhead_camera(self.terrain.field(), self.target.aspect());
-            self.terrain.aim(&gpu.queue, &mut self.viewpoint, &overhead, Sun::AFTERNOON, shading, KEEP_ALL);
+            self.terrain.aim(&gpu.queue, &mut self.viewpoint, &overhead, detail, Sun::AFTERNOON, KEEP_ALL);
             self.terrain.bind(&mut pass, &self.viewpoint);
             self.terrain.mesh().draw_all_coarse(&mut pass);
         } else {
-            self.terrain.aim(&gpu.queue, &mut self.viewpoint, &self.camera, Sun::AFTERNOON, shading, KEEP_ALL);
+            self.terrain.aim(&gpu.queue, &mut self.viewpoint, &self.camera, detail, Sun::AFTERNOON, KEEP_ALL);
             self.drawn = self.terrain.draw(&mut pass, &self.viewpoint);
         }
     }

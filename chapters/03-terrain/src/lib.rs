@@ -19,6 +19,8 @@ pub mod terrain_data;
 pub mod terrain_renderer;
 // Which chunks the camera can see.
 pub mod culling;
+// How finely each part of the terrain is drawn.
+pub mod lod;
 // Walking on the ground, and never flying below it.
 pub mod ground;
 // The start camera, the close-up and the view from overhead.
@@ -28,6 +30,7 @@ pub mod demo;
 
 pub use cameras::start_camera;
 pub use demo::{CameraPreset, Settings, TerrainChapter, VIEW_TABLE};
+pub use lod::Detail;
 pub use terrain_data::TerrainData;
 pub use terrain_mesh::{TERRAIN_VERTEX_LAYOUT, TerrainMesh};
 pub use terrain_renderer::{KEEP_ALL, SKY, Shading, Sun, TerrainRenderer, Viewpoint, gpu_needs};

@@ -12,6 +12,7 @@ use common::{Camera, Gpu, ShaderError, ShaderFile, egui, wgpu};
 use crate::chunks::TerrainVertex;
 use crate::culling::Frustum;
 use crate::heightfield::{CHUNK_QUADS, HeightField, TerrainSettings};
+use crate::lod::Detail;
 use crate::terrain_data::TerrainData;
 use crate::terrain_mesh::{TERRAIN_VERTEX_LAYOUT, TerrainMesh};
 
@@ -81,6 +82,8 @@ impl Viewpoint {
 pub struct TerrainRenderer {
     /// What the learner edits in the overlay; applied by `regenerate`.
     pub settings: TerrainSettings,
+    /// How the ground is coloured in the pictures aimed from now on.
+    pub shading: Shading,
     data: Arc<TerrainData>,
     /// One flag per chunk for the `chunks` view (shared by every viewpoint).
     chunk_flags: wgpu::Buffer,
@@ -114,7 +117,7 @@ impl TerrainRenderer {
                 },
             ],
         });
-        Self { settings, data, chunk_flags, bind_group_layout }
+        Self { settings, shading: Shading::Shaded, data, chunk_flags, bind_group_layout }
     }
 
     /// The height field the terrain was made from: where the ground is.
@@ -189,18 +192,21 @@ impl TerrainRenderer {
         .map_err(ShaderError)
     }
 
-    /// Aims `viewpoint` at the scene from `camera`: writes its uniforms,
-    /// lit by `sun`, keeping what `clip` keeps ([`KEEP_ALL`] for
-    /// everything), and keeps the camera's frustum for culling.
+    /// Aims `viewpoint` at the scene from `camera`, for a picture drawn
+    /// as finely as `detail` asks: writes its uniforms, lit by `sun`,
+    /// keeping what `clip` keeps ([`KEEP_ALL`] for everything), and keeps
+    /// the camera's frustum for culling.
     pub fn aim(
         &self,
         queue: &wgpu::Queue,
         viewpoint: &mut Viewpoint,
         camera: &Camera,
+        detail: Detail,
         sun: Sun,
-        shading: Shading,
         clip: Vec4,
     ) {
+        let _ = detail;
+        let shading = self.shading;
         let globals = Globals {
             view_proj: camera.view_projection().to_cols_array_2d(),
             eye: camera.position.extend(1.0).into(),

@@ -9,7 +9,7 @@ use common::{
 };
 use terrain::ground::{self, Movement};
 use terrain::heightfield::{HeightField, TerrainSettings};
-use terrain::{KEEP_ALL, SKY, Shading, Sun, TerrainRenderer, Viewpoint, start_camera};
+use terrain::{Detail, KEEP_ALL, SKY, Sun, TerrainRenderer, Viewpoint, start_camera};
 
 use crate::fog_binding::{FogBinding, fog_shader};
 use crate::fog_settings::FogSettings;
@@ -137,7 +137,14 @@ impl Chapter for FogChapter {
         // Nothing past the opaque distance can be seen: stop drawing there.
         self.camera.far = self.fog.far_plane();
         self.fog_binding.write(&gpu.queue, self.fog);
-        self.terrain.aim(&gpu.queue, &mut self.viewpoint, &self.camera, Sun::AFTERNOON, Shading::Shaded, KEEP_ALL);
+        self.terrain.aim(
+            &gpu.queue,
+            &mut self.viewpoint,
+            &self.camera,
+            Detail::lod(self.target.height),
+            Sun::AFTERNOON,
+            KEEP_ALL,
+        );
 
         // Clear to the fog colour: where there is no ground, the fog's
         // "infinitely far" is what shows.

@@ -11,7 +11,7 @@ use common::{
 use fog::FogSettings;
 use terrain::ground::{self, Movement};
 use terrain::heightfield::{HeightField, TerrainSettings};
-use terrain::{KEEP_ALL, SKY, Sun, Viewpoint};
+use terrain::{Detail, KEEP_ALL, SKY, Sun, Viewpoint};
 
 use crate::mars_plain::{DrawCalls, MarsPlain, Mode, Setup, plain_camera};
 use crate::rock_field::{MAX_ONE_PER_DRAW, RockInstance, SEED, rocks_on_map};
@@ -197,7 +197,14 @@ impl Chapter for InstancingChapter {
         self.camera.far = self.fog.far_plane();
         let sky = [SKY.r as f32, SKY.g as f32, SKY.b as f32];
         self.plain.set_air(&gpu.queue, self.fog, sky);
-        self.plain.aim(&gpu.queue, &mut self.viewpoint, &self.camera, Sun::AFTERNOON, KEEP_ALL);
+        self.plain.aim(
+            &gpu.queue,
+            &mut self.viewpoint,
+            &self.camera,
+            Detail::lod(self.target.height),
+            Sun::AFTERNOON,
+            KEEP_ALL,
+        );
         if self.setup.mode == Mode::Indirect {
             self.plain.write_draw_list(&gpu.queue, &self.viewpoint, self.setup);
         }

@@ -11,7 +11,7 @@ use common::texture::depth_test;
 use common::{Camera, Gpu, Reloadable, ShaderError, ShaderFile, Vertex, anyhow, shader, wgpu};
 use fog::{FogBinding, FogSettings, fog_shader};
 use terrain::heightfield::HeightField;
-use terrain::{Shading, Sun, TerrainData, TerrainRenderer, Viewpoint};
+use terrain::{Detail, Sun, TerrainData, TerrainRenderer, Viewpoint};
 
 use crate::rock_field::{MAX_ONE_PER_DRAW, MAX_ROCKS, RockField, RockInstance};
 use crate::rock_groups::{RockRuns, visible_runs};
@@ -273,9 +273,18 @@ impl MarsPlain {
         self.fog.write_with_colour(queue, fog, fog_colour);
     }
 
-    /// Aims `viewpoint` from `camera`, lit by `sun`, keeping what `clip` keeps.
-    pub fn aim(&self, queue: &wgpu::Queue, viewpoint: &mut Viewpoint, camera: &Camera, sun: Sun, clip: Vec4) {
-        self.terrain.aim(queue, viewpoint, camera, sun, Shading::Shaded, clip);
+    /// Aims `viewpoint` from `camera`, for a picture drawn as finely as
+    /// `detail` asks, lit by `sun`, keeping what `clip` keeps.
+    pub fn aim(
+        &self,
+        queue: &wgpu::Queue,
+        viewpoint: &mut Viewpoint,
+        camera: &Camera,
+        detail: Detail,
+        sun: Sun,
+        clip: Vec4,
+    ) {
+        self.terrain.aim(queue, viewpoint, camera, detail, sun, clip);
     }
 
     /// The rocks `setup` draws from `viewpoint`: the first `setup.rocks`

@@ -16,7 +16,7 @@ use instancing::{MarsPlain, Setup, plain_camera};
 use skybox::{Sky, SkyViewpoint, sun_at};
 use terrain::ground::{self, Movement};
 use terrain::heightfield::HeightField;
-use terrain::{KEEP_ALL, SKY, Viewpoint};
+use terrain::{Detail, KEEP_ALL, SKY, Viewpoint};
 
 use crate::lake::{find_lake, lake_camera, mirrored, orbit_point};
 use crate::water_renderer::{Style, WaterRenderer, WaterSettings};
@@ -187,7 +187,8 @@ impl WaterChapter {
         phase: f32,
     ) {
         let Eye { ground, sky } = &mut self.eyes[eye];
-        self.plain.aim(&gpu.queue, ground, camera, sun_at(phase), clip);
+        let detail = Detail::lod(colour.texture().height());
+        self.plain.aim(&gpu.queue, ground, camera, detail, sun_at(phase), clip);
         self.sky.aim(&gpu.queue, sky, camera, phase);
         let mut pass = scene_pass(encoder, timer, label, colour, SKY, depth);
         self.plain.draw(&mut pass, ground, self.rocks);

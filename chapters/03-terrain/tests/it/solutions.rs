@@ -12,7 +12,7 @@ use terrain::chunks::{CHUNK_VERTICES, coarse_indices};
 use terrain::culling::Frustum;
 use terrain::heightfield::{CHUNK_QUADS, HeightField, TerrainSettings};
 use terrain::noise::{Fbm, perlin3};
-use terrain::{KEEP_ALL, SKY, Shading, Sun, TerrainData, TerrainMesh, TerrainRenderer, start_camera};
+use terrain::{Detail, KEEP_ALL, SKY, Sun, TerrainData, TerrainMesh, TerrainRenderer, start_camera};
 
 /// One device for these tests, so that the default terrain (4097² samples,
 /// two seconds to make) is made once, whichever test asks first.
@@ -144,7 +144,7 @@ fn render(
     let pipeline = TerrainRenderer::pipeline(gpu, shader, &layout, format).unwrap();
     let camera = start_camera(renderer.field(), target.aspect());
     let mut viewpoint = renderer.viewpoint(&gpu.device);
-    renderer.aim(&gpu.queue, &mut viewpoint, &camera, Sun::AFTERNOON, Shading::Shaded, KEEP_ALL);
+    renderer.aim(&gpu.queue, &mut viewpoint, &camera, Detail::lod(target.height), Sun::AFTERNOON, KEEP_ALL);
     renderer.write_chunk_flags(&gpu.queue, &Frustum::from_view_projection(camera.view_projection()));
     let (offscreen, depth) = (Offscreen::new(&gpu.device, target), common::texture::depth_view(&gpu.device, 1280, 720));
     let mut encoder = gpu.device.create_command_encoder(&Default::default());

@@ -10,7 +10,7 @@ use common::{PassTimer, ShaderFile, Target, image, shader, wgpu};
 use fog::{FogSettings, fog_shader};
 use terrain::culling::Frustum;
 use terrain::heightfield::TerrainSettings;
-use terrain::{KEEP_ALL, SKY, Shading, Sun, TerrainData, TerrainRenderer, start_camera};
+use terrain::{KEEP_ALL, SKY, Sun, TerrainData, TerrainRenderer, start_camera};
 
 // ANCHOR: fog_starts
 /// Exercise 1: where the fog "starts", taken as the distance at which a
@@ -140,7 +140,7 @@ fn render_fogged(shader: &ShaderFile, fog: FogSettings) -> image::RgbaImage {
     let pipeline = TerrainRenderer::pipeline(gpu, shader, &layout, target.format).unwrap();
     let camera = common::Camera { far: fog.far_plane(), ..start_camera(terrain.field(), target.aspect()) };
     let mut viewpoint = terrain.viewpoint(&gpu.device);
-    terrain.aim(&gpu.queue, &mut viewpoint, &camera, Sun::AFTERNOON, Shading::Shaded, KEEP_ALL);
+    terrain.aim(&gpu.queue, &mut viewpoint, &camera, terrain::Detail::lod(target.height), Sun::AFTERNOON, KEEP_ALL);
     let offscreen = Offscreen::new(&gpu.device, target);
     let depth = common::texture::depth_view(&gpu.device, target.width, target.height);
     let mut encoder = gpu.device.create_command_encoder(&Default::default());

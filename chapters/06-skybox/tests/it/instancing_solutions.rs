@@ -196,7 +196,14 @@ impl RockLab {
         });
         let meshes: Vec<_> = calls.iter().map(|(mesh, _)| mesh.upload(device, "rock")).collect();
         let mut viewpoint = self.terrain.viewpoint(device);
-        self.terrain.aim(&gpu.queue, &mut viewpoint, &self.camera, Sun::AFTERNOON, terrain::Shading::Shaded, KEEP_ALL);
+        self.terrain.aim(
+            &gpu.queue,
+            &mut viewpoint,
+            &self.camera,
+            terrain::Detail::lod(self.target.height),
+            Sun::AFTERNOON,
+            KEEP_ALL,
+        );
         let offscreen = Offscreen::new(device, self.target);
         let depth = common::texture::depth_view(device, self.target.width, self.target.height);
         let mut encoder = device.create_command_encoder(&Default::default());
@@ -400,7 +407,7 @@ fn exercise_5_every_visible_chunk_in_one_call_draws_the_same_terrain() {
 
     // The same picture both ways.
     let mut viewpoint = terrain.viewpoint(device);
-    terrain.aim(&gpu.queue, &mut viewpoint, &camera, Sun::AFTERNOON, terrain::Shading::Shaded, KEEP_ALL);
+    terrain.aim(&gpu.queue, &mut viewpoint, &camera, terrain::Detail::lod(target.height), Sun::AFTERNOON, KEEP_ALL);
     let render = |one_call_instead: bool| {
         let offscreen = Offscreen::new(device, target);
         let depth = common::texture::depth_view(device, target.width, target.height);
