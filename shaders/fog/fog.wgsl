@@ -7,7 +7,7 @@ enable clip_distances;
 // file only decides how much of that colour survives the distance.
 // Chapter 05's rocks `#import fog::{fog, visibility}` to stand in the same air.
 #define_import_path fog
-#import terrain::{globals, VertexOutput, FragmentInput, terrain_vertex, ground_colour, lit, clipped}
+#import terrain::{globals, VertexOutput, FragmentInput, terrain_vertex, ground_normal, ground_colour, lit, clipped}
 
 // ANCHOR: uniform
 struct Fog {
@@ -23,13 +23,8 @@ struct Fog {
 // ANCHOR_END: uniform
 
 @vertex
-fn vs_main(
-    @builtin(vertex_index) vertex_index: u32,
-    @builtin(instance_index) chunk: u32,
-    @location(0) height: f32,
-    @location(1) normal: vec4<f32>,
-) -> VertexOutput {
-    return terrain_vertex(vertex_index, chunk, height, normal);
+fn vs_main(@builtin(vertex_index) vertex_index: u32, @location(0) this_patch: vec3<u32>) -> VertexOutput {
+    return terrain_vertex(vertex_index, this_patch);
 }
 
 // ANCHOR: fog
@@ -44,7 +39,7 @@ fn fs_main(in: FragmentInput) -> @location(0) vec4<f32> {
     if clipped(in.world_position) {
         discard;
     }
-    let n = normalize(in.normal);
+    let n = ground_normal(in.world_position.xz);
     let surface = lit(ground_colour(in.world_position.y, n), n);
     // Distance per fragment, not per vertex: see the chapter's text.
     let distance = length(in.world_position - globals.eye.xyz);

@@ -11,7 +11,6 @@ use common::{
 };
 
 use crate::cameras::{close_up_camera, overhead_camera, start_camera};
-use crate::culling::Frustum;
 use crate::ground::{self, Movement};
 use crate::heightfield::{HeightField, TerrainSettings};
 use crate::lod::Detail;
@@ -23,10 +22,14 @@ use crate::terrain_renderer::{KEEP_ALL, SKY, Shading, Sun, TerrainRenderer, View
 pub struct Settings {
     /// How the ground is coloured.
     pub shading: Shading,
+    /// Levels of detail (true), or every chunk in view at full detail.
+    pub lod: bool,
+    /// Look from 4 km overhead at what the flying camera draws.
+    pub from_above: bool,
 }
 
 impl Settings {
-    pub const DEFAULT: Self = Self { shading: Shading::Shaded };
+    pub const DEFAULT: Self = Self { shading: Shading::Shaded, lod: true, from_above: false };
 }
 
 /// The places a view can put the camera.
@@ -45,31 +48,41 @@ impl CameraPreset {
 }
 
 // Every view but `close-up` is a mode: a way of drawing what the flying
-// camera sees. `chunks` too: it shows that camera's culling from above.
+// camera sees. `quadtree` too: it shows that camera's patches from above.
 
 /// Every view, with the settings it applies and, for a preset, its camera.
-pub const VIEW_TABLE: [ViewRow<Settings, CameraPreset>; 5] = [
+pub const VIEW_TABLE: [ViewRow<Settings, CameraPreset>; 7] = [
     ViewRow::mode("default", "the terrain, coloured by height and slope, with its cliff", Settings::DEFAULT),
     ViewRow::mode(
+        "full-detail",
+        "the same picture with every chunk in view at full detail: ten times the triangles",
+        Settings { lod: false, ..Settings::DEFAULT },
+    ),
+    ViewRow::mode(
+        "lod-levels",
+        "a colour per level of detail, blending into the next where the mesh morphs",
+        Settings { shading: Shading::Levels, ..Settings::DEFAULT },
+    ),
+    ViewRow::mode(
         "wireframe",
-        "the triangles of the height-map mesh, wherever they are at least 8 pixels apart",
-        Settings { shading: Shading::Wireframe },
+        "the triangles drawn, wherever they are at least 4 pixels apart",
+        Settings { shading: Shading::Wireframe, ..Settings::DEFAULT },
     ),
     ViewRow::preset(
         "close-up",
         "the wireframe from the foot of the cliff, where the 1 m cells are large",
-        Settings { shading: Shading::Wireframe },
+        Settings { shading: Shading::Wireframe, ..Settings::DEFAULT },
         CameraPreset::CloseUp,
     ),
     ViewRow::mode(
         "normals",
-        "normals from the whole height field: no seams at chunk borders",
-        Settings { shading: Shading::Normals },
+        "normals from the whole height field: the same at every level of detail",
+        Settings { shading: Shading::Normals, ..Settings::DEFAULT },
     ),
     ViewRow::mode(
-        "chunks",
-        "from 4 km above: a colour per chunk your camera draws, dark for the culled ones",
-        Settings { shading: Shading::Chunks },
+        "quadtree",
+        "from 4 km above: the patches your camera draws, a colour per level; nothing where it culls",
+        Settings { shading: Shading::Levels, from_above: true, ..Settings::DEFAULT },
     ),
 ];
 
@@ -85,8 +98,6 @@ pub struct TerrainChapter {
     pipeline: Reloadable<wgpu::RenderPipeline>,
     depth: wgpu::TextureView,
     target: Target,
-    /// Chunks drawn in the last frame.
-    pub drawn: usize,
     /// The overlay changed the settings; regenerate before the next frame.
     regenerate_requested: bool,
 }
@@ -136,7 +147,6 @@ impl Chapter for TerrainChapter {
             pipeline,
             depth: depth_view(&gpu.device, target.width, target.height),
             target,
-            drawn: 0,
             regenerate_requested: false,
         })
     }
@@ -178,36 +188,30 @@ impl Chapter for TerrainChapter {
         if std::mem::take(&mut self.regenerate_requested) {
             self.terrain.regenerate(gpu);
         }
-        let shading = self.settings.shading;
-        self.terrain.shading = shading;
-        let detail = Detail::lod(self.target.height);
+        let settings = self.settings;
+        self.terrain.shading = settings.shading;
+        let height = self.target.height;
+        let detail = if settings.lod { Detail::lod(height) } else { Detail::full(height) };
+        // The quadtree view looks from high above at what the flying
+        // camera draws: the patches it chose, culled by its frustum.
+        let seen_from =
+            if settings.from_above { overhead_camera(self.terrain.field(), self.target.aspect()) } else { self.camera };
+        let (camera, sun) = (&self.camera, Sun::AFTERNOON);
+        self.terrain.aim_seen_from(gpu, &mut self.viewpoint, camera, detail, sun, KEEP_ALL, &seen_from);
         let mut pass = frame.scene_pass("terrain", SKY, &self.depth);
         pass.set_pipeline(&self.pipeline.get());
-        if shading == Shading::Chunks {
-            // Look from high above at what the flying camera culls: every
-            // chunk is drawn (coarsely), coloured if the camera keeps it.
-            let frustum = Frustum::from_view_projection(self.camera.view_projection());
-            self.terrain.write_chunk_flags(&gpu.queue, &frustum);
-            self.drawn = self.terrain.mesh().bounds.iter().filter(|b| frustum.intersects(b)).count();
-            let overhead = overhead_camera(self.terrain.field(), self.target.aspect());
-            self.terrain.aim(&gpu.queue, &mut self.viewpoint, &overhead, detail, Sun::AFTERNOON, KEEP_ALL);
-            self.terrain.bind(&mut pass, &self.viewpoint);
-            self.terrain.mesh().draw_all_coarse(&mut pass);
-        } else {
-            self.terrain.aim(&gpu.queue, &mut self.viewpoint, &self.camera, detail, Sun::AFTERNOON, KEEP_ALL);
-            self.drawn = self.terrain.draw(&mut pass, &self.viewpoint);
-        }
+        self.terrain.draw(&mut pass, &self.viewpoint);
     }
     // ANCHOR_END: render
 
     fn ui(&mut self, ui: &mut egui::Ui) {
-        ui.label(format!("chunks drawn: {} / {}", self.drawn, self.terrain.mesh().bounds.len()));
+        ui.label(self.terrain.drawn(&self.viewpoint));
         self.regenerate_requested |= self.terrain.settings_ui(ui);
         ui.add(egui::Slider::new(&mut self.controller.speed, 5.0..=400.0).logarithmic(true).text("speed (m/s)"));
         ground::movement_switch(ui, &mut self.movement);
     }
 
     fn stats(&mut self, _gpu: &Gpu) -> String {
-        self.terrain.stats(self.drawn)
+        self.terrain.stats(&self.viewpoint)
     }
 }

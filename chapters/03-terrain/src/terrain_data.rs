@@ -1,23 +1,41 @@
 //! The terrain made once per device and settings, and shared: the height
-//! field and the chunk meshes, built in steps (heights, meshes, upload) so
-//! that a browser page can show its progress.
+//! field, the chunks' boxes and the quadtree over them, and the maps on the
+//! GPU, built in steps (heights, normals and boxes, upload) so that a
+//! browser page can show its progress.
 
 use std::sync::Arc;
 
 use common::preparation::{Preparation, Step};
 use common::timing::measure;
-use common::{Gpu, wgpu};
+use common::Gpu;
 
-use crate::chunks::{Aabb, CHUNK_VERTICES, TerrainVertex};
-use crate::heightfield::{HeightField, HeightRows, TerrainSettings};
-use crate::terrain_mesh::TerrainMesh;
+use crate::chunks::{Aabb, chunk_bounds};
+use crate::heightfield::{CHUNK_QUADS, HeightField, HeightRows, TerrainSettings};
+use crate::quadtree::Quadtree;
+use crate::terrain_maps::{TerrainMaps, normal_rows};
 
 /// The terrain's CPU and GPU data for one set of settings: the height
-/// field, the chunk meshes, and how long each took to make (ms).
+/// field, each chunk's box and the quadtree over them, the maps on the
+/// GPU, and how long the heights and the rest took to make (ms).
 pub struct TerrainData {
     pub field: HeightField,
-    pub mesh: TerrainMesh,
+    /// Chunk (x, z)'s box at `z * chunks_per_side + x`.
+    pub chunk_bounds: Vec<Aabb>,
+    pub quadtree: Quadtree,
+    pub maps: TerrainMaps,
     pub timings: (f64, f64),
+}
+
+impl TerrainData {
+    /// The terrain of `field` with its boxes, quadtree and maps made on the
+    /// device in one go (tests that build a field of their own use this).
+    pub fn from_field(gpu: &Gpu, field: HeightField) -> Self {
+        let n = field.settings.chunks_per_side;
+        let chunk_bounds: Vec<Aabb> = (0..n * n).map(|i| chunk_bounds(&field, i % n, i / n)).collect();
+        let normals = normal_rows(&field, 0..field.size);
+        let maps = TerrainMaps::upload(&gpu.device, &gpu.queue, &field, &normals);
+        Self { quadtree: Quadtree::new(&chunk_bounds, n), field, chunk_bounds, maps, timings: (0.0, 0.0) }
+    }
 }
 
 impl TerrainData {
@@ -29,7 +47,7 @@ impl TerrainData {
             loop {
                 match build {
                     TerrainBuild::Done(data) => return data,
-                    unfinished => build = unfinished.step(&gpu.device),
+                    unfinished => build = unfinished.step(gpu),
                 }
             }
         })
@@ -47,7 +65,7 @@ impl TerrainData {
         let mut build = Some(TerrainBuild::new(settings));
         Preparation::in_steps("generating the terrain", move |gpu| {
             let unfinished = build.take().expect("no step after the last");
-            match unfinished.step(&gpu.device) {
+            match unfinished.step(gpu) {
                 TerrainBuild::Done(data) => Step::Done(gpu.cached(settings, || data)),
                 next => Step::Progress(build.insert(next).progress()),
             }
@@ -56,18 +74,18 @@ impl TerrainData {
 }
 
 /// The terrain made a slice at a time: rows of heights, then rows of
-/// chunk meshes, then the upload. [`TerrainData::get`] takes the same
-/// steps in one go, so every test of the terrain tests the steps too.
+/// normals and chunk boxes, then the upload. [`TerrainData::get`] takes the
+/// same steps in one go, so every test of the terrain tests the steps too.
 enum TerrainBuild {
     /// Milliseconds spent so far in `ms`.
     Heights {
         rows: HeightRows,
         ms: f64,
     },
-    /// Milliseconds spent on heights, then on meshes, in `timings`.
-    Meshes {
+    /// Milliseconds spent on heights, then on the rest, in `timings`.
+    Maps {
         field: HeightField,
-        vertices: Vec<TerrainVertex>,
+        normals: Vec<[i8; 2]>,
         bounds: Vec<Aabb>,
         timings: (f64, f64),
     },
@@ -75,45 +93,50 @@ enum TerrainBuild {
 }
 
 impl TerrainBuild {
-    /// 55 to 85 ms of heights and about 60 ms of meshes a step, measured
-    /// in Chromium on the machine the book's figures come from.
+    /// 55 to 85 ms of heights a step, measured in Chromium on the machine
+    /// the book's figures come from; a step of normals and boxes is cheaper.
     const HEIGHT_ROWS_PER_STEP: usize = 64;
     const CHUNK_ROWS_PER_STEP: u32 = 4;
-    /// The heights' share of the whole work, as measured natively (1650 ms
-    /// of heights to 645 ms of meshes).
-    const HEIGHTS_SHARE: f32 = 0.72;
+    /// The heights' share of the whole work, as measured natively.
+    const HEIGHTS_SHARE: f32 = 0.8;
 
     fn new(settings: TerrainSettings) -> Self {
         Self::Heights { rows: HeightRows::new(settings), ms: 0.0 }
     }
 
     /// The next slice of work done.
-    fn step(self, device: &wgpu::Device) -> Self {
+    fn step(self, gpu: &Gpu) -> Self {
         match self {
             Self::Heights { mut rows, ms } => {
                 let ((), took) = measure(|| rows.add(Self::HEIGHT_ROWS_PER_STEP));
                 if rows.done() < rows.size {
                     return Self::Heights { rows, ms: ms + took };
                 }
-                let chunks = rows.settings.chunks_per_side.pow(2) as usize;
-                let vertices = Vec::with_capacity(chunks * CHUNK_VERTICES as usize);
-                Self::Meshes { field: rows.finish(), vertices, bounds: Vec::new(), timings: (ms + took, 0.0) }
+                let normals = Vec::with_capacity((rows.size * rows.size) as usize);
+                Self::Maps { field: rows.finish(), normals, bounds: Vec::new(), timings: (ms + took, 0.0) }
             }
-            Self::Meshes { field, mut vertices, mut bounds, mut timings } => {
+            Self::Maps { field, mut normals, mut bounds, mut timings } => {
                 let n = field.settings.chunks_per_side;
                 let first = bounds.len() as u32 / n;
                 if first < n {
-                    let rows = first..(first + Self::CHUNK_ROWS_PER_STEP).min(n);
-                    let ((more_vertices, more_bounds), ms) = measure(|| TerrainMesh::chunk_rows(&field, rows));
-                    vertices.extend(more_vertices);
-                    bounds.extend(more_bounds);
+                    // Rows of chunks, and the rows of samples they start with
+                    // (the last step takes the field's last row too).
+                    let chunk_rows = first..(first + Self::CHUNK_ROWS_PER_STEP).min(n);
+                    let end = if chunk_rows.end == n { field.size } else { chunk_rows.end * CHUNK_QUADS };
+                    let ((), ms) = measure(|| {
+                        normals.extend(normal_rows(&field, first * CHUNK_QUADS..end));
+                        bounds.extend(chunk_rows.flat_map(|cz| (0..n).map(move |cx| (cx, cz))).map(|(cx, cz)| chunk_bounds(&field, cx, cz)));
+                    });
                     timings.1 += ms;
-                    return Self::Meshes { field, vertices, bounds, timings };
+                    return Self::Maps { field, normals, bounds, timings };
                 }
-                // Every chunk is built: the upload is the last step.
-                let (mesh, ms) = measure(|| TerrainMesh::upload(device, n, &vertices, bounds));
-                timings.1 += ms;
-                Self::Done(TerrainData { field, mesh, timings })
+                // Every row is done: the upload is the last step.
+                let (data, ms) = measure(|| {
+                    let maps = TerrainMaps::upload(&gpu.device, &gpu.queue, &field, &normals);
+                    let quadtree = Quadtree::new(&bounds, n);
+                    TerrainData { field, chunk_bounds: bounds, quadtree, maps, timings }
+                });
+                Self::Done(TerrainData { timings: (timings.0, timings.1 + ms), ..data })
             }
             done @ Self::Done(_) => done,
         }
@@ -123,7 +146,7 @@ impl TerrainBuild {
     fn progress(&self) -> f32 {
         match self {
             Self::Heights { rows, .. } => Self::HEIGHTS_SHARE * rows.done() as f32 / rows.size as f32,
-            Self::Meshes { field, bounds, .. } => {
+            Self::Maps { field, bounds, .. } => {
                 let chunks = field.settings.chunks_per_side.pow(2) as f32;
                 // The upload is still to come.
                 Self::HEIGHTS_SHARE + (1.0 - Self::HEIGHTS_SHARE) * 0.95 * bounds.len() as f32 / chunks

@@ -45,7 +45,6 @@ pub struct FogChapter {
     pipeline: Reloadable<wgpu::RenderPipeline>,
     depth: wgpu::TextureView,
     target: Target,
-    pub drawn: usize,
     regenerate_requested: bool,
 }
 
@@ -92,7 +91,6 @@ impl Chapter for FogChapter {
             pipeline,
             depth: depth_view(device, target.width, target.height),
             target,
-            drawn: 0,
             regenerate_requested: false,
         })
     }
@@ -137,21 +135,15 @@ impl Chapter for FogChapter {
         // Nothing past the opaque distance can be seen: stop drawing there.
         self.camera.far = self.fog.far_plane();
         self.fog_binding.write(&gpu.queue, self.fog);
-        self.terrain.aim(
-            &gpu.queue,
-            &mut self.viewpoint,
-            &self.camera,
-            Detail::lod(self.target.height),
-            Sun::AFTERNOON,
-            KEEP_ALL,
-        );
+        let detail = Detail::lod(self.target.height);
+        self.terrain.aim(gpu, &mut self.viewpoint, &self.camera, detail, Sun::AFTERNOON, KEEP_ALL);
 
         // Clear to the fog colour: where there is no ground, the fog's
         // "infinitely far" is what shows.
         let mut pass = frame.scene_pass("terrain", SKY, &self.depth);
         pass.set_pipeline(&self.pipeline.get());
         pass.set_bind_group(1, &self.fog_binding.group, &[]);
-        self.drawn = self.terrain.draw(&mut pass, &self.viewpoint);
+        self.terrain.draw(&mut pass, &self.viewpoint);
     }
     // ANCHOR_END: render
 
@@ -159,12 +151,11 @@ impl Chapter for FogChapter {
         ui.add(egui::Slider::new(&mut self.fog.density, 0.0..=0.01).logarithmic(true).text("density (per m)"));
         ui.add(egui::Slider::new(&mut self.fog.gradient, 0.5..=4.0).text("gradient"));
         ui.label(format!(
-            "opaque beyond {:.0} m; far plane {:.0} m; chunks drawn {} / {}",
+            "opaque beyond {:.0} m; far plane {:.0} m",
             self.fog.opaque_distance(),
             self.camera.far,
-            self.drawn,
-            self.terrain.mesh().bounds.len()
         ));
+        ui.label(self.terrain.drawn(&self.viewpoint));
         ui.collapsing("terrain", |ui| {
             self.regenerate_requested |= self.terrain.settings_ui(ui);
         });
@@ -173,6 +164,6 @@ impl Chapter for FogChapter {
     }
 
     fn stats(&mut self, _gpu: &Gpu) -> String {
-        format!("far plane {:.0} m; {}", self.camera.far, self.terrain.stats(self.drawn))
+        format!("far plane {:.0} m; {}", self.camera.far, self.terrain.stats(&self.viewpoint))
     }
 }

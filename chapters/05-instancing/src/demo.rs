@@ -198,7 +198,7 @@ impl Chapter for InstancingChapter {
         let sky = [SKY.r as f32, SKY.g as f32, SKY.b as f32];
         self.plain.set_air(&gpu.queue, self.fog, sky);
         self.plain.aim(
-            &gpu.queue,
+            gpu,
             &mut self.viewpoint,
             &self.camera,
             Detail::lod(self.target.height),

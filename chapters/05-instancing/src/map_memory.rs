@@ -22,7 +22,7 @@ pub struct MapMemory {
     pub rocks: u32,
     /// The height field, on the CPU: 4 bytes a height.
     pub heights: u64,
-    /// On the GPU: the terrain's vertices and shared indices.
+    /// On the GPU: the terrain's height and normal maps, and the patch grid's indices.
     pub terrain: u64,
     /// On the GPU: the rock mesh, the instances, the one-per-draw slots and
     /// the indirect draw list.
@@ -87,22 +87,22 @@ mod tests {
         eprintln!("{}", memory.row());
         assert_eq!((memory.samples, memory.rocks), (1025, 62_500));
         assert_eq!(memory.heights, 4 * 1025 * 1025);
-        // Worked out here, not read from the buffers: 8 bytes for each of
-        // 65 × 65 vertices in 256 chunks, the shared 16-bit indices (64 × 64
-        // quads, and 8 × 8 coarse ones, 6 indices each); 32 bytes a rock,
+        // Worked out here, not read from the buffers: 4 bytes of height and
+        // 2 of normal for each of the 1025 × 1025 samples, the patch grid's
+        // 16-bit indices (32 × 32 quads, 6 indices each); 32 bytes a rock,
         // 60 vertices of 32 bytes and 60 32-bit indices for the mesh, 20
         // bytes of draw list per group, and 20,000 uniform slots of 32 bytes
         // or more (each starts at a multiple of the device's alignment for
         // uniform offsets: 32 bytes on lavapipe, 256 on many GPUs).
-        let terrain = 8 * 65 * 65 * 256 + 2 * 6 * (64 * 64 + 8 * 8);
+        let terrain = (4 + 2) * 1025 * 1025 + 2 * 6 * 32 * 32;
         assert_eq!(memory.terrain, terrain);
         let slots = memory.rock_bytes - (32 * 62_500 + 60 * 32 + 60 * 4 + 20 * 256);
         assert!(
             slots.is_multiple_of(20_000) && [32, 64, 128, 256].contains(&(slots / 20_000)),
             "{slots} bytes of slots"
         );
-        // wgpu counts every buffer the plain made: ours, and the uniforms
-        // and per-chunk flags on top, a few kilobytes.
+        // wgpu counts every buffer and texture the plain made: ours, and
+        // the uniforms on top, a few kilobytes.
         if let Some(counted) = memory.counted {
             let ours = memory.terrain + memory.rock_bytes;
             assert!(counted >= ours && counted - ours < 64 * 1024, "wgpu counts {counted} bytes, we {ours}");

@@ -166,7 +166,7 @@ impl MarsPlain {
     pub fn new(gpu: &Gpu, format: wgpu::TextureFormat, terrain: Arc<TerrainData>) -> anyhow::Result<Self> {
         let device = &gpu.device;
         let terrain = TerrainRenderer::new(gpu, terrain);
-        let rocks = RockField::get(gpu, terrain.field(), &terrain.mesh().bounds);
+        let rocks = RockField::get(gpu, terrain.field(), terrain.chunk_bounds());
         let draw_list = device.create_buffer(&wgpu::BufferDescriptor {
             label: Some("rock draw list"),
             size: (rocks.groups.len().max(1) * std::mem::size_of::<wgpu::util::DrawIndexedIndirectArgs>()) as u64,
@@ -251,18 +251,16 @@ impl MarsPlain {
     }
 
     /// Bytes of the buffers this plain made on the GPU, by our own count:
-    /// (terrain vertices and indices, rocks and their draw list). Uniforms
-    /// and the terrain's per-chunk flags come on top; they are kilobytes.
+    /// (the terrain's maps and patch grid, rocks and their draw list).
+    /// Uniforms and each viewpoint's patch list come on top; they are kilobytes.
     pub fn gpu_bytes(&self) -> (u64, u64) {
-        let mesh = self.terrain.mesh();
-        let terrain = mesh.vertex_buffer.size() + mesh.index_buffer.size() + mesh.coarse_index_buffer.size();
-        (terrain, self.rocks.gpu_bytes() + self.draw_list.size())
+        (self.terrain.data().maps.gpu_bytes(), self.rocks.gpu_bytes() + self.draw_list.size())
     }
 
     /// Makes the terrain again from `self.terrain.settings`, and the rocks on it.
     pub fn regenerate(&mut self, gpu: &Gpu) {
         self.terrain.regenerate(gpu);
-        self.rocks = RockField::get(gpu, self.terrain.field(), &self.terrain.mesh().bounds);
+        self.rocks = RockField::get(gpu, self.terrain.field(), self.terrain.chunk_bounds());
         let layout = self.pipelines.get().one_per_draw.get_bind_group_layout(2);
         self.singles_group = Self::singles_group(&gpu.device, &layout, &self.rocks);
     }
@@ -277,14 +275,14 @@ impl MarsPlain {
     /// `detail` asks, lit by `sun`, keeping what `clip` keeps.
     pub fn aim(
         &self,
-        queue: &wgpu::Queue,
+        gpu: &Gpu,
         viewpoint: &mut Viewpoint,
         camera: &Camera,
         detail: Detail,
         sun: Sun,
         clip: Vec4,
     ) {
-        self.terrain.aim(queue, viewpoint, camera, detail, sun, clip);
+        self.terrain.aim(gpu, viewpoint, camera, detail, sun, clip);
     }
 
     /// The rocks `setup` draws from `viewpoint`: the first `setup.rocks`

@@ -176,7 +176,7 @@ impl Chapter for SkyboxChapter {
         self.camera.far = self.fog.far_plane();
         self.plain.set_air(&gpu.queue, self.fog, self.sky.fog_colour(self.phase));
         let (ground, sky) = &mut self.viewpoint;
-        self.plain.aim(&gpu.queue, ground, &self.camera, Detail::lod(self.target.height), sun_at(self.phase), KEEP_ALL);
+        self.plain.aim(gpu, ground, &self.camera, Detail::lod(self.target.height), sun_at(self.phase), KEEP_ALL);
         self.sky.aim(&gpu.queue, sky, &self.camera, self.phase);
         // The clear colour is never seen: the sky covers whatever the plain leaves.
         let mut pass = frame.scene_pass("plain and sky", terrain::SKY, &self.depth);

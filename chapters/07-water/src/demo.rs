@@ -188,7 +188,7 @@ impl WaterChapter {
     ) {
         let Eye { ground, sky } = &mut self.eyes[eye];
         let detail = Detail::lod(colour.texture().height());
-        self.plain.aim(&gpu.queue, ground, camera, detail, sun_at(phase), clip);
+        self.plain.aim(gpu, ground, camera, detail, sun_at(phase), clip);
         self.sky.aim(&gpu.queue, sky, camera, phase);
         let mut pass = scene_pass(encoder, timer, label, colour, SKY, depth);
         self.plain.draw(&mut pass, ground, self.rocks);

@@ -1,9 +1,70 @@
 //! Chapter 03's integration tests, one binary: the terrain made in steps,
-//! the `--walk` switch, and the worked solutions to the page's exercises.
+//! the `--walk` switch, the level of detail (no holes, no pops, the ground
+//! walked on is the ground drawn), and the worked solutions to the page's
+//! exercises.
 //!
 //! One test binary per crate: each links wgpu, naga, egui and winit, so
 //! every extra file in `tests/` would be another link of all of them.
 
+mod lod;
 mod prepare;
 mod solutions;
 mod walk;
+
+use std::sync::{Arc, OnceLock};
+
+use common::headless::Offscreen;
+use common::{Camera, Gpu, PassTimer, ShaderFile, Target, wgpu};
+use terrain::heightfield::TerrainSettings;
+use terrain::{Detail, KEEP_ALL, Sun, TerrainData, TerrainRenderer};
+
+/// One device for these tests, so that the default terrain (4097² samples,
+/// two seconds to make) is made once, whichever test asks first.
+fn default_terrain() -> (&'static Gpu, Arc<TerrainData>) {
+    static GPU: OnceLock<Gpu> = OnceLock::new();
+    let gpu = GPU.get_or_init(|| Gpu::headless(terrain::gpu_needs()).expect("an adapter (lavapipe will do)"));
+    (gpu, TerrainData::get(gpu, TerrainSettings::default()))
+}
+
+/// The default terrain drawn with `shader` into a new texture of `target`'s
+/// size and format, cleared to `clear`: the patches chosen, and morphed,
+/// for `eye`, the picture taken from `camera`. With `draw` the caller may
+/// draw instead (it gets the pass, the renderer and the aimed viewpoint);
+/// without it, the renderer's own draw.
+fn draw_terrain(
+    shader: &ShaderFile,
+    target: Target,
+    clear: wgpu::Color,
+    (camera, eye): (&Camera, &Camera),
+    detail: Detail,
+) -> wgpu::Texture {
+    let (gpu, data) = default_terrain();
+    let renderer = TerrainRenderer::new(gpu, data);
+    let layout = gpu.device.create_pipeline_layout(&wgpu::PipelineLayoutDescriptor {
+        label: None,
+        bind_group_layouts: &[Some(&renderer.bind_group_layout)],
+        immediate_size: 0,
+    });
+    let pipeline = TerrainRenderer::pipeline(gpu, shader, &layout, target.format).unwrap();
+    let mut viewpoint = renderer.viewpoint(&gpu.device);
+    renderer.aim_seen_from(gpu, &mut viewpoint, eye, detail, Sun::AFTERNOON, KEEP_ALL, camera);
+    let offscreen = Offscreen::new(&gpu.device, target);
+    let depth = common::texture::depth_view(&gpu.device, target.width, target.height);
+    let mut encoder = gpu.device.create_command_encoder(&Default::default());
+    {
+        let mut pass =
+            common::pipeline::scene_pass(&mut encoder, &PassTimer::off(), "test", &offscreen.view, clear, &depth);
+        pass.set_pipeline(&pipeline);
+        renderer.draw(&mut pass, &viewpoint);
+    }
+    gpu.queue.submit([encoder.finish()]);
+    offscreen.texture
+}
+
+/// `terrain.wgsl` with `replace` in place of `find` (which must be there).
+fn edited_terrain_shader(find: &str, replace: &str) -> ShaderFile {
+    let original = common::shader!("terrain/terrain.wgsl");
+    assert!(original.embedded.contains(find), "terrain.wgsl changed: update the test's edit of {find:?}");
+    let edited = original.embedded.replacen(find, replace, 1);
+    ShaderFile { embedded: Box::leak(edited.into_boxed_str()), ..original }
+}

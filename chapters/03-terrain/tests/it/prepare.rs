@@ -30,7 +30,7 @@ fn steps_rise_to_one_and_leave_the_terrain_for_new() {
     // What the steps made is the terrain of those settings, and it is kept:
     // a second preparation is ready at once with the same data.
     assert_eq!(made.field.heights, HeightField::generate(settings).heights);
-    assert_eq!(made.mesh.bounds.len(), 16 * 16);
+    assert_eq!(made.chunk_bounds.len(), 16 * 16);
     assert!(gpu.is_cached::<TerrainSettings, TerrainData>(&settings));
     let again = TerrainData::prepare(&gpu, settings).finish(&gpu);
     assert!(std::sync::Arc::ptr_eq(&made, &again));

@@ -1,0 +1,152 @@
+//! The level of detail, checked on real pictures of the default terrain:
+//! no hole opens between levels wherever the camera is, moving across a
+//! level's boundary changes no pixel by much (nothing pops), and the ground
+//! a walker stands on is the ground drawn.
+
+use common::Camera;
+use common::glam::Vec3;
+use common::headless::{OFFSCREEN_FORMAT, read_floats, read_texture};
+use common::{Target, image, wgpu};
+use terrain::ground::EYE_HEIGHT;
+use terrain::heightfield::HeightField;
+use terrain::{Detail, Quadtree, TerrainRenderer};
+
+use crate::{default_terrain, draw_terrain, edited_terrain_shader};
+
+/// A clear colour no ground has: every ground colour has some red.
+const NO_GROUND: wgpu::Color = wgpu::Color { r: 0.0, g: 0.0, b: 1.0, a: 1.0 };
+
+fn shaded() -> common::ShaderFile {
+    common::shader!("terrain/terrain.wgsl")
+}
+
+/// `terrain.wgsl` with the morph switched off: each level drawn as it is
+/// until the quadtree swaps it for the next.
+fn unmorphed() -> common::ShaderFile {
+    edited_terrain_shader("return clamp((distance - start) / (end - start), 0.0, 1.0);", "return 0.0;")
+}
+
+/// A camera over (x, z), `above` metres over the ground there, pitched down
+/// by `pitch` degrees, facing `yaw` degrees.
+fn looking_down(field: &HeightField, (x, z): (f32, f32), above: f32, yaw: f32, pitch: f32, aspect: f32) -> Camera {
+    let mut camera = Camera::looking_at(Vec3::ZERO, Vec3::NEG_Z, aspect);
+    camera.position = Vec3::new(x, field.height_at(x, z) + above, z);
+    (camera.yaw, camera.pitch) = (yaw.to_radians(), -pitch.to_radians());
+    (camera.near, camera.far) = (0.5, 6000.0);
+    camera
+}
+
+/// Pixels of `picture` in the clear colour: where no ground was drawn.
+fn holes(picture: &image::RgbaImage) -> usize {
+    picture.pixels().filter(|p| p[0] == 0 && p[1] == 0 && p[2] == 255).count()
+}
+
+/// Cameras whose pictures cross one or several levels' boundaries, all
+/// looking at ground only (no sky, no edge of the map in view).
+fn straddling_cameras(field: &HeightField, aspect: f32) -> Vec<Camera> {
+    let mut cameras = Vec::new();
+    // The picture's top edge is 30° above its middle: pitched down by more
+    // than 40°, it sees no sky.
+    for (i, (above, pitch)) in [(30.0, 45.0), (120.0, 50.0), (250.0, 60.0), (500.0, 70.0), (900.0, 89.0)].into_iter().enumerate() {
+        for yaw in [0.0, 70.0, 200.0] {
+            let at = (1200.0 + 400.0 * i as f32, 2600.0 - 250.0 * i as f32);
+            cameras.push(looking_down(field, at, above, yaw, pitch, aspect));
+        }
+    }
+    cameras
+}
+
+#[test]
+fn no_hole_opens_between_levels_and_one_does_without_the_morph() {
+    let (_, data) = default_terrain();
+    let target = Target { format: OFFSCREEN_FORMAT, width: 800, height: 450 };
+    let (mut without_morph, mut cameras_with_holes) = (0, 0);
+    for camera in straddling_cameras(&data.field, target.aspect()) {
+        let detail = Detail::lod(target.height);
+        let picture = read_texture(default_terrain().0, &draw_terrain(&shaded(), target, NO_GROUND, (&camera, &camera), detail)).unwrap();
+        assert_eq!(holes(&picture), 0, "a hole seen from {camera:?}");
+        let broken = read_texture(default_terrain().0, &draw_terrain(&unmorphed(), target, NO_GROUND, (&camera, &camera), detail)).unwrap();
+        without_morph += holes(&broken);
+        cameras_with_holes += usize::from(holes(&broken) > 0);
+    }
+    eprintln!("without the morph: {without_morph} holes, from {cameras_with_holes} of the cameras");
+    assert!(without_morph > 0, "the check can fail: cracks open without the morph");
+}
+
+#[test]
+fn a_large_picture_has_no_hole_either() {
+    let (_, data) = default_terrain();
+    let target = Target { format: OFFSCREEN_FORMAT, width: 1920, height: 1080 };
+    let camera = looking_down(&data.field, (2000.0, 2200.0), 250.0, 30.0, 50.0, target.aspect());
+    let picture = read_texture(default_terrain().0, &draw_terrain(&shaded(), target, NO_GROUND, (&camera, &camera), Detail::lod(1080))).unwrap();
+    assert_eq!(holes(&picture), 0);
+}
+
+/// The largest change of any colour channel of any pixel between two pictures.
+fn largest_change(a: &image::RgbaImage, b: &image::RgbaImage) -> u8 {
+    a.as_raw().iter().zip(b.as_raw()).map(|(x, y)| x.abs_diff(*y)).max().unwrap_or(0)
+}
+
+#[test]
+fn walking_across_a_boundary_changes_no_pixel_much() {
+    // The picture is taken from one fixed camera; only the eye the patches
+    // are chosen and morphed for moves, a metre a step, along the camera's
+    // line of sight up to it (so its frustum always holds the camera's),
+    // and every change between steps is the level of detail's, none the
+    // camera's.
+    let (_, data) = default_terrain();
+    let target = Target { format: OFFSCREEN_FORMAT, width: 400, height: 225 };
+    let camera = looking_down(&data.field, (2000.0, 2200.0), 120.0, 0.0, 60.0, target.aspect());
+    let detail = Detail::lod(target.height);
+    let walk = |shader: &common::ShaderFile| {
+        let mut pictures = Vec::new();
+        for step in 0..80 {
+            let mut eye = camera;
+            eye.position -= camera.forward() * (80 - step) as f32;
+            pictures.push(read_texture(default_terrain().0, &draw_terrain(shader, target, NO_GROUND, (&camera, &eye), detail)).unwrap());
+        }
+        pictures.windows(2).map(|pair| largest_change(&pair[0], &pair[1])).max().unwrap_or(0)
+    };
+    let (smooth, popping) = (walk(&shaded()), walk(&unmorphed()));
+    eprintln!("the largest change of a pixel between two steps: {smooth} with the morph, {popping} without");
+    // Measured on lavapipe: 1 level with the morph, 204 without (a crack
+    // opening onto the clear colour). The bound leaves other rasterisers
+    // room for a rounding or two.
+    assert!(smooth <= 4, "{smooth}");
+    assert!(popping > 10 * smooth.max(1), "{popping}");
+}
+
+#[test]
+fn the_walker_stands_on_the_ground_drawn() {
+    let (gpu, data) = default_terrain();
+    let field = &data.field;
+    let renderer = TerrainRenderer::new(gpu, data.clone());
+    // The drawn ground's height under the eye, from a picture looking
+    // straight down, each pixel showing its world position's height.
+    let world_height =
+        edited_terrain_shader("            return vec4<f32>(shaded, 1.0);", "            return vec4<f32>(in.world_position, 1.0);");
+    let target = Target { format: wgpu::TextureFormat::Rgba32Float, width: 9, height: 9 };
+    let mut worst = 0.0f32;
+    for (x, z) in [(1900.0, 2300.0), (1925.3, 2317.8), (812.6, 3120.1), (3010.0, 1544.4), (2222.2, 600.9)] {
+        let mut eye = looking_down(field, (x, z), EYE_HEIGHT, 0.0, 89.99, 1.0);
+        eye.near = 0.1;
+        // A 1920 × 1080 picture's ranges, the nearest any window uses.
+        let ranges = renderer.ranges(&eye, Detail::lod(1080));
+        assert_eq!(Quadtree::level_at(&ranges, EYE_HEIGHT * 2.0), 0);
+        assert_eq!(ranges.morph(0, EYE_HEIGHT * 2.0), 0.0, "the ground at the walker's feet never morphs");
+        let texture = draw_terrain(&world_height, target, NO_GROUND, (&eye, &eye), Detail::lod(1080));
+        let centre = read_floats(gpu, &texture).unwrap()[4 * 9 + 4];
+        let drawn = centre[1];
+        // Walking puts the eye over the field's bilinear height; the mesh
+        // draws two flat triangles per cell, which differ from the bilinear
+        // surface by at most a quarter of the cell's twist.
+        let (gx, gz) = (centre[0].floor() as i64, centre[2].floor() as i64);
+        let twist = (field.height(gx, gz) - field.height(gx + 1, gz) - field.height(gx, gz + 1) + field.height(gx + 1, gz + 1)).abs();
+        let off = (drawn - field.height_at(centre[0], centre[2])).abs();
+        eprintln!("({x}, {z}): drawn {drawn:.3} m, walked {:.3} m, twist {twist:.3} m", field.height_at(centre[0], centre[2]));
+        assert!(off <= twist / 4.0 + 1e-3, "{off} m off at ({x}, {z}), twist {twist}");
+        worst = worst.max(off);
+    }
+    eprintln!("the walker is at most {worst:.3} m off the drawn ground");
+}
+
