@@ -10,7 +10,7 @@ use common::glam::Vec3;
 use crate::chunks::Aabb;
 use crate::culling::Frustum;
 use crate::heightfield::CHUNK_QUADS;
-use crate::lod::{LodRanges, MORPH_START};
+use crate::lod::LodRanges;
 
 /// Quads along one side of a patch: a quarter of a node, so a node of
 /// level L is four patches of 32 × 32 cells, each 2^L samples wide.
@@ -70,23 +70,18 @@ impl Quadtree {
         &self.levels[level as usize][(z * side + x) as usize]
     }
 
-    // ANCHOR: crack_free
-    /// The nearest the first range may be for neighbouring patches never to
-    /// crack. A patch of level L lies in a node that reaches into the sphere
-    /// of radius r_L, so none of its points is further than r_L + d_L (d_L
-    /// the node's diagonal); there it must have morphed fully (it has: the
-    /// morph ends at r_L), and its coarser neighbour, of level L + 1, must
-    /// not have started to (its morph starts at MORPH_START · r_{L+1} =
-    /// 2 · MORPH_START · r_L). So r_L + d_L ≤ 2 · MORPH_START · r_L, for
-    /// every level below the root: r_0 ≥ d_L / 2^L / (2 · MORPH_START − 1).
-    pub fn crack_free_range(&self) -> f32 {
+    // ANCHOR: node_reach
+    /// D: the longest diagonal of any node below the root, a node of level
+    /// L counted as 1/2^L of its length. No two points of a node of level L
+    /// are further apart than 2^L · D, which is what the morph must allow
+    /// for (`LodRanges::morph_start`).
+    pub fn node_reach(&self) -> f32 {
         let top = self.top_level();
         (0..top)
             .flat_map(|level| self.levels[level as usize].iter().map(move |b| b.diagonal() / (1u32 << level) as f32))
             .fold(0.0, f32::max)
-            / (2.0 * MORPH_START - 1.0)
     }
-    // ANCHOR_END: crack_free
+    // ANCHOR_END: node_reach
 
     // ANCHOR: select
     /// The patches to draw from `eye`: every part of the map inside
@@ -138,11 +133,6 @@ impl Quadtree {
     pub fn level_at(ranges: &LodRanges, distance: f32) -> u32 {
         (0..=ranges.top_level).find(|&level| distance < ranges.range(level)).unwrap_or(ranges.top_level)
     }
-
-    /// Where level `level` starts to morph, for the book's figures.
-    pub fn morph_start(ranges: &LodRanges, level: u32) -> f32 {
-        MORPH_START * ranges.range(level)
-    }
 }
 
 #[cfg(test)]
@@ -181,7 +171,7 @@ mod tests {
     #[test]
     fn patches_cover_the_map_once_with_finer_ones_nearer() {
         let tree = flat(16);
-        let ranges = LodRanges { first: 100.0, top_level: tree.top_level() };
+        let ranges = LodRanges { first: 100.0, morph_start: 0.9, top_level: tree.top_level() };
         let eye = Vec3::new(100.0, 2.0, 100.0);
         let mut patches = Vec::new();
         tree.select(&everything(), eye, &ranges, &mut patches);
@@ -221,7 +211,7 @@ mod tests {
     #[test]
     fn full_detail_is_every_chunk_in_four_patches_of_level_0() {
         let tree = flat(4);
-        let ranges = LodRanges { first: f32::INFINITY, top_level: tree.top_level() };
+        let ranges = LodRanges { first: f32::INFINITY, morph_start: 0.9, top_level: tree.top_level() };
         let mut patches = Vec::new();
         tree.select(&everything(), Vec3::new(10.0, 5.0, 10.0), &ranges, &mut patches);
         assert_eq!(patches.len(), 4 * 16);
@@ -231,7 +221,7 @@ mod tests {
     #[test]
     fn what_the_frustum_misses_is_not_drawn() {
         let tree = flat(16);
-        let ranges = LodRanges { first: 100.0, top_level: tree.top_level() };
+        let ranges = LodRanges { first: 100.0, morph_start: 0.9, top_level: tree.top_level() };
         // At the west edge, looking east along z = 32 with a narrow view.
         let mut camera = Camera::looking_at(Vec3::new(-10.0, 0.5, 32.0), Vec3::new(900.0, 0.5, 32.0), 1.0);
         camera.fov_y = 0.05;
@@ -247,18 +237,17 @@ mod tests {
     }
 
     #[test]
-    fn the_crack_free_range_follows_the_largest_diagonal() {
+    fn the_node_reach_is_the_largest_diagonal_per_level() {
         let tree = flat(4);
         // Level 0's boxes are 64 × 1 × 64: diagonal 90.52 m; each level up
         // doubles x and z but not y, so level 0 is the largest per 2^L.
         let diagonal = (64.0f32 * 64.0 * 2.0 + 1.0).sqrt();
-        let expected = diagonal / (2.0 * MORPH_START - 1.0);
-        assert!((tree.crack_free_range() - expected).abs() < 1e-3, "{}", tree.crack_free_range());
+        assert!((tree.node_reach() - diagonal).abs() < 1e-3, "{}", tree.node_reach());
     }
 
     #[test]
     fn level_at_a_distance_worked_by_hand() {
-        let ranges = LodRanges { first: 200.0, top_level: 6 };
+        let ranges = LodRanges { first: 200.0, morph_start: 0.75, top_level: 6 };
         assert_eq!(Quadtree::level_at(&ranges, 150.0), 0);
         assert_eq!(Quadtree::level_at(&ranges, 250.0), 1);
         // 1000 m: past 200, 400 and 800, before 1600.

@@ -13,7 +13,7 @@ use common::{Camera, Gpu, ShaderError, ShaderFile, egui, wgpu};
 use crate::chunks::Aabb;
 use crate::culling::Frustum;
 use crate::heightfield::{CHUNK_QUADS, HeightField, TerrainSettings};
-use crate::lod::{Detail, LodRanges, MORPH_START};
+use crate::lod::{Detail, LodRanges};
 use crate::quadtree::Patch;
 use crate::terrain_data::TerrainData;
 use crate::terrain_maps::PATCH_LAYOUT;
@@ -249,12 +249,7 @@ impl TerrainRenderer {
     /// finely as `detail` asks.
     pub fn ranges(&self, camera: &Camera, detail: Detail) -> LodRanges {
         let spacing = self.data.field.settings.spacing;
-        LodRanges::new(detail, camera.fov_y, spacing, self.crack_free_range(), self.data.quadtree.top_level())
-    }
-
-    /// The nearest level 0's range may end without cracks between levels.
-    pub fn crack_free_range(&self) -> f32 {
-        self.data.quadtree.crack_free_range()
+        LodRanges::new(detail, camera.fov_y, spacing, self.data.quadtree.node_reach(), self.data.quadtree.top_level())
     }
 
     // ANCHOR: aim
@@ -299,7 +294,7 @@ impl TerrainRenderer {
             scale: [settings.spacing, settings.height, 0.0, 0.0],
             clip: clip.into(),
             // The shader multiplies: keep infinity out of it.
-            lod: [ranges.first.min(f32::MAX), MORPH_START, ranges.top_level as f32, 0.0],
+            lod: [ranges.first.min(f32::MAX), ranges.morph_start, ranges.top_level as f32, 0.0],
         };
         gpu.queue.write_buffer(&viewpoint.globals, 0, bytemuck::bytes_of(&globals));
     }
@@ -374,10 +369,11 @@ impl TerrainRenderer {
     pub fn stats(&self, viewpoint: &Viewpoint) -> String {
         let size = self.data.field.size;
         format!(
-            "{size}×{size} heights in {:.0} ms, normals, boxes and upload in {:.0} ms; {:.1} MB of maps; {}",
+            "{size}×{size} heights in {:.0} ms, normals, boxes and upload in {:.0} ms; {:.1} MB of maps; nodes at most {:.0} m across per level; {}",
             self.data.timings.0,
             self.data.timings.1,
             self.data.maps.gpu_bytes() as f64 / 1e6,
+            self.data.quadtree.node_reach(),
             self.drawn(viewpoint)
         )
     }

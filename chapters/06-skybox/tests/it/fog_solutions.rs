@@ -29,12 +29,22 @@ fn exercise_1_gradient_4_is_clear_to_380_m_and_a_wall_by_1_km() {
     for fog in [gentle, steep, FogSettings::HAZE] {
         assert!((fog.visibility(fog_starts(fog)) - 0.9).abs() < 1e-5);
     }
-    // The chunks each draws from the start camera, the far plane at the
-    // opaque distance (as the chapter sets it, at most 3 km).
+    // The terrain's triangles each draws from the start camera at 1280 ×
+    // 720, the far plane at the opaque distance (as the chapter sets it, at
+    // most 3 km), as chapter 03's quadtree chooses them.
     let chunks = |fog: FogSettings| {
         let camera = common::Camera { far: fog.far_plane(), ..start_camera(&data.field, 16.0 / 9.0) };
         let frustum = Frustum::from_view_projection(camera.view_projection());
-        data.mesh.bounds.iter().filter(|b| frustum.intersects(b)).count()
+        let ranges = terrain::LodRanges::new(
+            terrain::Detail::lod(720),
+            camera.fov_y,
+            data.field.settings.spacing,
+            data.quadtree.node_reach(),
+            data.quadtree.top_level(),
+        );
+        let mut patches = Vec::new();
+        data.quadtree.select(&frustum, camera.position, &ranges, &mut patches);
+        patches.len() * terrain::Patch::TRIANGLES as usize
     };
     let figures = [gentle, steep, FogSettings::HAZE].map(|fog| (fog_starts(fog), fog.opaque_distance(), chunks(fog)));
     eprintln!(
@@ -140,7 +150,7 @@ fn render_fogged(shader: &ShaderFile, fog: FogSettings) -> image::RgbaImage {
     let pipeline = TerrainRenderer::pipeline(gpu, shader, &layout, target.format).unwrap();
     let camera = common::Camera { far: fog.far_plane(), ..start_camera(terrain.field(), target.aspect()) };
     let mut viewpoint = terrain.viewpoint(&gpu.device);
-    terrain.aim(&gpu.queue, &mut viewpoint, &camera, terrain::Detail::lod(target.height), Sun::AFTERNOON, KEEP_ALL);
+    terrain.aim(gpu, &mut viewpoint, &camera, terrain::Detail::lod(target.height), Sun::AFTERNOON, KEEP_ALL);
     let offscreen = Offscreen::new(&gpu.device, target);
     let depth = common::texture::depth_view(&gpu.device, target.width, target.height);
     let mut encoder = gpu.device.create_command_encoder(&Default::default());

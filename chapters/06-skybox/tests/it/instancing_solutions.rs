@@ -3,13 +3,12 @@
 //! page includes them by anchor, and each test asserts the figure it states.
 
 use std::ops::Range;
-use std::sync::Arc;
 
 use common::book_figures::{median_ms, solution, thousands};
 use common::glam::{Mat4, Quat, Vec3};
 use common::headless::{OFFSCREEN_FORMAT, Offscreen, capture, read_texture};
 use common::wgpu::util::DeviceExt as _;
-use common::{Camera, Chapter, Gpu, MeshData, PassTimer, ShaderFile, Target, Vertex, image, shader, wgpu};
+use common::{Camera, Chapter, Gpu, MeshData, PassTimer, Target, Vertex, image, shader, wgpu};
 use fog::{FogBinding, FogSettings};
 use instancing::{
     InstancingChapter, MAX_ROCKS, RockGroup, RockInstance, RockRuns, plain_camera, rock_mesh, scatter, visible_runs,
@@ -17,7 +16,7 @@ use instancing::{
 use terrain::chunks::Aabb;
 use terrain::culling::Frustum;
 use terrain::heightfield::{HeightField, TerrainSettings};
-use terrain::{KEEP_ALL, SKY, Sun, TerrainData, TerrainMesh, TerrainRenderer};
+use terrain::{KEEP_ALL, SKY, Sun, TerrainData, TerrainRenderer};
 
 /// The median frame time, in ms, of `view` in chapter 05's bench table
 /// (`book/src/bench/instancing.md`, written by `cargo xtask bench instancing`).
@@ -197,7 +196,7 @@ impl RockLab {
         let meshes: Vec<_> = calls.iter().map(|(mesh, _)| mesh.upload(device, "rock")).collect();
         let mut viewpoint = self.terrain.viewpoint(device);
         self.terrain.aim(
-            &gpu.queue,
+            gpu,
             &mut viewpoint,
             &self.camera,
             terrain::Detail::lod(self.target.height),
@@ -299,149 +298,4 @@ fn exercise_4_far_rocks_with_a_coarse_mesh_save_three_fifths_of_the_vertices() {
     // The figures page 05's solution gives.
     assert_eq!((all.rocks, near.rocks, before, after), (276_571, 6_279, 16_594_260, 6_863_748));
     assert_eq!((near.runs.len(), far.runs.len()), (14, 776));
-}
-
-/// Exercise 5: chapter 03's visible chunks in one instanced call. All the
-/// instances of a call share one base vertex, so it can no longer say where
-/// a chunk's vertices start: the shader reads them from a storage buffer
-/// itself, at `chunk × 4225 + vertex_index` ("vertex pulling"), and a list
-/// of the chunks the frustum keeps turns the instance into a chunk.
-const ONE_CALL_TERRAIN: &str = "
-// ANCHOR: one_call_terrain
-enable clip_distances;
-#import terrain::{VertexOutput, FragmentInput, globals, terrain_vertex, ground_colour, lit}
-
-// A `TerrainVertex`: the height, then the normal's four signed bytes.
-struct PackedVertex {
-    height: f32,
-    normal: u32,
-};
-@group(1) @binding(0) var<storage, read> vertices: array<PackedVertex>;
-@group(1) @binding(1) var<storage, read> visible_chunks: array<u32>;
-
-@vertex
-fn vs_main(@builtin(vertex_index) vertex_index: u32, @builtin(instance_index) instance: u32) -> VertexOutput {
-    let chunk = visible_chunks[instance];
-    // What the base vertex did: skip the vertices of the chunks before it.
-    let side = globals.grid.y + 1u;
-    let vertex = vertices[chunk * side * side + vertex_index];
-    return terrain_vertex(vertex_index, chunk, vertex.height, unpack4x8snorm(vertex.normal));
-}
-
-@fragment
-fn fs_main(in: FragmentInput) -> @location(0) vec4<f32> {
-    let n = normalize(in.normal);
-    return vec4<f32>(lit(ground_colour(in.world_position.y, n), n), 1.0);
-}
-// ANCHOR_END: one_call_terrain
-";
-
-#[test]
-fn exercise_5_every_visible_chunk_in_one_call_draws_the_same_terrain() {
-    // A terrain of its own, 16 × 16 chunks, made here (not through the
-    // device's cache, which keeps one terrain: the default one).
-    let gpu = crate::plain_gpu();
-    let settings = TerrainSettings { chunks_per_side: 16, ..Default::default() };
-    let field = HeightField::generate(settings);
-    let (vertices, bounds) = TerrainMesh::chunk_rows(&field, 0..16);
-    let mesh = TerrainMesh::upload(&gpu.device, 16, &vertices, bounds);
-    let terrain = TerrainRenderer::new(gpu, Arc::new(TerrainData { field, mesh, timings: (0.0, 0.0) }));
-    let target = Target { format: OFFSCREEN_FORMAT, width: 320, height: 180 };
-    let camera = terrain::start_camera(terrain.field(), target.aspect());
-    let frustum = Frustum::from_view_projection(camera.view_projection());
-    let visible: Vec<u32> = (0..terrain.mesh().bounds.len() as u32)
-        .filter(|&c| frustum.intersects(&terrain.mesh().bounds[c as usize]))
-        .collect();
-
-    // The storage buffers, their layout, and the pipeline.
-    let device = &gpu.device;
-    let storage = |contents: &[u8]| {
-        device.create_buffer_init(&wgpu::util::BufferInitDescriptor {
-            label: None,
-            contents,
-            usage: wgpu::BufferUsages::STORAGE,
-        })
-    };
-    let (vertex_storage, visible_storage) =
-        (storage(bytemuck::cast_slice(&vertices)), storage(bytemuck::cast_slice(&visible)));
-    let group_layout = device.create_bind_group_layout(&wgpu::BindGroupLayoutDescriptor {
-        label: None,
-        entries: &[
-            common::pipeline::storage_entry(0, wgpu::ShaderStages::VERTEX),
-            common::pipeline::storage_entry(1, wgpu::ShaderStages::VERTEX),
-        ],
-    });
-    let group = device.create_bind_group(&wgpu::BindGroupDescriptor {
-        label: None,
-        layout: &group_layout,
-        entries: &[
-            wgpu::BindGroupEntry { binding: 0, resource: vertex_storage.as_entire_binding() },
-            wgpu::BindGroupEntry { binding: 1, resource: visible_storage.as_entire_binding() },
-        ],
-    });
-    let pipeline_layout = |groups: &[Option<&wgpu::BindGroupLayout>]| {
-        device.create_pipeline_layout(&wgpu::PipelineLayoutDescriptor {
-            label: None,
-            bind_group_layouts: groups,
-            immediate_size: 0,
-        })
-    };
-    let one_call_layout = pipeline_layout(&[Some(&terrain.bind_group_layout), Some(&group_layout)]);
-    let one_call_shader = ShaderFile {
-        path: "terrain/one_call.wgsl",
-        embedded: ONE_CALL_TERRAIN,
-        imports: &[shader!("terrain/terrain.wgsl")],
-    };
-    let module = one_call_shader.module(gpu).unwrap();
-    let one_call = common::pipeline::mesh_pipeline(
-        device,
-        &one_call_layout,
-        &module,
-        ("vs_main", "fs_main"),
-        &[],
-        target.format.into(),
-    );
-    let per_chunk_layout = pipeline_layout(&[Some(&terrain.bind_group_layout)]);
-    let per_chunk =
-        TerrainRenderer::pipeline(gpu, &shader!("terrain/terrain.wgsl"), &per_chunk_layout, target.format).unwrap();
-
-    // The same picture both ways.
-    let mut viewpoint = terrain.viewpoint(device);
-    terrain.aim(&gpu.queue, &mut viewpoint, &camera, terrain::Detail::lod(target.height), Sun::AFTERNOON, KEEP_ALL);
-    let render = |one_call_instead: bool| {
-        let offscreen = Offscreen::new(device, target);
-        let depth = common::texture::depth_view(device, target.width, target.height);
-        let mut encoder = device.create_command_encoder(&Default::default());
-        let calls = {
-            let mut pass =
-                common::pipeline::scene_pass(&mut encoder, &PassTimer::off(), "terrain", &offscreen.view, SKY, &depth);
-            if one_call_instead {
-                pass.set_pipeline(&one_call);
-                terrain.bind(&mut pass, &viewpoint);
-                pass.set_bind_group(1, &group, &[]);
-                pass.set_index_buffer(terrain.mesh().index_buffer.slice(..), wgpu::IndexFormat::Uint16);
-                pass.draw_indexed(0..terrain.mesh().index_count, 0, 0..visible.len() as u32);
-                1
-            } else {
-                pass.set_pipeline(&per_chunk);
-                terrain.draw(&mut pass, &viewpoint)
-            }
-        };
-        gpu.queue.submit([encoder.finish()]);
-        (read_texture(gpu, &offscreen.texture).unwrap(), calls)
-    };
-    let ((chunk_by_chunk, calls), (all_at_once, one)) = (render(false), render(true));
-    eprintln!("{calls} chunks in {calls} calls, and in {one}");
-    assert_eq!(calls, visible.len());
-    assert_eq!(one, 1);
-    // The same picture, but for a handful of pixels a step of one byte
-    // apart: two shader programs, compiled differently, round differently.
-    let steps: Vec<u8> = chunk_by_chunk
-        .pixels()
-        .zip(all_at_once.pixels())
-        .map(|(a, b)| (0..3).map(|c| a[c].abs_diff(b[c])).max().unwrap())
-        .filter(|&step| step > 0)
-        .collect();
-    eprintln!("{} of {} pixels differ, by at most {}", steps.len(), 320 * 180, steps.iter().max().unwrap_or(&0));
-    assert!(steps.len() <= 10 && steps.iter().all(|&step| step == 1), "{steps:?}");
 }

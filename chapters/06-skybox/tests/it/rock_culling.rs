@@ -29,7 +29,7 @@ fn the_default_view_draws_the_rocks_of_the_chunks_in_view_and_says_how_many() {
     // under it; a chunk's rocks are drawn when its box, grown by the most a
     // rock can reach from where it stands, is in the frustum.
     let field = chapter.plain.terrain.field();
-    let bounds = &chapter.plain.terrain.mesh().bounds;
+    let bounds = chapter.plain.terrain.chunk_bounds();
     let rocks = scatter(field, rocks_on_map(&field.settings), 5);
     let radius = rock_mesh(5).vertices.iter().map(|v| Vec3::from(v.position).length()).fold(0.0, f32::max);
     let reach = radius * rocks.iter().flat_map(|r| r.scale).fold(0.0, f32::max);
