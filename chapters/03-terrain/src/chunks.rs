@@ -63,7 +63,8 @@ mod tests {
             }
         }
         // The box is tight: its top and bottom are samples of the chunk.
-        let heights: Vec<f32> = (0..=64).flat_map(|z| (64..=128).map(move |x| (x, z))).map(|(x, z)| field.height(x, z)).collect();
+        let heights: Vec<f32> =
+            (0..=64).flat_map(|z| (64..=128).map(move |x| (x, z))).map(|(x, z)| field.height(x, z)).collect();
         assert!(heights.contains(&bounds.min.y) && heights.contains(&bounds.max.y));
     }
 

@@ -34,7 +34,7 @@ pub mod demo;
 pub use cameras::start_camera;
 pub use demo::{CameraPreset, Settings, TerrainChapter, VIEW_TABLE};
 pub use lod::{Detail, LodRanges};
-pub use terrain_data::TerrainData;
 pub use quadtree::{Patch, Quadtree};
+pub use terrain_data::TerrainData;
 pub use terrain_maps::{PATCH_LAYOUT, TerrainMaps};
 pub use terrain_renderer::{KEEP_ALL, SKY, Shading, Sun, TerrainRenderer, Viewpoint, gpu_needs};

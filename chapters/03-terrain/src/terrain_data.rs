@@ -5,9 +5,9 @@
 
 use std::sync::Arc;
 
+use common::Gpu;
 use common::preparation::{Preparation, Step};
 use common::timing::measure;
-use common::Gpu;
 
 use crate::chunks::{Aabb, chunk_bounds};
 use crate::heightfield::{CHUNK_QUADS, HeightField, HeightRows, TerrainSettings};
@@ -112,7 +112,7 @@ impl TerrainBuild {
                 if rows.done() < rows.size {
                     return Self::Heights { rows, ms: ms + took };
                 }
-                let normals = Vec::with_capacity((rows.size * rows.size) as usize);
+                let normals = Vec::with_capacity(rows.size * rows.size);
                 Self::Maps { field: rows.finish(), normals, bounds: Vec::new(), timings: (ms + took, 0.0) }
             }
             Self::Maps { field, mut normals, mut bounds, mut timings } => {
@@ -125,7 +125,11 @@ impl TerrainBuild {
                     let end = if chunk_rows.end == n { field.size } else { chunk_rows.end * CHUNK_QUADS };
                     let ((), ms) = measure(|| {
                         normals.extend(normal_rows(&field, first * CHUNK_QUADS..end));
-                        bounds.extend(chunk_rows.flat_map(|cz| (0..n).map(move |cx| (cx, cz))).map(|(cx, cz)| chunk_bounds(&field, cx, cz)));
+                        bounds.extend(
+                            chunk_rows
+                                .flat_map(|cz| (0..n).map(move |cx| (cx, cz)))
+                                .map(|(cx, cz)| chunk_bounds(&field, cx, cz)),
+                        );
                     });
                     timings.1 += ms;
                     return Self::Maps { field, normals, bounds, timings };

@@ -150,11 +150,7 @@ impl Chapter for FogChapter {
     fn ui(&mut self, ui: &mut egui::Ui) {
         ui.add(egui::Slider::new(&mut self.fog.density, 0.0..=0.01).logarithmic(true).text("density (per m)"));
         ui.add(egui::Slider::new(&mut self.fog.gradient, 0.5..=4.0).text("gradient"));
-        ui.label(format!(
-            "opaque beyond {:.0} m; far plane {:.0} m",
-            self.fog.opaque_distance(),
-            self.camera.far,
-        ));
+        ui.label(format!("opaque beyond {:.0} m; far plane {:.0} m", self.fog.opaque_distance(), self.camera.far,));
         ui.label(self.terrain.drawn(&self.viewpoint));
         ui.collapsing("terrain", |ui| {
             self.regenerate_requested |= self.terrain.settings_ui(ui);

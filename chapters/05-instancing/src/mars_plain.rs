@@ -273,15 +273,7 @@ impl MarsPlain {
 
     /// Aims `viewpoint` from `camera`, for a picture drawn as finely as
     /// `detail` asks, lit by `sun`, keeping what `clip` keeps.
-    pub fn aim(
-        &self,
-        gpu: &Gpu,
-        viewpoint: &mut Viewpoint,
-        camera: &Camera,
-        detail: Detail,
-        sun: Sun,
-        clip: Vec4,
-    ) {
+    pub fn aim(&self, gpu: &Gpu, viewpoint: &mut Viewpoint, camera: &Camera, detail: Detail, sun: Sun, clip: Vec4) {
         self.terrain.aim(gpu, viewpoint, camera, detail, sun, clip);
     }
 

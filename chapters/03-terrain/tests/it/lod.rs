@@ -47,7 +47,9 @@ fn straddling_cameras(field: &HeightField, aspect: f32) -> Vec<Camera> {
     let mut cameras = Vec::new();
     // The picture's top edge is 30° above its middle: pitched down by more
     // than 40°, it sees no sky.
-    for (i, (above, pitch)) in [(30.0, 45.0), (120.0, 50.0), (250.0, 60.0), (500.0, 70.0), (900.0, 89.0)].into_iter().enumerate() {
+    for (i, (above, pitch)) in
+        [(30.0, 45.0), (120.0, 50.0), (250.0, 60.0), (500.0, 70.0), (900.0, 89.0)].into_iter().enumerate()
+    {
         for yaw in [0.0, 70.0, 200.0] {
             let at = (1200.0 + 400.0 * i as f32, 2600.0 - 250.0 * i as f32);
             cameras.push(looking_down(field, at, above, yaw, pitch, aspect));
@@ -63,9 +65,15 @@ fn no_hole_opens_between_levels_and_one_does_without_the_morph() {
     let (mut without_morph, mut cameras_with_holes) = (0, 0);
     for camera in straddling_cameras(&data.field, target.aspect()) {
         let detail = Detail::lod(target.height);
-        let picture = read_texture(default_terrain().0, &draw_terrain(&shaded(), target, NO_GROUND, (&camera, &camera), detail)).unwrap();
+        let picture =
+            read_texture(default_terrain().0, &draw_terrain(&shaded(), target, NO_GROUND, (&camera, &camera), detail))
+                .unwrap();
         assert_eq!(holes(&picture), 0, "a hole seen from {camera:?}");
-        let broken = read_texture(default_terrain().0, &draw_terrain(&unmorphed(), target, NO_GROUND, (&camera, &camera), detail)).unwrap();
+        let broken = read_texture(
+            default_terrain().0,
+            &draw_terrain(&unmorphed(), target, NO_GROUND, (&camera, &camera), detail),
+        )
+        .unwrap();
         without_morph += holes(&broken);
         cameras_with_holes += usize::from(holes(&broken) > 0);
     }
@@ -78,7 +86,11 @@ fn a_large_picture_has_no_hole_either() {
     let (_, data) = default_terrain();
     let target = Target { format: OFFSCREEN_FORMAT, width: 1920, height: 1080 };
     let camera = looking_down(&data.field, (2000.0, 2200.0), 250.0, 30.0, 50.0, target.aspect());
-    let picture = read_texture(default_terrain().0, &draw_terrain(&shaded(), target, NO_GROUND, (&camera, &camera), Detail::lod(1080))).unwrap();
+    let picture = read_texture(
+        default_terrain().0,
+        &draw_terrain(&shaded(), target, NO_GROUND, (&camera, &camera), Detail::lod(1080)),
+    )
+    .unwrap();
     assert_eq!(holes(&picture), 0);
 }
 
@@ -103,7 +115,10 @@ fn walking_across_a_boundary_changes_no_pixel_much() {
         for step in 0..80 {
             let mut eye = camera;
             eye.position -= camera.forward() * (80 - step) as f32;
-            pictures.push(read_texture(default_terrain().0, &draw_terrain(shader, target, NO_GROUND, (&camera, &eye), detail)).unwrap());
+            pictures.push(
+                read_texture(default_terrain().0, &draw_terrain(shader, target, NO_GROUND, (&camera, &eye), detail))
+                    .unwrap(),
+            );
         }
         pictures.windows(2).map(|pair| largest_change(&pair[0], &pair[1])).max().unwrap_or(0)
     };
@@ -123,8 +138,10 @@ fn the_walker_stands_on_the_ground_drawn() {
     let renderer = TerrainRenderer::new(gpu, data.clone());
     // The drawn ground's height under the eye, from a picture looking
     // straight down, each pixel showing its world position's height.
-    let world_height =
-        edited_terrain_shader("            return vec4<f32>(shaded, 1.0);", "            return vec4<f32>(in.world_position, 1.0);");
+    let world_height = edited_terrain_shader(
+        "            return vec4<f32>(shaded, 1.0);",
+        "            return vec4<f32>(in.world_position, 1.0);",
+    );
     let target = Target { format: wgpu::TextureFormat::Rgba32Float, width: 9, height: 9 };
     let mut worst = 0.0f32;
     for (x, z) in [(1900.0, 2300.0), (1925.3, 2317.8), (812.6, 3120.1), (3010.0, 1544.4), (2222.2, 600.9)] {
@@ -141,12 +158,16 @@ fn the_walker_stands_on_the_ground_drawn() {
         // draws two flat triangles per cell, which differ from the bilinear
         // surface by at most a quarter of the cell's twist.
         let (gx, gz) = (centre[0].floor() as i64, centre[2].floor() as i64);
-        let twist = (field.height(gx, gz) - field.height(gx + 1, gz) - field.height(gx, gz + 1) + field.height(gx + 1, gz + 1)).abs();
+        let twist = (field.height(gx, gz) - field.height(gx + 1, gz) - field.height(gx, gz + 1)
+            + field.height(gx + 1, gz + 1))
+        .abs();
         let off = (drawn - field.height_at(centre[0], centre[2])).abs();
-        eprintln!("({x}, {z}): drawn {drawn:.3} m, walked {:.3} m, twist {twist:.3} m", field.height_at(centre[0], centre[2]));
+        eprintln!(
+            "({x}, {z}): drawn {drawn:.3} m, walked {:.3} m, twist {twist:.3} m",
+            field.height_at(centre[0], centre[2])
+        );
         assert!(off <= twist / 4.0 + 1e-3, "{off} m off at ({x}, {z}), twist {twist}");
         worst = worst.max(off);
     }
     eprintln!("the walker is at most {worst:.3} m off the drawn ground");
 }
-
