@@ -171,3 +171,33 @@ fn the_walker_stands_on_the_ground_drawn() {
     }
     eprintln!("the walker is at most {worst:.3} m off the drawn ground");
 }
+
+#[test]
+fn at_the_edge_under_the_ground_and_at_one_pixel_nothing_breaks() {
+    let (gpu, data) = default_terrain();
+    let field = &data.field;
+    // Straight down over the map's west edge, facing north: the edge runs
+    // down the middle of the picture, the map to its right (east, +x).
+    let target = Target { format: OFFSCREEN_FORMAT, width: 400, height: 400 };
+    let mut camera = looking_down(field, (0.0, 2000.0), 300.0, 0.0, 89.99, 1.0);
+    camera.position.x = 0.0;
+    let picture =
+        read_texture(gpu, &draw_terrain(&shaded(), target, NO_GROUND, (&camera, &camera), Detail::lod(400))).unwrap();
+    let east_holes =
+        picture.enumerate_pixels().filter(|(x, _, p)| *x > 202 && p[0] == 0 && p[1] == 0 && p[2] == 255).count();
+    let west_ground = picture.enumerate_pixels().filter(|(x, _, p)| *x < 198 && p[2] != 255).count();
+    assert_eq!((east_holes, west_ground), (0, 0), "the map is drawn east of its edge, and only there");
+    // Under the ground, looking up: the ground's underside is culled, so
+    // nothing but the clear colour, and no panic.
+    let mut under = looking_down(field, (2000.0, 2000.0), -50.0, 0.0, -60.0, 1.0);
+    under.far = 3000.0;
+    let picture =
+        read_texture(gpu, &draw_terrain(&shaded(), target, NO_GROUND, (&under, &under), Detail::lod(400))).unwrap();
+    assert_eq!(holes(&picture), 400 * 400);
+    // One pixel.
+    let one = Target { format: OFFSCREEN_FORMAT, width: 1, height: 1 };
+    let camera = looking_down(field, (2000.0, 2000.0), 100.0, 0.0, 60.0, 1.0);
+    let picture =
+        read_texture(gpu, &draw_terrain(&shaded(), one, NO_GROUND, (&camera, &camera), Detail::lod(1))).unwrap();
+    assert_eq!(holes(&picture), 0);
+}
