@@ -29,6 +29,8 @@ pub fn all() -> Vec<(&'static str, String)> {
         ("depth-precision.svg", camera::depth_precision()),
         ("fbm-octaves.svg", terrain::fbm_octaves()),
         ("frustum-culling.svg", terrain::frustum_culling()),
+        ("lod-quadtree.svg", terrain::lod_quadtree()),
+        ("lod-morph.svg", terrain::lod_morph()),
         ("fog-curve.svg", fog::fog_curve()),
         ("instancing-buffers.svg", instancing::instancing_buffers()),
         ("sun-path.svg", skybox::sun_path()),
