@@ -187,7 +187,7 @@ fn chunk_colour(chunk: u32) -> vec3<f32> {
 // A colour per level of detail, turning into the next level's as the
 // vertices morph: the `lod-levels` and `quadtree` views.
 fn level_colour(level: u32, morph: f32) -> vec3<f32> {
-    var palette = array<vec3<f32>, 8>(
+    let palette = array<vec3<f32>, 8>(
         vec3<f32>(0.90, 0.25, 0.20), vec3<f32>(0.95, 0.65, 0.15), vec3<f32>(0.85, 0.85, 0.25),
         vec3<f32>(0.35, 0.75, 0.30), vec3<f32>(0.25, 0.65, 0.80), vec3<f32>(0.35, 0.40, 0.85),
         vec3<f32>(0.65, 0.35, 0.80), vec3<f32>(0.80, 0.80, 0.80),

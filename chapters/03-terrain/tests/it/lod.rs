@@ -201,3 +201,45 @@ fn at_the_edge_under_the_ground_and_at_one_pixel_nothing_breaks() {
         read_texture(gpu, &draw_terrain(&shaded(), one, NO_GROUND, (&camera, &camera), Detail::lod(1))).unwrap();
     assert_eq!(holes(&picture), 0);
 }
+
+#[test]
+fn the_page_quotes_the_levels_as_they_are() {
+    let (gpu, data) = default_terrain();
+    let page = std::fs::read_to_string(concat!(env!("CARGO_MANIFEST_DIR"), "/../../book/src/03-terrain.md")).unwrap();
+    // Compared with lines joined: a figure may fall across a line break.
+    let flat = |text: &str| text.split_whitespace().collect::<Vec<_>>().join(" ");
+    let page = flat(&page);
+    let says = |text: &str| assert!(page.contains(&flat(text)), "page 03 should say `{text}`");
+    let renderer = TerrainRenderer::new(gpu, data.clone());
+    let reach = data.quadtree.node_reach();
+    says(&format!("On the default map D is {reach:.0} m"));
+    says(&format!("r_0 is never less than {:.0} m", terrain::LodRanges::nearest_first(reach)));
+    let camera = terrain::start_camera(&data.field, 16.0 / 9.0);
+    let from_pixels = |height: u32| height as f32 / (Detail::CELL_PIXELS * 2.0 * (camera.fov_y / 2.0).tan());
+    says(&format!(
+        "at 1280 × 720 the 4-pixel rule alone would give {:.0} m, at 800 × 450 only {:.0} m",
+        from_pixels(720),
+        from_pixels(450)
+    ));
+    says(&format!("r_0: {:.0} m at 1920 × 1080", from_pixels(1080)));
+    // The maps, and the vertex buffer they replace.
+    says(&format!("{:.1} MB for the whole world", data.maps.gpu_bytes() as f64 / 1e6 - 0.0125));
+    let chunks = data.chunk_bounds.len() as f64;
+    says(&format!("took {:.0} MB", chunks * 65.0 * 65.0 * 8.0 / 1e6));
+    // The default view at 1280 × 720, with levels and at full detail.
+    let mut viewpoint = renderer.viewpoint(&gpu.device);
+    let aim = |viewpoint: &mut terrain::Viewpoint, detail| {
+        renderer.aim(gpu, viewpoint, &camera, detail, terrain::Sun::AFTERNOON, terrain::KEEP_ALL);
+        viewpoint.triangles()
+    };
+    let (lod, full) = (aim(&mut viewpoint, Detail::lod(720)), aim(&mut viewpoint, Detail::full(720)));
+    let thousands = |n: u64| common::book_figures::thousands(n as f64);
+    says(&format!("{} patches, {} triangles in the default view at 1280 × 720", lod / 2048, thousands(lod)));
+    says(&format!(
+        "{} chunks, {} triangles: {:.0} times as many",
+        thousands(full / 8192),
+        thousands(full),
+        full as f64 / lod as f64
+    ));
+    says(&format!("for {:.0} times the triangles", full as f64 / lod as f64));
+}
