@@ -164,7 +164,7 @@ fn lit(colour: vec3<f32>, normal: vec3<f32>) -> vec3<f32> {
 }
 
 // Lines along the drawn cells and their diagonals, a pixel wide at any
-// distance, fading out where cells get smaller than 4 pixels (denser lines
+// distance, fading out where cells get smaller than 2.5 pixels (denser lines
 // would only paint the ground pale).
 fn wire(cell: vec2<f32>) -> f32 {
     let width = fwidth(cell);
@@ -172,7 +172,7 @@ fn wire(cell: vec2<f32>) -> f32 {
     let diagonal = cell.x + cell.y;
     let to_diagonal = abs(fract(diagonal - 0.5) - 0.5) / fwidth(diagonal);
     let nearest = min(min(to_line.x, to_line.y), to_diagonal);
-    return (1.0 - clamp(nearest, 0.0, 1.0)) * (1.0 - smoothstep(0.25, 0.5, max(width.x, width.y)));
+    return (1.0 - clamp(nearest, 0.0, 1.0)) * (1.0 - smoothstep(0.4, 0.7, max(width.x, width.y)));
 }
 
 // A colour for each chunk, from a hash of its index.
