@@ -32,7 +32,7 @@ fn exercise_1_gradient_4_is_clear_to_380_m_and_a_wall_by_1_km() {
     // The terrain's triangles each draws from the start camera at 1280 ×
     // 720, the far plane at the opaque distance (as the chapter sets it, at
     // most 3 km), as chapter 03's quadtree chooses them.
-    let chunks = |fog: FogSettings| {
+    let triangles = |fog: FogSettings| {
         let camera = common::Camera { far: fog.far_plane(), ..start_camera(&data.field, 16.0 / 9.0) };
         let frustum = Frustum::from_view_projection(camera.view_projection());
         let ranges = terrain::LodRanges::new(
@@ -46,20 +46,31 @@ fn exercise_1_gradient_4_is_clear_to_380_m_and_a_wall_by_1_km() {
         data.quadtree.select(&frustum, camera.position, &ranges, &mut patches);
         patches.len() * terrain::Patch::TRIANGLES as usize
     };
-    let figures = [gentle, steep, FogSettings::HAZE].map(|fog| (fog_starts(fog), fog.opaque_distance(), chunks(fog)));
+    let figures =
+        [gentle, steep, FogSettings::HAZE].map(|fog| (fog_starts(fog), fog.opaque_distance(), triangles(fog)));
     eprintln!(
-        "density 0.0015: (starts, opaque, chunks drawn) at gradient 1 {:?}, at gradient 4 {:?}",
-        figures[0], figures[1]
+        "density 0.0015: (starts, opaque, triangles drawn) at gradient 1 {:?}, at gradient 4 {:?}, haze {:?}",
+        figures[0], figures[1], figures[2]
     );
     // Gradient 1: a tenth gone at 70 m already, opaque only at 3.7 km.
     assert!((figures[0].0 - 70.2).abs() < 0.1 && (figures[0].1 - 3694.0).abs() < 1.0);
     // Gradient 4: clear to 380 m, then a wall: opaque at 1,023 m.
     assert!((figures[1].0 - 379.8).abs() < 0.1 && (figures[1].1 - 1023.0).abs() < 1.0);
-    // The far plane comes in from 3 km (the limit) to 1,023 m: 1,219
-    // chunks drawn become 316.
-    assert_eq!((figures[0].2, figures[1].2), (1219, 316));
-    // The haze, gradient 1.5, between the two: 149 m, 2,088 m, 1,051 chunks.
-    assert!((figures[2].0 - 148.7).abs() < 0.1 && (figures[2].1 - 2088.0).abs() < 1.0 && figures[2].2 == 1051);
+    // The far plane comes in from 3 km (the limit) to 1,023 m, and the
+    // terrain's triangles from 284,672 to 245,760: with levels of detail
+    // the distant land was cheap already. (Measured: the counts come from
+    // chapter 03's quadtree, and the test detects any change.)
+    assert_eq!((figures[0].2, figures[1].2), (284_672, 245_760));
+    // At full detail every chunk in the frustum was drawn: the wall took
+    // three quarters of them away, 1,219 becoming 316.
+    let chunks = |fog: FogSettings| {
+        let camera = common::Camera { far: fog.far_plane(), ..start_camera(&data.field, 16.0 / 9.0) };
+        let frustum = Frustum::from_view_projection(camera.view_projection());
+        data.chunk_bounds.iter().filter(|b| frustum.intersects(b)).count()
+    };
+    assert_eq!((chunks(gentle), chunks(steep)), (1219, 316));
+    // The haze, gradient 1.5, between the two: 149 m, 2,088 m, 282,624 triangles.
+    assert!((figures[2].0 - 148.7).abs() < 0.1 && (figures[2].1 - 2088.0).abs() < 1.0 && figures[2].2 == 282_624);
 }
 
 /// Heights: the scale of the height fog, metres.
