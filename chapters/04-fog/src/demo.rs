@@ -25,16 +25,44 @@ impl CameraPreset {
     }
 }
 
-/// Every view, with the fog it applies.
-pub const VIEW_TABLE: [ViewRow<FogSettings, CameraPreset>; 3] = [
-    ViewRow::mode("default", "the terrain in a light haze, fading into the sky", FogSettings::HAZE),
-    ViewRow::mode("no-fog", "the same view without fog: a hard edge where the world ends", FogSettings::NONE),
-    ViewRow::mode("dense", "a dust storm: thick fog, and a far plane pulled in to 588 m", FogSettings::DUST_STORM),
+/// What a view decides: the fog, and whether the terrain is drawn with
+/// chapter 03's levels of detail or every chunk at full detail.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Settings {
+    pub fog: FogSettings,
+    pub full_detail: bool,
+}
+
+/// Every view, with the settings it applies.
+pub const VIEW_TABLE: [ViewRow<Settings, CameraPreset>; 4] = [
+    ViewRow::mode(
+        "default",
+        "the terrain in a light haze, fading into the sky",
+        Settings { fog: FogSettings::HAZE, full_detail: false },
+    ),
+    ViewRow::mode(
+        "no-fog",
+        "the same view without fog: a hard edge where the world ends",
+        Settings { fog: FogSettings::NONE, full_detail: false },
+    ),
+    ViewRow::mode(
+        "dense",
+        "a dust storm: thick fog, and a far plane pulled in to 588 m",
+        Settings { fog: FogSettings::DUST_STORM, full_detail: false },
+    ),
+    ViewRow::mode(
+        "full-detail",
+        "the default view with every chunk in view at full detail: the same picture",
+        Settings { fog: FogSettings::HAZE, full_detail: true },
+    )
+    .same_picture_as("default"),
 ];
 
 pub struct FogChapter {
     pub terrain: TerrainRenderer,
     pub fog: FogSettings,
+    /// Every chunk in view at full detail, rather than chapter 03's levels.
+    pub full_detail: bool,
     pub camera: Camera,
     pub controller: FlyController,
     /// Flying (the default) or walking on the ground (G, `--walk`).
@@ -85,6 +113,7 @@ impl Chapter for FogChapter {
             controller: FlyController { speed: 40.0, ..Default::default() },
             movement: Movement::Fly,
             fog: FogSettings::HAZE,
+            full_detail: false,
             viewpoint: terrain.viewpoint(device),
             terrain,
             fog_binding,
@@ -107,7 +136,7 @@ impl Chapter for FogChapter {
     }
 
     fn apply_view(&mut self, view: usize) {
-        self.fog = VIEW_TABLE[view].settings;
+        Settings { fog: self.fog, full_detail: self.full_detail } = VIEW_TABLE[view].settings;
     }
 
     fn reset_camera(&mut self, view: usize) {
@@ -135,7 +164,8 @@ impl Chapter for FogChapter {
         // Nothing past the opaque distance can be seen: stop drawing there.
         self.camera.far = self.fog.far_plane();
         self.fog_binding.write(&gpu.queue, self.fog);
-        let detail = Detail::lod(self.target.height);
+        let height = self.target.height;
+        let detail = if self.full_detail { Detail::full(height) } else { Detail::lod(height) };
         self.terrain.aim(gpu, &mut self.viewpoint, &self.camera, detail, Sun::AFTERNOON, KEEP_ALL);
 
         // Clear to the fog colour: where there is no ground, the fog's

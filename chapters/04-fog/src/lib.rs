@@ -12,6 +12,6 @@ pub mod fog_binding;
 // The chapter itself: its views and frame.
 pub mod demo;
 
-pub use demo::{CameraPreset, FogChapter, VIEW_TABLE};
+pub use demo::{CameraPreset, FogChapter, Settings, VIEW_TABLE};
 pub use fog_binding::{FogBinding, fog_shader};
 pub use fog_settings::{FogSettings, MAX_FAR};
