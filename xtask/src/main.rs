@@ -23,6 +23,7 @@ use anyhow::{Context as _, bail, ensure};
 mod assets;
 mod bench_tables;
 mod book;
+mod figures;
 mod prerequisites;
 mod web;
 mod window_test;
