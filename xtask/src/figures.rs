@@ -17,7 +17,8 @@
 //!   decimal), `,.0` (whole, with thousands separators).
 //! - `{{#check EXPRESSION OP EXPRESSION}}`, OP one of `<`, `<=`, `>`, `>=`:
 //!   nothing, or a failure.
-//! - An expression is numbers, sources, `+ - * /` and parentheses.
+//! - An expression is numbers, sources, `+ - * /`, parentheses, and
+//!   `min(…, …)` and `max(…, …)` (for "least in", "most in").
 //! - A source is `[FILE | …]`, FILE relative to the page (as for
 //!   `{{#include}}`), then one of
 //!   - `ROW… | COLUMN`: a cell of a markdown table: the row whose first cells
@@ -27,7 +28,8 @@
 //!     number, or, with a last part holding `#`, the number at the `#`
 //!     (`# FPS` in `12.83 ms, 77.9 FPS`);
 //!   - `PATTERN`: the number at `#` in the first line that matches, `*`
-//!     matching anything (`- default: * far plane # m`);
+//!     matching anything (`- default: * far plane # m`), `^` and `$` holding
+//!     it to the line's start and end;
 //!   - `NAME`, in a `.rs` or `.wgsl` file: the constant `const NAME: … = N;`.
 //!
 //!   `FILE > TEXT` looks only below the first line holding TEXT (a file's
@@ -265,8 +267,17 @@ fn is_identifier(text: &str) -> bool {
 /// An expression, with what it was read from (for the messages).
 enum Expression {
     Number(f64),
-    Source { spec: String, value: f64, text: String },
+    Source {
+        spec: String,
+        value: f64,
+        text: String,
+    },
     Operation(Box<Expression>, char, Box<Expression>),
+    /// `min(…)` (`least`) or `max(…)`.
+    Extreme {
+        least: bool,
+        of: Vec<Expression>,
+    },
 }
 
 impl Expression {
@@ -279,6 +290,10 @@ impl Expression {
                 '*' => a.value() * b.value(),
                 _ => a.value() / b.value(),
             },
+            Self::Extreme { least, of } => {
+                let values = of.iter().map(Expression::value);
+                if *least { values.fold(f64::INFINITY, f64::min) } else { values.fold(f64::NEG_INFINITY, f64::max) }
+            }
         }
     }
 
@@ -298,6 +313,7 @@ impl Expression {
                 a.sources(out);
                 b.sources(out);
             }
+            Self::Extreme { of, .. } => of.iter().for_each(|e| e.sources(out)),
         }
     }
 }
@@ -360,6 +376,18 @@ impl Parser<'_> {
                 let (value, text) = self.figures.source(self.folder, &spec)?;
                 Ok(Expression::Source { spec, value, text })
             }
+            Some('m') if ["min(", "max("].iter().any(|f| self.text[self.at..].starts_with(f)) => {
+                let least = self.text[self.at..].starts_with("min(");
+                self.at += 4;
+                let mut of = vec![self.sum()?];
+                while self.peek() == Some(',') {
+                    self.at += 1;
+                    of.push(self.sum()?);
+                }
+                ensure!(self.peek() == Some(')'), "a `min(` or `max(` without its `)` in `{}`", self.text);
+                self.at += 1;
+                Ok(Expression::Extreme { least, of })
+            }
             _ => {
                 let rest = &self.text[self.at..];
                 let number = number_at(rest).with_context(|| {
@@ -407,12 +435,16 @@ enum Piece<'a> {
     Text(&'a str),
     Anything,
     Number,
+    End,
 }
 
 /// The number at `#` in the first line of `text` that `pattern` matches
 /// (anywhere in the line; a number is matched whole, never its tail).
 fn find_in_lines<'t>(text: &'t str, pattern: &str) -> anyhow::Result<Option<&'t str>> {
     ensure!(pattern.matches('#').count() == 1, "a pattern holds one `#`, the number: `{pattern}`");
+    // `^` holds the pattern to the start of the line, `$` to its end.
+    let (from_start, pattern) = pattern.strip_prefix('^').map_or((false, pattern), |p| (true, p));
+    let (to_end, pattern) = pattern.strip_suffix('$').map_or((false, pattern), |p| (true, p));
     let mut pieces = Vec::new();
     let mut rest = pattern;
     while let Some(at) = rest.find(['*', '#']) {
@@ -425,7 +457,13 @@ fn find_in_lines<'t>(text: &'t str, pattern: &str) -> anyhow::Result<Option<&'t 
     if !rest.is_empty() {
         pieces.push(Piece::Text(rest));
     }
-    let starts = |line: &str| (0..=line.len()).filter(|&i| line.is_char_boundary(i)).collect::<Vec<_>>();
+    if to_end {
+        pieces.push(Piece::End);
+    }
+    let starts = |line: &str| {
+        let last = if from_start { 0 } else { line.len() };
+        (0..=last).filter(|&i| line.is_char_boundary(i)).collect::<Vec<_>>()
+    };
     Ok(text.lines().find_map(|line| starts(line).into_iter().find_map(|i| matches(line, i, &pieces))))
 }
 
@@ -440,6 +478,7 @@ fn matches<'t>(line: &'t str, at: usize, pieces: &[Piece]) -> Option<&'t str> {
             let number = number_at(&line[at..]).filter(|_| !inside_a_number)?;
             matches(line, at + number.len(), rest).map(|_| number)
         }
+        Piece::End => (at == line.len()).then_some(""),
         Piece::Anything => (at..=line.len()).filter(|&i| line.is_char_boundary(i)).find_map(|i| matches(line, i, rest)),
     }
 }
@@ -521,6 +560,51 @@ fn table_cell<'t>(text: &'t str, keys: &[&str]) -> anyhow::Result<&'t str> {
     }
 }
 
+/// The book's pages in `src`: every `.md` file directly in it (the bench
+/// tables below it are sources, not pages).
+fn pages(src: &Path) -> anyhow::Result<Vec<PathBuf>> {
+    let mut pages = Vec::new();
+    for entry in std::fs::read_dir(src).with_context(|| format!("cannot read {}", src.display()))? {
+        let path = entry?.path();
+        if path.extension().is_some_and(|e| e == "md") {
+            pages.push(path);
+        }
+    }
+    pages.sort();
+    Ok(pages)
+}
+
+/// Every problem on every page of `src`, each on a line of its own.
+fn check_pages(src: &Path) -> anyhow::Result<Vec<String>> {
+    let figures = Figures::new();
+    let mut problems = Vec::new();
+    for page in pages(src)? {
+        let text = std::fs::read_to_string(&page)?;
+        let name = page.strip_prefix(crate::root()).unwrap_or(&page).display().to_string();
+        if let Err(found) = figures.expand(&name, page.parent().unwrap_or(src), &text) {
+            problems.extend(found);
+        }
+    }
+    Ok(problems)
+}
+
+/// `cargo xtask figures [PAGE…]`: every page's figures checked, as the
+/// book's build and `cargo xtask test` check them; each PAGE named (`frame-rates.md`)
+/// printed with its figures written, to read what a reader will.
+pub fn run(pages_to_print: &[String]) -> anyhow::Result<()> {
+    let src = crate::root().join("book/src");
+    let problems = check_pages(&src)?;
+    ensure!(problems.is_empty(), "figures that do not match their sources:\n  {}", problems.join("\n  "));
+    for name in pages_to_print {
+        let path = src.join(name);
+        let text = std::fs::read_to_string(&path).with_context(|| format!("cannot read {}", path.display()))?;
+        let expanded = Figures::new().expand(name, &src, &text).map_err(|p| anyhow::anyhow!(p.join("\n")))?;
+        print!("{expanded}");
+    }
+    println!("every figure on the book's pages matches its source");
+    Ok(())
+}
+
 /// The mdBook preprocessor `cargo xtask book` adds: every page's figures
 /// written, its checks gone, or the build fails with every problem.
 pub struct Preprocessor;
@@ -556,34 +640,6 @@ impl mdbook_preprocessor::Preprocessor for Preprocessor {
 mod tests {
     use super::*;
 
-    /// The book's pages in `src`: every `.md` file directly in it (the bench
-    /// tables below it are sources, not pages).
-    fn pages(src: &Path) -> anyhow::Result<Vec<PathBuf>> {
-        let mut pages = Vec::new();
-        for entry in std::fs::read_dir(src).with_context(|| format!("cannot read {}", src.display()))? {
-            let path = entry?.path();
-            if path.extension().is_some_and(|e| e == "md") {
-                pages.push(path);
-            }
-        }
-        pages.sort();
-        Ok(pages)
-    }
-
-    /// Every problem on every page of `src`, each on a line of its own.
-    fn check_pages(src: &Path) -> anyhow::Result<Vec<String>> {
-        let figures = Figures::new();
-        let mut problems = Vec::new();
-        for page in pages(src)? {
-            let text = std::fs::read_to_string(&page)?;
-            let name = page.strip_prefix(crate::root()).unwrap_or(&page).display().to_string();
-            if let Err(found) = figures.expand(&name, page.parent().unwrap_or(src), &text) {
-                problems.extend(found);
-            }
-        }
-        Ok(problems)
-    }
-
     /// A folder with a bench table, a saved run's note and a constant, as
     /// the book's sources are; one folder per test (they run side by side).
     fn sources(test: &str) -> PathBuf {
@@ -613,13 +669,15 @@ mod tests {
                     pass {{#figure [bench/fog.md | default | GPU: terrain | p95]}}; \
                     {{#figure [bench/fog.md | - default: * far plane # m]}} m, \
                     {{#figure [bench/fog.md | # of 4096 chunks]}} chunks, \
+                    {{#figure [bench/fog.md | ^- default: * # ms]}} and {{#figure [bench/fog.md | # of 4096 chunks drawn$]}}, \
                     {{#figure [bench/fog.md > The second | fog | 1280x720 | # FPS]}} FPS, \
                     {{#figure [code.rs | MAX_ROCKS]}} rocks, \
                     {{#figure [code.rs | MAX_ROCKS] / 4 :,.0}} a quarter, \
+                    {{#figure max(2, min(7, [bench/fog.md | dense | frame | median]), 3) :.0}} at most, \
                     {{#figure ([bench/fog.md | default | frame | median] - 1) / [bench/fog.md | dense | frame | median] :.2}}×.";
         assert_eq!(
             expand("cells", page).unwrap(),
-            "a 289.49 ms frame, pass 306.70; 2088 m, 1,051 chunks, 117.6 FPS, 1_000_000 rocks, 250,000 a quarter, 6.17×."
+            "a 289.49 ms frame, pass 306.70; 2088 m, 1,051 chunks, 1417 and 1,051, 117.6 FPS, 1_000_000 rocks, 250,000 a quarter, 7 at most, 6.17×."
         );
     }
 
@@ -649,6 +707,9 @@ mod tests {
             ("{{#figure [bench/sky.md | day | frame | median]}}", "cannot read bench/sky.md"),
             ("{{#figure [bench/fog.md | near plane # m]}}", "bench/fog.md has no line matching `near plane # m`"),
             ("{{#figure [code.rs | MAX_TREES]}}", "code.rs has no `const MAX_TREES"),
+            ("{{#figure [bench/fog.md | far plane #$]}}", "no line matching `far plane #$`"),
+            ("{{#figure [bench/fog.md | ^far plane #]}}", "no line matching `^far plane #`"),
+            ("{{#figure [bench/fog.md | # of # chunks]}}", "one `#`, the number"),
             ("{{#figure [bench/fog.md | dense | frame | median] * 2}}", "needs a format"),
             ("{{#figure [bench/fog.md | dense | frame | median] :2}}", "is not `.N`"),
             ("{{#check 1 = 1}}", "needs a comparison"),

@@ -13,6 +13,8 @@
 //! - `bench [CHAPTER...]`: release build, frame times per view, written into the book
 //!   (`bench sizes`: every default view at three sizes; `bench web`: in Chromium;
 //!   `bench saved RAW OUT`: the tables of a run `xtask/gpu-bench.sh` saved).
+//! - `figures [PAGE...]`: check every page's figures against their sources
+//!   (the book's build and `test` do too), print PAGE with them written.
 //! - `assets`: paint every texture under `assets/` from code (deterministic).
 
 use std::path::{Path, PathBuf};
@@ -37,6 +39,7 @@ fn main() -> ExitCode {
         Some("bench") => bench(&args[1..]),
         Some("window") => window_test::run(&args[1..]),
         Some("assets") => assets::generate(),
+        Some("figures") => figures::run(&args[1..]),
         Some("serve") => web::serve(&args[1..]),
         Some("web") => web::build(&root().join("book/book")),
         Some("browser") => web::browser_test(&args[1..]),
@@ -45,7 +48,7 @@ fn main() -> ExitCode {
             return ExitCode::SUCCESS;
         }
         Some(other) => Err(anyhow::anyhow!(
-            "unknown task '{other}'; the tasks are: test, snapshot, book, serve, web, browser, window, bench, assets"
+            "unknown task '{other}'; the tasks are: test, snapshot, book, serve, web, browser, window, bench, figures, assets"
         )),
     };
     match result {
@@ -69,6 +72,7 @@ cargo xtask bench [CHAPTER..]              release build; frame times at 1280x72
 cargo xtask bench web                      wasm sizes, first frames and frame times in Chromium into book/src/bench/web.md
 cargo xtask bench sizes                    every default view at 1280x720, 1920x1080, 2560x1440 into book/src/bench/sizes.md
 cargo xtask bench saved RAW OUT            tables from what xtask/gpu-bench.sh saved in RAW (no toolchain there) into OUT
+cargo xtask figures [PAGE..]               check every page's figures against their sources; print PAGE with them written
 cargo xtask assets                         paint every texture under assets/ from code
 ";
 
