@@ -29,7 +29,8 @@
 //!     (`# FPS` in `12.83 ms, 77.9 FPS`);
 //!   - `PATTERN`: the number at `#` in the first line that matches, `*`
 //!     matching anything (`- default: * far plane # m`), `^` and `$` holding
-//!     it to the line's start and end;
+//!     it to the line's start and end; or, at `@` instead of `#`, the words
+//!     there (`on @ (`), which a page may write but not compute with;
 //!   - `NAME`, in a `.rs` or `.wgsl` file: the constant `const NAME: … = N;`.
 //!
 //!   `FILE > TEXT` looks only below the first line holding TEXT (a file's
@@ -93,6 +94,9 @@ impl Figures {
         if let Some(spec) = body.strip_prefix(FIGURE) {
             let (expression, format) = split_format(spec)?;
             let expression = self.parse(folder, expression)?;
+            let lone = matches!(expression, Expression::Source { .. });
+            ensure!(lone || !expression.has_words(), "words (from an `@`) cannot be computed with");
+            ensure!(format.is_none() || !expression.has_words(), "words (from an `@`) have no format");
             match (format, &expression) {
                 (None, Expression::Source { text, .. }) => Ok(text.clone()),
                 (None, _) => bail!("a computed figure needs a format (`:.1`, `:,.0`)"),
@@ -102,6 +106,7 @@ impl Figures {
             let spec = &body[CHECK.len()..];
             let (left, op, right) = split_comparison(spec)?;
             let (left, right) = (self.parse(folder, left)?, self.parse(folder, right)?);
+            ensure!(!left.has_words() && !right.has_words(), "words (from an `@`) cannot be compared");
             let (a, b) = (left.value(), right.value());
             let holds = match op {
                 "<" => a < b,
@@ -122,8 +127,9 @@ impl Figures {
         Ok(expression)
     }
 
-    /// The number a source `[FILE | …]` names, and its text there.
-    fn source(&self, folder: &Path, spec: &str) -> anyhow::Result<(f64, String)> {
+    /// The number a source `[FILE | …]` names (`None` for words at `@`),
+    /// and its text there.
+    fn source(&self, folder: &Path, spec: &str) -> anyhow::Result<(Option<f64>, String)> {
         let parts = split_parts(spec);
         let (file, below) = match parts[0].split_once(" > ") {
             Some((file, below)) => (file.trim(), Some(below.trim())),
@@ -146,12 +152,13 @@ impl Figures {
         let found = match keys[..] {
             [name] if code && is_identifier(name) => find_in_lines(text, &format!("const {name}: * = #;"))?
                 .with_context(|| format!("{file} has no `const {name}: … = NUMBER;`")),
-            [pattern] if pattern.contains('#') => {
+            [pattern] if pattern.contains(['#', '@']) => {
                 find_in_lines(text, pattern)?.with_context(|| format!("{file} has no line matching `{pattern}`"))
             }
             _ => table_cell(text, &keys).with_context(|| format!("in {file}")),
         }?;
-        Ok((number_value(found)?, found.to_string()))
+        let words = keys.last().is_some_and(|k| k.contains('@'));
+        Ok((if words { None } else { Some(number_value(found)?) }, found.to_string()))
     }
 }
 
@@ -267,11 +274,8 @@ fn is_identifier(text: &str) -> bool {
 /// An expression, with what it was read from (for the messages).
 enum Expression {
     Number(f64),
-    Source {
-        spec: String,
-        value: f64,
-        text: String,
-    },
+    /// A number, or words (`value` `None`) from an `@`.
+    Source { spec: String, value: Option<f64>, text: String },
     Operation(Box<Expression>, char, Box<Expression>),
     /// `min(…)` (`least`) or `max(…)`.
     Extreme {
@@ -283,7 +287,8 @@ enum Expression {
 impl Expression {
     fn value(&self) -> f64 {
         match self {
-            Self::Number(value) | Self::Source { value, .. } => *value,
+            Self::Number(value) => *value,
+            Self::Source { value, .. } => value.unwrap_or(f64::NAN),
             Self::Operation(a, op, b) => match op {
                 '+' => a.value() + b.value(),
                 '-' => a.value() - b.value(),
@@ -297,6 +302,13 @@ impl Expression {
         }
     }
 
+    /// Whether words from an `@` are part of it.
+    fn has_words(&self) -> bool {
+        let mut sources = Vec::new();
+        self.sources(&mut sources);
+        sources.iter().any(|s| s.starts_with("words "))
+    }
+
     /// The value, and where each source's number came from.
     fn describe(&self) -> String {
         let mut sources = Vec::new();
@@ -308,7 +320,9 @@ impl Expression {
     fn sources(&self, out: &mut Vec<String>) {
         match self {
             Self::Number(_) => {}
-            Self::Source { spec, text, .. } => out.push(format!("[{spec}] = {text}")),
+            Self::Source { spec, text, value } => {
+                out.push(format!("{}[{spec}] = {text}", if value.is_none() { "words " } else { "" }))
+            }
             Self::Operation(a, _, b) => {
                 a.sources(out);
                 b.sources(out);
@@ -435,23 +449,32 @@ enum Piece<'a> {
     Text(&'a str),
     Anything,
     Number,
+    Words,
     End,
 }
 
-/// The number at `#` in the first line of `text` that `pattern` matches
-/// (anywhere in the line; a number is matched whole, never its tail).
+/// The number at `#` (or the words at `@`) in the first line of `text`
+/// that `pattern` matches (anywhere in the line; a number is matched
+/// whole, never its tail; words as few as let the rest match).
 fn find_in_lines<'t>(text: &'t str, pattern: &str) -> anyhow::Result<Option<&'t str>> {
-    ensure!(pattern.matches('#').count() == 1, "a pattern holds one `#`, the number: `{pattern}`");
+    ensure!(
+        pattern.matches(['#', '@']).count() == 1,
+        "a pattern holds one `#` (the number) or one `@` (the words): `{pattern}`"
+    );
     // `^` holds the pattern to the start of the line, `$` to its end.
     let (from_start, pattern) = pattern.strip_prefix('^').map_or((false, pattern), |p| (true, p));
     let (to_end, pattern) = pattern.strip_suffix('$').map_or((false, pattern), |p| (true, p));
     let mut pieces = Vec::new();
     let mut rest = pattern;
-    while let Some(at) = rest.find(['*', '#']) {
+    while let Some(at) = rest.find(['*', '#', '@']) {
         if at > 0 {
             pieces.push(Piece::Text(&rest[..at]));
         }
-        pieces.push(if rest[at..].starts_with('*') { Piece::Anything } else { Piece::Number });
+        pieces.push(match &rest[at..at + 1] {
+            "*" => Piece::Anything,
+            "#" => Piece::Number,
+            _ => Piece::Words,
+        });
         rest = &rest[at + 1..];
     }
     if !rest.is_empty() {
@@ -478,6 +501,10 @@ fn matches<'t>(line: &'t str, at: usize, pieces: &[Piece]) -> Option<&'t str> {
             let number = number_at(&line[at..]).filter(|_| !inside_a_number)?;
             matches(line, at + number.len(), rest).map(|_| number)
         }
+        Piece::Words => (at + 1..=line.len())
+            .filter(|&i| line.is_char_boundary(i))
+            .find_map(|i| matches(line, i, rest).map(|_| line[at..i].trim()))
+            .filter(|words| !words.is_empty()),
         Piece::End => (at == line.len()).then_some(""),
         Piece::Anything => (at..=line.len()).filter(|&i| line.is_char_boundary(i)).find_map(|i| matches(line, i, rest)),
     }
@@ -501,7 +528,7 @@ fn names(cell: &str, key: &str) -> bool {
 /// of a last key that holds one.
 fn table_cell<'t>(text: &'t str, keys: &[&str]) -> anyhow::Result<&'t str> {
     let (keys, pick) = match keys.split_last() {
-        Some((last, rest)) if last.contains('#') => (rest, Some(*last)),
+        Some((last, rest)) if last.contains(['#', '@']) => (rest, Some(*last)),
         _ => (keys, None),
     };
     let Some((column, row_keys)) = keys.split_last().filter(|(_, rows)| !rows.is_empty()) else {
@@ -669,6 +696,7 @@ mod tests {
                     pass {{#figure [bench/fog.md | default | GPU: terrain | p95]}}; \
                     {{#figure [bench/fog.md | - default: * far plane # m]}} m, \
                     {{#figure [bench/fog.md | # of 4096 chunks]}} chunks, \
+                    {{#figure [bench/fog.md | fog on @, 1280x720]}}, \
                     {{#figure [bench/fog.md | ^- default: * # ms]}} and {{#figure [bench/fog.md | # of 4096 chunks drawn$]}}, \
                     {{#figure [bench/fog.md > The second | fog | 1280x720 | # FPS]}} FPS, \
                     {{#figure [code.rs | MAX_ROCKS]}} rocks, \
@@ -677,7 +705,7 @@ mod tests {
                     {{#figure ([bench/fog.md | default | frame | median] - 1) / [bench/fog.md | dense | frame | median] :.2}}×.";
         assert_eq!(
             expand("cells", page).unwrap(),
-            "a 289.49 ms frame, pass 306.70; 2088 m, 1,051 chunks, 1417 and 1,051, 117.6 FPS, 1_000_000 rocks, 250,000 a quarter, 7 at most, 6.17×."
+            "a 289.49 ms frame, pass 306.70; 2088 m, 1,051 chunks, Some GPU, 1417 and 1,051, 117.6 FPS, 1_000_000 rocks, 250,000 a quarter, 7 at most, 6.17×."
         );
     }
 
@@ -709,7 +737,10 @@ mod tests {
             ("{{#figure [code.rs | MAX_TREES]}}", "code.rs has no `const MAX_TREES"),
             ("{{#figure [bench/fog.md | far plane #$]}}", "no line matching `far plane #$`"),
             ("{{#figure [bench/fog.md | ^far plane #]}}", "no line matching `^far plane #`"),
-            ("{{#figure [bench/fog.md | # of # chunks]}}", "one `#`, the number"),
+            ("{{#figure [bench/fog.md | # of # chunks]}}", "one `#` (the number)"),
+            ("{{#figure [bench/fog.md | fog on @, #x720]}}", "one `#` (the number)"),
+            ("{{#figure [bench/fog.md | fog on @, 1280x720] :.1}}", "words (from an `@`) have no format"),
+            ("{{#check [bench/fog.md | fog on @, 1280x720] < 1}}", "cannot be compared"),
             ("{{#figure [bench/fog.md | dense | frame | median] * 2}}", "needs a format"),
             ("{{#figure [bench/fog.md | dense | frame | median] :2}}", "is not `.N`"),
             ("{{#check 1 = 1}}", "needs a comparison"),
