@@ -275,7 +275,11 @@ fn is_identifier(text: &str) -> bool {
 enum Expression {
     Number(f64),
     /// A number, or words (`value` `None`) from an `@`.
-    Source { spec: String, value: Option<f64>, text: String },
+    Source {
+        spec: String,
+        value: Option<f64>,
+        text: String,
+    },
     Operation(Box<Expression>, char, Box<Expression>),
     /// `min(…)` (`least`) or `max(…)`.
     Extreme {
