@@ -34,7 +34,8 @@
 //!   - `NAME`, in a `.rs` or `.wgsl` file: the constant `const NAME: … = N;`.
 //!
 //!   `FILE > TEXT` looks only below the first line holding TEXT (a file's
-//!   second table).
+//!   second table). A ROW key `*` names every row of the first table that
+//!   has any: such a source is many numbers, for `min(…)` and `max(…)`.
 
 use std::cell::RefCell;
 use std::collections::HashMap;
@@ -124,12 +125,13 @@ impl Figures {
         let expression = parser.sum()?;
         parser.skip_spaces();
         ensure!(parser.at == text.len(), "unexpected `{}` in `{text}`", &text[parser.at..]);
+        ensure!(!expression.many_outside_extremes(), "a `*` row names many rows: use it inside `min(…)` or `max(…)`");
         Ok(expression)
     }
 
-    /// The number a source `[FILE | …]` names (`None` for words at `@`),
-    /// and its text there.
-    fn source(&self, folder: &Path, spec: &str) -> anyhow::Result<(Option<f64>, String)> {
+    /// The numbers a source `[FILE | …]` names (`None` for words at `@`),
+    /// and their text there: one, or for a `*` row, every row's.
+    fn source(&self, folder: &Path, spec: &str) -> anyhow::Result<Vec<(Option<f64>, String)>> {
         let parts = split_parts(spec);
         let (file, below) = match parts[0].split_once(" > ") {
             Some((file, below)) => (file.trim(), Some(below.trim())),
@@ -150,15 +152,17 @@ impl Figures {
         }
         let code = file.ends_with(".rs") || file.ends_with(".wgsl");
         let found = match keys[..] {
-            [name] if code && is_identifier(name) => find_in_lines(text, &format!("const {name}: * = #;"))?
-                .with_context(|| format!("{file} has no `const {name}: … = NUMBER;`")),
-            [pattern] if pattern.contains(['#', '@']) => {
-                find_in_lines(text, pattern)?.with_context(|| format!("{file} has no line matching `{pattern}`"))
-            }
-            _ => table_cell(text, &keys).with_context(|| format!("in {file}")),
-        }?;
+            [name] if code && is_identifier(name) => vec![
+                find_in_lines(text, &format!("const {name}: * = #;"))?
+                    .with_context(|| format!("{file} has no `const {name}: … = NUMBER;`"))?,
+            ],
+            [pattern] if pattern.contains(['#', '@']) => vec![
+                find_in_lines(text, pattern)?.with_context(|| format!("{file} has no line matching `{pattern}`"))?,
+            ],
+            _ => table_cells(text, &keys).with_context(|| format!("in {file}"))?,
+        };
         let words = keys.last().is_some_and(|k| k.contains('@'));
-        Ok((if words { None } else { Some(number_value(found)?) }, found.to_string()))
+        found.into_iter().map(|f| Ok((if words { None } else { Some(number_value(f)?) }, f.to_string()))).collect()
     }
 }
 
@@ -280,6 +284,11 @@ enum Expression {
         value: Option<f64>,
         text: String,
     },
+    /// A source that named many rows (a `*` key): only for `min` and `max`.
+    Many {
+        spec: String,
+        values: Vec<(f64, String)>,
+    },
     Operation(Box<Expression>, char, Box<Expression>),
     /// `min(…)` (`least`) or `max(…)`.
     Extreme {
@@ -293,6 +302,7 @@ impl Expression {
         match self {
             Self::Number(value) => *value,
             Self::Source { value, .. } => value.unwrap_or(f64::NAN),
+            Self::Many { .. } => f64::NAN,
             Self::Operation(a, op, b) => match op {
                 '+' => a.value() + b.value(),
                 '-' => a.value() - b.value(),
@@ -300,9 +310,23 @@ impl Expression {
                 _ => a.value() / b.value(),
             },
             Self::Extreme { least, of } => {
-                let values = of.iter().map(Expression::value);
+                let values = of.iter().flat_map(|e| match e {
+                    Self::Many { values, .. } => values.iter().map(|(v, _)| *v).collect(),
+                    _ => vec![e.value()],
+                });
                 if *least { values.fold(f64::INFINITY, f64::min) } else { values.fold(f64::NEG_INFINITY, f64::max) }
             }
+        }
+    }
+
+    /// Whether a source of many rows stands anywhere but as an argument of
+    /// `min` or `max`.
+    fn many_outside_extremes(&self) -> bool {
+        match self {
+            Self::Many { .. } => true,
+            Self::Number(_) | Self::Source { .. } => false,
+            Self::Operation(a, _, b) => a.many_outside_extremes() || b.many_outside_extremes(),
+            Self::Extreme { of, .. } => of.iter().any(|e| !matches!(e, Self::Many { .. }) && e.many_outside_extremes()),
         }
     }
 
@@ -332,6 +356,10 @@ impl Expression {
                 b.sources(out);
             }
             Self::Extreme { of, .. } => of.iter().for_each(|e| e.sources(out)),
+            Self::Many { spec, values } => {
+                let texts: Vec<&str> = values.iter().map(|(_, t)| t.as_str()).collect();
+                out.push(format!("[{spec}] = {}", texts.join(", ")))
+            }
         }
     }
 }
@@ -391,8 +419,13 @@ impl Parser<'_> {
                     .with_context(|| format!("a `[` without its `]` in `{}`", self.text))?;
                 let spec = rest[1..end].trim().to_string();
                 self.at += end + 1;
-                let (value, text) = self.figures.source(self.folder, &spec)?;
-                Ok(Expression::Source { spec, value, text })
+                let mut found = self.figures.source(self.folder, &spec)?;
+                if found.len() == 1 {
+                    let (value, text) = found.remove(0);
+                    return Ok(Expression::Source { spec, value, text });
+                }
+                let values = found.into_iter().map(|(v, t)| (v.unwrap_or(f64::NAN), t)).collect();
+                Ok(Expression::Many { spec, values })
             }
             Some('m') if ["min(", "max("].iter().any(|f| self.text[self.at..].starts_with(f)) => {
                 let least = self.text[self.at..].starts_with("min(");
@@ -529,8 +562,9 @@ fn names(cell: &str, key: &str) -> bool {
 
 /// The number in the first table of `text` with a row named by `keys`
 /// (all but the column), in the column named by the last key, or at the `#`
-/// of a last key that holds one.
-fn table_cell<'t>(text: &'t str, keys: &[&str]) -> anyhow::Result<&'t str> {
+/// of a last key that holds one; with a `*` key, the number in every row
+/// it names.
+fn table_cells<'t>(text: &'t str, keys: &[&str]) -> anyhow::Result<Vec<&'t str>> {
     let (keys, pick) = match keys.split_last() {
         Some((last, rest)) if last.contains(['#', '@']) => (rest, Some(*last)),
         _ => (keys, None),
@@ -559,22 +593,28 @@ fn table_cell<'t>(text: &'t str, keys: &[&str]) -> anyhow::Result<&'t str> {
         at += 2 + rows.len();
         let named: Vec<&Vec<&str>> = rows
             .iter()
-            .filter(|row| row.len() >= row_keys.len() && row_keys.iter().zip(row.iter()).all(|(k, c)| names(c, k)))
+            .filter(|row| {
+                row.len() >= row_keys.len() && row_keys.iter().zip(row.iter()).all(|(k, c)| *k == "*" || names(c, k))
+            })
             .collect();
+        let many = row_keys.contains(&"*");
         match named[..] {
             [] => continue,
-            [row] => {
+            [_] | [_, _, ..] if many || named.len() == 1 => {
                 let Some(index) = heading.iter().position(|h| names(h, column)) else {
                     column_missing = Some(heading.join(" | "));
                     continue;
                 };
-                let cell = row.get(index).with_context(|| format!("the row `{}` is short", row.join(" | ")))?;
-                return match pick {
-                    Some(pattern) => find_in_lines(cell, pattern)?
-                        .with_context(|| format!("the cell `{cell}` does not match `{pattern}`")),
-                    None => number_at(cell.trim_start_matches(|c: char| !(c.is_ascii_digit() || c == '-')))
-                        .with_context(|| format!("the cell `{cell}` holds no number")),
+                let number = |row: &Vec<&'t str>| -> anyhow::Result<&'t str> {
+                    let cell = row.get(index).with_context(|| format!("the row `{}` is short", row.join(" | ")))?;
+                    match pick {
+                        Some(pattern) => find_in_lines(cell, pattern)?
+                            .with_context(|| format!("the cell `{cell}` does not match `{pattern}`")),
+                        None => number_at(cell.trim_start_matches(|c: char| !(c.is_ascii_digit() || c == '-')))
+                            .with_context(|| format!("the cell `{cell}` holds no number")),
+                    }
                 };
+                return named.into_iter().map(number).collect();
             }
             _ => bail!(
                 "`{}` names {} rows: {}; write more of the cells",
@@ -706,10 +746,11 @@ mod tests {
                     {{#figure [code.rs | MAX_ROCKS]}} rocks, \
                     {{#figure [code.rs | MAX_ROCKS] / 4 :,.0}} a quarter, \
                     {{#figure max(2, min(7, [bench/fog.md | dense | frame | median]), 3) :.0}} at most, \
+                    {{#figure min([bench/fog.md | * | frame | median]) :.2}} to {{#figure max([bench/fog.md | * | frame | median]) :.2}}, \
                     {{#figure ([bench/fog.md | default | frame | median] - 1) / [bench/fog.md | dense | frame | median] :.2}}×.";
         assert_eq!(
             expand("cells", page).unwrap(),
-            "a 289.49 ms frame, pass 306.70; 2088 m, 1,051 chunks, Some GPU, 1417 and 1,051, 117.6 FPS, 1_000_000 rocks, 250,000 a quarter, 7 at most, 6.17×."
+            "a 289.49 ms frame, pass 306.70; 2088 m, 1,051 chunks, Some GPU, 1417 and 1,051, 117.6 FPS, 1_000_000 rocks, 250,000 a quarter, 7 at most, 2.00 to 289.49, 6.17×."
         );
     }
 
@@ -748,6 +789,8 @@ mod tests {
             ("{{#figure [bench/fog.md | dense | frame | median] * 2}}", "needs a format"),
             ("{{#figure [bench/fog.md | dense | frame | median] :2}}", "is not `.N`"),
             ("{{#check 1 = 1}}", "needs a comparison"),
+            ("{{#figure [bench/fog.md | * | frame | median] :.1}}", "use it inside `min(…)` or `max(…)`"),
+            ("{{#figure min([bench/fog.md | * | frame | median] * 2) :.1}}", "use it inside `min(…)` or `max(…)`"),
             ("{{#figure [bench/fog.md | dense | frame | median}}", "without its `]`"),
         ];
         for (page, expected) in cases {
