@@ -35,7 +35,8 @@
 //!
 //!   `FILE > TEXT` looks only below the first line holding TEXT (a file's
 //!   second table). A ROW key `*` names every row of the first table that
-//!   has any: such a source is many numbers, for `min(…)` and `max(…)`.
+//!   has any, and `* | PATTERN` every line that matches: such a source is
+//!   many numbers, for `min(…)` and `max(…)`.
 
 use std::cell::RefCell;
 use std::collections::HashMap;
@@ -159,6 +160,17 @@ impl Figures {
             [pattern] if pattern.contains(['#', '@']) => vec![
                 find_in_lines(text, pattern)?.with_context(|| format!("{file} has no line matching `{pattern}`"))?,
             ],
+            ["*", pattern] if pattern.contains('#') => {
+                let every: Vec<&str> = text
+                    .lines()
+                    .map(|line| find_in_lines(line, pattern))
+                    .collect::<anyhow::Result<Vec<_>>>()?
+                    .into_iter()
+                    .flatten()
+                    .collect();
+                ensure!(!every.is_empty(), "{file} has no line matching `{pattern}`");
+                every
+            }
             _ => table_cells(text, &keys).with_context(|| format!("in {file}"))?,
         };
         let words = keys.last().is_some_and(|k| k.contains('@'));
@@ -747,10 +759,11 @@ mod tests {
                     {{#figure [code.rs | MAX_ROCKS] / 4 :,.0}} a quarter, \
                     {{#figure max(2, min(7, [bench/fog.md | dense | frame | median]), 3) :.0}} at most, \
                     {{#figure min([bench/fog.md | * | frame | median]) :.2}} to {{#figure max([bench/fog.md | * | frame | median]) :.2}}, \
+                    {{#figure max([bench/fog.md | * | # ms]) :.0}}, \
                     {{#figure ([bench/fog.md | default | frame | median] - 1) / [bench/fog.md | dense | frame | median] :.2}}×.";
         assert_eq!(
             expand("cells", page).unwrap(),
-            "a 289.49 ms frame, pass 306.70; 2088 m, 1,051 chunks, Some GPU, 1417 and 1,051, 117.6 FPS, 1_000_000 rocks, 250,000 a quarter, 7 at most, 2.00 to 289.49, 6.17×."
+            "a 289.49 ms frame, pass 306.70; 2088 m, 1,051 chunks, Some GPU, 1417 and 1,051, 117.6 FPS, 1_000_000 rocks, 250,000 a quarter, 7 at most, 2.00 to 289.49, 1417, 6.17×."
         );
     }
 
