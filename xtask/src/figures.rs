@@ -834,6 +834,25 @@ mod tests {
         assert_eq!(format(2, false).write(19.0), "19.00");
     }
 
+    /// The preprocessor in mdBook's own build, as `cargo xtask book` runs
+    /// it (the HTML only: no snapshots, diagrams or WebAssembly): the pages
+    /// come out with their figures written and no directive left.
+    #[test]
+    fn the_built_book_has_its_figures_written() {
+        let out = std::env::temp_dir().join(format!("xtask-figures-book-{}", std::process::id()));
+        let mut book = mdbook_driver::MDBook::load(crate::root().join("book")).unwrap();
+        book.config.build.build_dir = out.clone();
+        book.with_preprocessor(Preprocessor).build().unwrap();
+        let page = std::fs::read_to_string(out.join("frame-rates.html")).unwrap();
+        let gpu_sizes = std::fs::read_to_string(crate::root().join("book/src/bench/gpu/sizes.md")).unwrap();
+        let threads = gpu_sizes.split(" threads.").next().and_then(|before| before.rsplit(' ').next()).unwrap();
+        std::fs::remove_dir_all(&out).unwrap();
+        assert!(!page.contains("{{#figure") && !page.contains("{{#check"), "a directive was left in the page");
+        // The thread count, written from `gpu.txt`, as the sizes table names it.
+        let written = format!("with a {threads}-thread Intel Xeon");
+        assert!(page.contains(&written), "frame-rates.html should say `{written}`");
+    }
+
     /// Every page of the book, expanded as `cargo xtask book` does: a
     /// figure whose row, column, line or constant is gone, or a check that
     /// no longer holds, fails here, without building the book.
