@@ -101,9 +101,10 @@ pub fn sampler_entry(binding: u32) -> wgpu::BindGroupLayoutEntry {
 
 /// A bind-group layout entry for a read-only storage buffer of any size.
 /// Chapters 08–11 keep the values their shaders branch or loop on here
-/// rather than in a uniform buffer: Mesa's lavapipe 22.3 compiles a new
-/// copy of a shader whose branches read a uniform buffer every time it is
-/// bound, and never frees the old copy (the book's chapter 08 pitfalls).
+/// rather than in a uniform buffer: Mesa's lavapipe 22.3 can compile a copy
+/// of a large shader with such uniform values written in, for each set of
+/// values it is bound with, and keep every copy (the book's chapter 08
+/// pitfalls).
 pub fn storage_entry(binding: u32, visibility: wgpu::ShaderStages) -> wgpu::BindGroupLayoutEntry {
     wgpu::BindGroupLayoutEntry {
         binding,

@@ -18,13 +18,17 @@ pub fn fbm_octaves() -> String {
         y: (-0.6, 0.6),
     };
     // Octave o is at lacunarity^o times the frequency and persistence^o
-    // times the height, as `Fbm::sample` sums them.
+    // times the height, on the same slice as `Fbm::sample` takes it: x and
+    // y both scaled by the frequency, z left alone. So the rows add up to
+    // the sum below.
     let octave_scale = |factor: f64, octave: u32| factor.powi(octave as i32) as f32;
+    let (y, z) = (0.5, 0.5);
     for octave in 0..fbm.octaves {
         let axes = row(octave as usize, 50.0);
         let (frequency, amplitude) = (octave_scale(fbm.lacunarity, octave), octave_scale(fbm.persistence, octave));
         svg.line(axes.at(0.0, 0.0), axes.at(4.0, 0.0), "#e3dccf", 1.0);
-        axes.curve(&mut svg, |x| amplitude * perlin3(f64::from(x * frequency), 0.5, 0.5) as f32, MUTED, 1.6);
+        let f = f64::from(frequency);
+        axes.curve(&mut svg, |x| amplitude * perlin3(f64::from(x) * f, y * f, z) as f32, MUTED, 1.6);
         let label = format!("octave {}: frequency ×{frequency}, height ×{amplitude}", octave + 1);
         svg.text(axes.origin - Vec2::new(0.0, 6.0), &label, 11.0, "start", INK);
     }
@@ -33,7 +37,7 @@ pub fn fbm_octaves() -> String {
     let total: f32 = (0..fbm.octaves).map(|o| octave_scale(fbm.persistence, o)).sum();
     let sum = row(fbm.octaves as usize, 80.0);
     svg.line(sum.at(0.0, 0.0), sum.at(4.0, 0.0), "#e3dccf", 1.0);
-    sum.curve(&mut svg, |x| fbm.sample(f64::from(x), 0.5, 0.5) as f32 * total, ACCENT, 2.2);
+    sum.curve(&mut svg, |x| fbm.sample(f64::from(x), y, z) as f32 * total, ACCENT, 2.2);
     svg.text(sum.origin - Vec2::new(0.0, 6.0), "their sum: hills on hills (fBm)", 11.0, "start", ACCENT);
     svg.finish()
 }

@@ -27,9 +27,11 @@ struct Frame {
 // A read-only storage buffer, not a uniform one, although it is small and
 // the same for every fragment: the loop below runs `options.x` times and
 // branches on `options.y` and `.w`, and Mesa's lavapipe (22.3, Debian 12)
-// compiles a new copy of any shader whose branches read a uniform buffer
-// each time it is bound, and never frees the old one: about a megabyte a
-// frame for this chapter. See the book's chapter 08 pitfalls.
+// can write the uniform values a large shader reads into a copy of it,
+// one copy for each set of values it is bound with, every copy kept (it
+// stops where the first copy is not half the size or less, unless the
+// values are read often enough for it to insist): megabytes a frame for
+// this chapter. See the book's chapter 08 pitfalls.
 @group(0) @binding(0) var<storage, read> frame: Frame;
 
 // 64 bytes, as GpuLight in lights.rs. A point light has cos_inner = −2

@@ -122,6 +122,25 @@ pub fn saved_cpu(gpu_txt: &str, file: &Path) -> anyhow::Result<String> {
     Ok(format!("{model}, {threads} threads"))
 }
 
+/// What the GPU a saved run names in its `gpu.txt` (`GPU 0: NAME (UUID: …)`,
+/// from `nvidia-smi -L`) is for drawing, where the tables must say it: the
+/// lent machine's H200 is a GH100, a chip made for computing that can draw
+/// with little of itself, so its frame times are not a fast graphics card's.
+/// `None` for a GPU made for drawing.
+pub fn what_the_gpu_is(gpu_txt: &str) -> Option<String> {
+    let name = gpu_txt.lines().find_map(|l| l.strip_prefix("GPU 0: "))?.split(" (UUID").next()?.trim();
+    let hopper = ["H100", "H200"].iter().any(|chip| name.split_whitespace().any(|word| word == *chip));
+    hopper.then(|| {
+        format!(
+            "The {name} is NVIDIA's GH100 chip, as the H100 is, made for computing rather than drawing: only two of \
+             its TPCs (texture processing clusters) can run vertex, geometry and pixel shaders, the rest compute only \
+             (NVIDIA, \"NVIDIA Hopper Architecture In-Depth\", 2022). For drawing it is a small GPU, nothing like a \
+             desktop graphics card: these times say where a chapter's work goes on this one chip, not how fast a GPU \
+             draws the chapter."
+        )
+    })
+}
+
 /// One chapter's saved `CHAPTER --bench --size 1280x720` output, split as
 /// the book's page shows it: its first line (which chapter, adapter, size
 /// and frames), and the tables and notes after it, less the `time` lines
@@ -220,6 +239,15 @@ mod tests {
         );
         let error = format!("{:#}", chapter_tables("water", saved, Path::new("water.txt")).err().unwrap());
         assert!(error.contains("water.txt") && error.contains("`water on ADAPTER"), "{error}");
+    }
+
+    #[test]
+    fn a_gh100_is_named_for_what_it_is_and_a_graphics_card_is_not_qualified() {
+        let about = what_the_gpu_is("GPU 0: NVIDIA H200 (UUID: GPU-1)\n16\n").unwrap();
+        assert!(about.starts_with("The NVIDIA H200 is NVIDIA's GH100 chip") && about.contains("only two"), "{about}");
+        assert!(what_the_gpu_is("GPU 0: NVIDIA H100 80GB HBM3 (UUID: GPU-2)\n").is_some());
+        assert_eq!(what_the_gpu_is("GPU 0: NVIDIA GeForce RTX 4090 (UUID: GPU-3)\n"), None);
+        assert_eq!(what_the_gpu_is("16\nmodel name\t: Some CPU\n"), None);
     }
 
     #[test]

@@ -1,6 +1,6 @@
 //! Building the book: figures from the snapshot references, diagrams drawn
-//! by code, listings from the code by anchor, and a failure for any anchor
-//! or link that is broken.
+//! by code, listings from the code by anchor, numbers from their tables
+//! (`figures`), and a failure for any anchor, link or figure that is broken.
 
 use std::path::{Path, PathBuf};
 
@@ -28,7 +28,7 @@ pub fn build(check_snapshots: bool) -> anyhow::Result<()> {
         bail!("broken listings in the book:\n  {}", problems.join("\n  "));
     }
     mdbook_driver::MDBook::load(&book)
-        .and_then(|b| b.build())
+        .and_then(|mut b| b.with_preprocessor(crate::figures::Preprocessor).build())
         .map_err(|e| anyhow::anyhow!("{e:#}"))
         .context("mdbook failed")?;
     let html = book.join("book");

@@ -13,6 +13,8 @@
 //! - `bench [CHAPTER...]`: release build, frame times per view, written into the book
 //!   (`bench sizes`: every default view at three sizes; `bench web`: in Chromium;
 //!   `bench saved RAW OUT`: the tables of a run `xtask/gpu-bench.sh` saved).
+//! - `figures [PAGE...]`: check every page's figures against their sources
+//!   (the book's build and `test` do too), print PAGE with them written.
 //! - `assets`: paint every texture under `assets/` from code (deterministic).
 
 use std::path::{Path, PathBuf};
@@ -23,6 +25,7 @@ use anyhow::{Context as _, bail, ensure};
 mod assets;
 mod bench_tables;
 mod book;
+mod figures;
 mod prerequisites;
 mod web;
 mod window_test;
@@ -36,6 +39,7 @@ fn main() -> ExitCode {
         Some("bench") => bench(&args[1..]),
         Some("window") => window_test::run(&args[1..]),
         Some("assets") => assets::generate(),
+        Some("figures") => figures::run(&args[1..]),
         Some("serve") => web::serve(&args[1..]),
         Some("web") => web::build(&root().join("book/book")),
         Some("browser") => web::browser_test(&args[1..]),
@@ -44,7 +48,7 @@ fn main() -> ExitCode {
             return ExitCode::SUCCESS;
         }
         Some(other) => Err(anyhow::anyhow!(
-            "unknown task '{other}'; the tasks are: test, snapshot, book, serve, web, browser, window, bench, assets"
+            "unknown task '{other}'; the tasks are: test, snapshot, book, serve, web, browser, window, bench, figures, assets"
         )),
     };
     match result {
@@ -68,6 +72,7 @@ cargo xtask bench [CHAPTER..]              release build; frame times at 1280x72
 cargo xtask bench web                      wasm sizes, first frames and frame times in Chromium into book/src/bench/web.md
 cargo xtask bench sizes                    every default view at 1280x720, 1920x1080, 2560x1440 into book/src/bench/sizes.md
 cargo xtask bench saved RAW OUT            tables from what xtask/gpu-bench.sh saved in RAW (no toolchain there) into OUT
+cargo xtask figures [PAGE..]               check every page's figures against their sources; print PAGE with them written
 cargo xtask assets                         paint every texture under assets/ from code
 ";
 
@@ -247,22 +252,37 @@ fn bench_sizes() -> anyhow::Result<()> {
 /// `xtask/gpu-bench.sh` saved in `RAW` (`gpu.txt`, `sizes.txt`,
 /// `CHAPTER.txt`): `OUT/sizes.md` and `OUT/CHAPTER.md` for each chapter saved.
 fn bench_saved(raw: &Path, out: &Path) -> anyhow::Result<()> {
+    let shown = |path: &Path| path.strip_prefix(root()).unwrap_or(path).display().to_string();
+    let pages = saved_tables(raw, &format!("cargo xtask bench saved {} {}", shown(raw), shown(out)))?;
+    std::fs::create_dir_all(out).with_context(|| format!("cannot create {}", out.display()))?;
+    for (name, page) in &pages {
+        std::fs::write(out.join(name), page)?;
+    }
+    println!("wrote {} tables into {}", pages.len(), out.display());
+    Ok(())
+}
+
+/// The pages `cargo xtask bench saved` writes from the files in `raw`, as
+/// (file name, text): `sizes.md`, then `CHAPTER.md` for each chapter saved.
+/// `command` is how their headings say they were made.
+fn saved_tables(raw: &Path, command: &str) -> anyhow::Result<Vec<(String, String)>> {
     let read = |name: &str| {
         let path = raw.join(name);
         std::fs::read_to_string(&path).with_context(|| format!("cannot read {}", path.display()))
     };
-    let cpu = bench_tables::saved_cpu(&read("gpu.txt")?, &raw.join("gpu.txt"))?;
-    let shown = |path: &Path| path.strip_prefix(root()).unwrap_or(path).display().to_string();
-    let command = format!("cargo xtask bench saved {} {}", shown(raw), shown(out));
-    std::fs::create_dir_all(out).with_context(|| format!("cannot create {}", out.display()))?;
+    let gpu_txt = read("gpu.txt")?;
+    let cpu = bench_tables::saved_cpu(&gpu_txt, &raw.join("gpu.txt"))?;
+    // What the GPU is for drawing, said under every table it measured.
+    let about = bench_tables::what_the_gpu_is(&gpu_txt).map(|about| format!("\n\n{about}")).unwrap_or_default();
     let runs = bench_tables::parse_size_runs(&read("sizes.txt")?, &raw.join("sizes.txt"))?;
     let (adapter, table) = bench_tables::sizes_table(&runs)?;
-    let page = format!(
-        "Measured by `xtask/gpu-bench.sh` (release build, each chapter's first view, 10 frames at each size; \
-         median frame), tabulated by `{command}`: {adapter}; CPU: {cpu}.\n\n{table}"
-    );
-    std::fs::write(out.join("sizes.md"), page)?;
-    let mut written = 0;
+    let mut pages = vec![(
+        "sizes.md".to_string(),
+        format!(
+            "Measured by `xtask/gpu-bench.sh` (release build, each chapter's first view, 10 frames at each size; \
+             median frame), tabulated by `{command}`: {adapter}; CPU: {cpu}.{about}\n\n{table}"
+        ),
+    )];
     for chapter in chapter_names()? {
         let name = format!("{chapter}.txt");
         if !raw.join(&name).exists() {
@@ -271,13 +291,11 @@ fn bench_saved(raw: &Path, out: &Path) -> anyhow::Result<()> {
         let (heading, tables) = bench_tables::chapter_tables(&chapter, &read(&name)?, &raw.join(&name))?;
         let page = format!(
             "Measured by `xtask/gpu-bench.sh` (release build, `{chapter} --bench --size 1280x720`), tabulated by \
-             `{command}`: {heading}; CPU: {cpu}.\n\n{tables}"
+             `{command}`: {heading}; CPU: {cpu}.{about}\n\n{tables}"
         );
-        std::fs::write(out.join(format!("{chapter}.md")), page)?;
-        written += 1;
+        pages.push((format!("{chapter}.md"), page));
     }
-    println!("wrote {} and {written} chapters' tables into {}", out.join("sizes.md").display(), out.display());
-    Ok(())
+    Ok(pages)
 }
 
 /// Runs a chapter binary with `args` and returns what it printed.
@@ -389,4 +407,53 @@ fn bench(args: &[String]) -> anyhow::Result<()> {
         bench_sizes()?;
     }
     Ok(())
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// The GPU tables in the book are what `cargo xtask bench saved` makes
+    /// of the raw files kept beside them: made again into a temporary
+    /// folder, every file must be the same, and no table may be left over.
+    #[test]
+    fn the_gpu_tables_are_made_from_their_raw_files() {
+        let (raw, tables) = (root().join("book/src/bench/gpu/raw"), root().join("book/src/bench/gpu"));
+        let scratch = std::env::temp_dir().join(format!("xtask-gpu-tables-{}", std::process::id()));
+        let remake = "cargo xtask bench saved book/src/bench/gpu/raw book/src/bench/gpu";
+        std::fs::create_dir_all(&scratch).unwrap();
+        for (name, page) in saved_tables(&raw, remake).unwrap() {
+            std::fs::write(scratch.join(name), page).unwrap();
+        }
+        let remake = format!("run `{remake}`");
+        let mut problems = Vec::new();
+        let names = |dir: &Path| -> Vec<String> {
+            let mut names: Vec<String> = std::fs::read_dir(dir)
+                .unwrap()
+                .map(|e| e.unwrap().file_name().to_string_lossy().to_string())
+                .filter(|n| n.ends_with(".md"))
+                .collect();
+            names.sort();
+            names
+        };
+        for name in names(&scratch) {
+            let made = std::fs::read_to_string(scratch.join(&name)).unwrap();
+            match std::fs::read_to_string(tables.join(&name)) {
+                Ok(kept) if kept == made => {}
+                Ok(kept) => {
+                    let line = kept.lines().zip(made.lines()).position(|(a, b)| a != b).map_or(0, |l| l + 1);
+                    problems
+                        .push(format!("book/src/bench/gpu/{name} differs from its raw file at line {line}; {remake}"))
+                }
+                Err(_) => problems.push(format!("book/src/bench/gpu/{name} is missing; {remake}")),
+            }
+        }
+        for name in names(&tables) {
+            if !scratch.join(&name).exists() {
+                problems.push(format!("book/src/bench/gpu/{name} has no raw file in book/src/bench/gpu/raw"));
+            }
+        }
+        std::fs::remove_dir_all(&scratch).unwrap();
+        assert!(problems.is_empty(), "{}", problems.join("\n"));
+    }
 }

@@ -191,6 +191,13 @@ fn exercise_4_a_typo_is_reported_at_its_line_and_the_last_good_pipeline_draws_on
     let line = broken.lines().position(|l| l == TYPO).unwrap() + 1;
     assert!(error.contains(&format!("triangle/triangle.wgsl:{line}:12")), "{error}");
     assert!(error.contains(r#"expected assignment or increment/decrement, found "vec4""#), "{error}");
+    // The page quotes the message at that line and column.
+    let page = std::fs::read_to_string(concat!(env!("CARGO_MANIFEST_DIR"), "/../../book/src/01-triangle.md")).unwrap();
+    for quoted in
+        [format!("triangle/triangle.wgsl:{line}:12"), format!("{line} │     retrun"), format!("Line {line}, but")]
+    {
+        assert!(page.contains(&quoted), "page 01 should quote `{quoted}`, as naga reports it");
+    }
     // Meanwhile the window draws with the last pipeline that built.
     assert_eq!(capture(&gpu, &mut chapter, target, 0.0, 0).unwrap(), good);
 

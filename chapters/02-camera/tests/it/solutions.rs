@@ -252,10 +252,112 @@ fn exercise_5_a_hundred_cubes_are_a_hundred_draws_and_a_hundred_uniform_slots() 
     // 256-byte slot each in the objects' buffer (`object_stride` on a
     // device whose `min_uniform_buffer_offset_alignment` is WebGPU's
     // default, 256), of which `ObjectUniform` uses 144.
+    assert_eq!(size_of::<camera::uniforms::ObjectUniform>(), 144, "the size the page gives");
     let per_frame = |objects: usize| (objects + 1, (objects + 1) * 256);
     assert_eq!(per_frame(cubes.len()), (101, 25_856));
     // A hundred thousand: 100,001 draw calls and 25.6 MB of uniforms
     // written every frame. (Chapter 05 draws that many rocks in one call,
     // from 32 bytes of instance data each: 3.2 MB.)
     assert_eq!(per_frame(100_000), (100_001, 25_600_256));
+}
+
+// ANCHOR: reversed_projection
+/// Exercise 6: reversed depth. The camera's projection with near and far
+/// swapped puts the near plane at depth 1 and the far plane at 0; the
+/// pipeline then keeps the fragment whose depth is `Greater`, and the pass
+/// clears the depth buffer to 0.0 instead of 1.0.
+fn reversed_projection(camera: &Camera) -> Mat4 {
+    Mat4::perspective_rh(camera.fov_y, camera.aspect, camera.far, camera.near)
+}
+// ANCHOR_END: reversed_projection
+
+// ANCHOR: depth_step
+/// The smallest change in distance, straight ahead at `distance`, that a
+/// 32-bit float depth buffer can store as a different depth under
+/// `projection`: the depth the GPU stores there (z / w, an `f32`), the next
+/// `f32` towards the far plane, and the distance that depth stands for.
+fn depth_step(projection: Mat4, distance: f32, reversed: bool) -> f64 {
+    let clip = projection * Vec4::new(0.0, 0.0, -distance, 1.0);
+    let stored = clip.z / clip.w;
+    let next = if reversed { stored.next_down() } else { stored.next_up() };
+    // Depth is a + b / d for a perspective projection (w = d): solve for d.
+    let (a, b) = (f64::from(projection.z_axis.z), f64::from(projection.w_axis.z));
+    let distance_of = |depth: f32| b / (f64::from(depth) + a);
+    distance_of(next) - distance_of(stored)
+}
+// ANCHOR_END: depth_step
+
+#[test]
+fn exercise_6_reversed_depth_stores_far_distances_thousands_of_times_finer() {
+    // The overlay's near and far planes at the ends of their sliders, where
+    // the page suggests looking for z-fighting.
+    let camera = Camera { near: 0.01, far: 2000.0, ..Camera::looking_at(Vec3::ZERO, Vec3::NEG_Z, 16.0 / 9.0) };
+    let (standard, reversed) = (camera.projection(), reversed_projection(&camera));
+    // The reversed projection maps near to 1 and far to 0.
+    let depth = |m: Mat4, d: f32| {
+        let clip = m * Vec4::new(0.0, 0.0, -d, 1.0);
+        clip.z / clip.w
+    };
+    assert!((depth(reversed, camera.near) - 1.0).abs() < 1e-6 && depth(reversed, camera.far).abs() < 1e-6);
+    assert!(depth(standard, camera.near).abs() < 1e-6 && (depth(standard, camera.far) - 1.0).abs() < 1e-6);
+    // At 100 m: about 6 cm, and about 7 µm.
+    let (before, after) = (depth_step(standard, 100.0, false), depth_step(reversed, 100.0, true));
+    eprintln!(
+        "at 100 m: {:.1} mm standard, {:.4} mm reversed, {:.0} times finer",
+        before * 1e3,
+        after * 1e3,
+        before / after
+    );
+    assert!((0.055..0.065).contains(&before), "{before}");
+    assert!((5e-6..1e-5).contains(&after), "{after}");
+    assert!((7000.0..9500.0).contains(&(before / after)), "{}", before / after);
+    // Standard depth's step grows with the square of the distance (its
+    // depths crowd just below 1, where floats are 2⁻²⁴ apart). Reversed
+    // depth stores about n / d, and a float's spacing is a fixed share of
+    // its size, 2⁻²⁴ to 2⁻²³: the step is that share of the distance, times
+    // (1 − d / far), finer still towards the far plane.
+    for d in [1.0, 10.0, 100.0, 1000.0, 1900.0] {
+        let (standard_step, reversed_step) = (depth_step(standard, d, false), depth_step(reversed, d, true));
+        let relative = reversed_step / f64::from(d);
+        eprintln!(
+            "{d} m: standard {standard_step:.3e} m, reversed {reversed_step:.3e} m ({relative:.2e} of the distance)"
+        );
+        let share = 1.0 - f64::from(d / camera.far);
+        assert!(
+            (2f64.powi(-24) * share * 0.99..2f64.powi(-23) * share * 1.01).contains(&relative),
+            "{d} m: {relative}"
+        );
+        let expected = 2f64.powi(-24) * f64::from(d * d) / f64::from(camera.near);
+        assert!((standard_step / expected - 1.0).abs() < 0.05, "{d} m: {standard_step} against {expected}");
+    }
+}
+
+/// The page says what the primitives' volume check catches: a mesh wound
+/// inside out changes its sign, but one flipped triangle of chapter 02's
+/// sphere (32 × 16) moves it by at most 0.3 %, inside the test's 3 %; the
+/// check of each triangle's winding against its normals is what catches that.
+#[test]
+fn one_flipped_triangle_hides_in_the_volume_check_a_mesh_inside_out_does_not() {
+    let sphere = primitives::uv_sphere(32, 16);
+    let volume = |triangles: &mut dyn Iterator<Item = [Vec3; 3]>| -> f32 {
+        triangles.map(|[a, b, c]| a.dot(b.cross(c)) / 6.0).sum()
+    };
+    let whole = volume(&mut sphere.triangles());
+    let flipped_alone: Vec<f32> = (0..sphere.indices.len() / 3)
+        .map(|flipped| {
+            let mut triangles =
+                sphere.triangles().enumerate().map(|(i, [a, b, c])| if i == flipped { [a, c, b] } else { [a, b, c] });
+            1.0 - volume(&mut triangles) / whole
+        })
+        .collect();
+    let (least, most) = flipped_alone.iter().fold((f32::MAX, 0.0f32), |(l, m), &v| (l.min(v), m.max(v)));
+    eprintln!(
+        "one flipped triangle of {}: the volume moves by {:.3} to {:.3} %",
+        flipped_alone.len(),
+        least * 100.0,
+        most * 100.0
+    );
+    assert!(most > 0.0025 && most < 0.0035 && least > 0.0, "{least} {most}");
+    let inside_out = volume(&mut sphere.triangles().map(|[a, b, c]| [a, c, b]));
+    assert!((inside_out + whole).abs() < 1e-6);
 }
