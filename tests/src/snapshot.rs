@@ -1,5 +1,7 @@
-//! Comparing a rendered picture with its reference by NVIDIA's FLIP metric,
-//! which scores differences the way a viewer would notice them.
+//! Comparing a rendered picture with its reference: exactly (within one
+//! colour level) on the adapter the reference was made on, which draws the
+//! same bytes every run, and elsewhere by NVIDIA's FLIP metric, which
+//! scores differences the way a viewer would notice them.
 
 use std::fmt;
 use std::path::{Path, PathBuf};
@@ -45,6 +47,37 @@ impl fmt::Display for Comparison {
     }
 }
 
+/// How a picture must match its reference.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum Rule {
+    /// Every pixel within [`SAME_COLOUR`] of the reference in every
+    /// channel: on the adapter the reference was made on (the bless log
+    /// says which), where a picture is the same bytes run after run. A
+    /// one-pixel line of any length gone fails it.
+    Exact,
+    /// FLIP within a tolerance: on any other adapter, whose rasteriser
+    /// rounds and places edges its own way.
+    Perceptual(Tolerance),
+}
+
+impl fmt::Display for Rule {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self {
+            Self::Exact => write!(f, "exact (the adapter it was made on)"),
+            Self::Perceptual(_) => write!(f, "by FLIP (another adapter than the one it was made on)"),
+        }
+    }
+}
+
+/// How many pixels of `actual` differ from `reference` (same size) by more
+/// than [`SAME_COLOUR`] in some channel, and the largest difference.
+pub fn beyond_rounding(reference: &image::RgbaImage, actual: &image::RgbaImage) -> (usize, u8) {
+    reference.pixels().zip(actual.pixels()).fold((0, 0), |(count, worst), (a, b)| {
+        let most = (0..3).map(|c| a.0[c].abs_diff(b.0[c])).max().unwrap_or(0);
+        if most > SAME_COLOUR { (count + 1, worst.max(most)) } else { (count, worst) }
+    })
+}
+
 /// Why a snapshot did not pass.
 #[derive(Debug)]
 pub enum SnapshotError {
@@ -66,6 +99,15 @@ pub enum SnapshotError {
     TooDifferent {
         comparison: Comparison,
         tolerance: Tolerance,
+        actual: PathBuf,
+        diff: PathBuf,
+    },
+    /// On the adapter the reference was made on, pixels moved by more than
+    /// rounding.
+    NotExact {
+        pixels: usize,
+        worst: u8,
+        comparison: Comparison,
         actual: PathBuf,
         diff: PathBuf,
     },
@@ -104,6 +146,14 @@ impl fmt::Display for SnapshotError {
                 100.0 * tolerance.outliers,
                 Tolerance::OUTLIER_ERROR,
                 tolerance.patch,
+                actual.display(),
+                diff.display()
+            ),
+            Self::NotExact { pixels, worst, comparison, actual, diff } => write!(
+                f,
+                "{pixels} pixels differ by more than {SAME_COLOUR} colour level (up to {worst}), on the adapter the \
+                 reference was made on, which must draw it within {SAME_COLOUR} ({comparison}); actual: {}, FLIP \
+                 error map: {}",
                 actual.display(),
                 diff.display()
             ),
@@ -245,10 +295,11 @@ pub fn tells_apart(a: &image::RgbaImage, b: &image::RgbaImage, tolerance: Tolera
 }
 // ANCHOR_END: tells_apart
 
-/// Checks `actual` against the reference PNG. On failure the rendered
-/// picture is written beside the reference as `<view>-actual.png`, with the
-/// FLIP error map as `<view>-diff.png`. Stale ones are removed on success.
-pub fn check(actual: &image::RgbaImage, reference: &Path, tolerance: Tolerance) -> Result<Comparison, SnapshotError> {
+/// Checks `actual` against the reference PNG by `rule`. On failure the
+/// rendered picture is written beside the reference as `<view>-actual.png`,
+/// with the FLIP error map as `<view>-diff.png`. Stale ones are removed on
+/// success.
+pub fn check(actual: &image::RgbaImage, reference: &Path, rule: Rule) -> Result<Comparison, SnapshotError> {
     let actual_path = sibling(reference, "actual");
     let diff_path = sibling(reference, "diff");
     if !reference.exists() {
@@ -271,16 +322,24 @@ pub fn check(actual: &image::RgbaImage, reference: &Path, tolerance: Tolerance) 
         });
     }
     let (comparison, diff) = compare(&expected, actual);
-    if comparison.passes(tolerance) {
+    let (pixels, worst) = beyond_rounding(&expected, actual);
+    let passes = match rule {
+        Rule::Exact => pixels == 0,
+        Rule::Perceptual(tolerance) => comparison.passes(tolerance),
+    };
+    if passes {
         let _ = std::fs::remove_file(&actual_path);
         let _ = std::fs::remove_file(&diff_path);
-        Ok(comparison)
-    } else {
-        save(actual, &actual_path)?;
-        diff.save(&diff_path)
-            .map_err(|e| SnapshotError::CannotWrite { path: diff_path.clone(), reason: e.to_string() })?;
-        Err(SnapshotError::TooDifferent { comparison, tolerance, actual: actual_path, diff: diff_path })
+        return Ok(comparison);
     }
+    save(actual, &actual_path)?;
+    diff.save(&diff_path).map_err(|e| SnapshotError::CannotWrite { path: diff_path.clone(), reason: e.to_string() })?;
+    Err(match rule {
+        Rule::Exact => SnapshotError::NotExact { pixels, worst, comparison, actual: actual_path, diff: diff_path },
+        Rule::Perceptual(tolerance) => {
+            SnapshotError::TooDifferent { comparison, tolerance, actual: actual_path, diff: diff_path }
+        }
+    })
 }
 
 #[cfg(test)]
@@ -378,7 +437,7 @@ mod tests {
     fn a_missing_reference_fails_and_writes_the_actual_picture() {
         let dir = temp_dir("missing");
         let reference = dir.join("view.png");
-        let error = check(&scene(0), &reference, Tolerance::DEFAULT).unwrap_err();
+        let error = check(&scene(0), &reference, Rule::Perceptual(Tolerance::DEFAULT)).unwrap_err();
         assert!(matches!(error, SnapshotError::Missing { .. }), "{error}");
         assert!(dir.join("view-actual.png").exists());
         std::fs::remove_dir_all(dir).unwrap();
@@ -389,13 +448,13 @@ mod tests {
         let dir = temp_dir("moved");
         let reference = dir.join("view.png");
         scene(0).save(&reference).unwrap();
-        assert!(check(&scene(0), &reference, Tolerance::DEFAULT).is_ok());
-        let error = check(&scene(6), &reference, Tolerance::DEFAULT).unwrap_err();
+        assert!(check(&scene(0), &reference, Rule::Perceptual(Tolerance::DEFAULT)).is_ok());
+        let error = check(&scene(6), &reference, Rule::Perceptual(Tolerance::DEFAULT)).unwrap_err();
         let SnapshotError::TooDifferent { comparison, .. } = &error else { panic!("{error}") };
         assert!(comparison.outliers > 0.05, "{comparison}");
         assert!(dir.join("view-actual.png").exists() && dir.join("view-diff.png").exists());
         // Passing again clears the stale failure pictures.
-        assert!(check(&scene(0), &reference, Tolerance::DEFAULT).is_ok());
+        assert!(check(&scene(0), &reference, Rule::Perceptual(Tolerance::DEFAULT)).is_ok());
         assert!(!dir.join("view-actual.png").exists());
         std::fs::remove_dir_all(dir).unwrap();
     }
@@ -406,7 +465,10 @@ mod tests {
         let reference = dir.join("view.png");
         scene(0).save(&reference).unwrap();
         let small = image::RgbaImage::new(8, 8);
-        assert!(matches!(check(&small, &reference, Tolerance::DEFAULT), Err(SnapshotError::WrongSize { .. })));
+        assert!(matches!(
+            check(&small, &reference, Rule::Perceptual(Tolerance::DEFAULT)),
+            Err(SnapshotError::WrongSize { .. })
+        ));
         std::fs::remove_dir_all(dir).unwrap();
     }
 }

@@ -2,8 +2,9 @@
 //! view by view: against its reference image, for purity (a live instance
 //! after every other view draws what a fresh one draws), and against its
 //! bench table; then the checks on the records themselves: every chapter
-//! crate has one, no reference is left over, the README and the book's
-//! summary follow them, and no chapter uses another's `Chapter` type.
+//! crate has one, no reference is left over, every reference is in the
+//! bless log, the README and the book's summary follow them, and no
+//! chapter uses another's `Chapter` type.
 
 use std::collections::BTreeSet;
 use std::path::Path;
@@ -24,6 +25,7 @@ fn main() {
         .collect();
     trials.push(Trial::test("every_chapter_crate_is_registered", every_chapter_crate_is_registered));
     trials.push(Trial::test("no_stale_references", no_stale_references));
+    trials.push(Trial::test("every_reference_is_in_the_bless_log", every_reference_is_in_the_bless_log));
     trials.push(Trial::test("readme_and_summary_follow_the_records", readme_and_summary_follow_the_records));
     trials.push(Trial::test("chapters_compose_pieces_not_chapters", chapters_compose_pieces_not_chapters));
     libtest_mimic::run(&Arguments::from_args(), trials).exit();
@@ -51,13 +53,16 @@ fn every_chapter_crate_is_registered() -> Result<(), Failed> {
 fn no_stale_references() -> Result<(), Failed> {
     for dir in std::fs::read_dir(snapshots::snapshot_dir()).map_err(|e| e.to_string())? {
         let dir = dir.map_err(|e| e.to_string())?.path();
+        if !dir.is_dir() {
+            continue; // the bless log
+        }
         let chapter = dir.file_name().unwrap_or_default().to_string_lossy().to_string();
         let entry = snapshots::find(&chapter).ok_or_else(|| format!("{} belongs to no chapter", dir.display()))?;
         for file in std::fs::read_dir(&dir).map_err(|e| e.to_string())? {
             let path = file.map_err(|e| e.to_string())?.path();
             let stem = path.file_stem().unwrap_or_default().to_string_lossy().to_string();
-            if stem.ends_with("-actual") || stem.ends_with("-diff") {
-                continue; // left by a failing run, ignored by git
+            if stem.ends_with("-actual") || stem.ends_with("-diff") || stem.ends_with("-old") {
+                continue; // left by a failing run or a bless, ignored by git
             }
             if !entry.views.iter().any(|v| v.name == stem && v.snapshot) {
                 return Err(format!("{} is not a view of {chapter}", path.display()).into());
@@ -65,6 +70,15 @@ fn no_stale_references() -> Result<(), Failed> {
         }
     }
     Ok(())
+}
+
+/// A reference changes only by a bless, which records its bytes' hash in
+/// the log: a picture edited by hand, copied in from elsewhere or written
+/// by a bless that was not recorded fails here, named.
+fn every_reference_is_in_the_bless_log() -> Result<(), Failed> {
+    let log = snapshots::blessings::Log::read().map_err(|e| format!("{e:#}"))?;
+    let problems = snapshots::blessings::unlogged_references(&log).map_err(|e| format!("{e:#}"))?;
+    if problems.is_empty() { Ok(()) } else { Err(problems.join("\n").into()) }
 }
 
 /// The README's chapter table and the book's summary are written from the

@@ -44,19 +44,24 @@ pub fn build(check_snapshots: bool) -> anyhow::Result<()> {
 }
 
 /// Copies `tests/snapshots/<chapter>/<view>.png` to `book/src/figures/`,
-/// leaving out the `-actual` and `-diff` pictures of failed runs.
+/// leaving out the `-actual` and `-diff` pictures of failed runs, the
+/// `-old` ones a bless keeps, and the bless log.
 fn copy_figures(from: &Path, to: &Path) -> anyhow::Result<()> {
     if to.exists() {
         std::fs::remove_dir_all(to)?;
     }
     for chapter in std::fs::read_dir(from).with_context(|| format!("cannot read {}", from.display()))? {
         let chapter = chapter?.path();
+        if !chapter.is_dir() {
+            continue;
+        }
         let target = to.join(chapter.file_name().context("chapter folder")?);
         std::fs::create_dir_all(&target)?;
         for file in std::fs::read_dir(&chapter)? {
             let file = file?.path();
             let name = file.file_name().context("file name")?.to_string_lossy().to_string();
-            if name.ends_with(".png") && !name.ends_with("-actual.png") && !name.ends_with("-diff.png") {
+            let left_over = ["-actual.png", "-diff.png", "-old.png"].iter().any(|s| name.ends_with(s));
+            if name.ends_with(".png") && !left_over {
                 std::fs::copy(&file, target.join(&name))?;
             }
         }

@@ -4,7 +4,9 @@
 //!   (which includes the snapshot tests), every chapter in a window under
 //!   Xvfb driven by xdotool, the book, and every chapter's page in headless
 //!   Chromium.
-//! - `snapshot [--bless] [CHAPTER...]`: compare with, or rewrite, the reference images.
+//! - `snapshot [CHAPTER[/VIEW]...]`: compare with the reference images;
+//!   `snapshot --bless CHAPTER[/VIEW]... --reason "..."`: rewrite the ones
+//!   that changed, each recorded in `tests/snapshots/BLESSINGS.md`.
 //! - `book`: check snapshots, copy them in as figures, check anchors, build
 //!   every chapter for the browser and the HTML, check links.
 //! - `serve [PORT]`: the built book on http://127.0.0.1:PORT/.
@@ -62,7 +64,9 @@ fn main() -> ExitCode {
 
 const USAGE: &str = "\
 cargo xtask test                           everything CI runs (prerequisites, fmt, clippy, tests, snapshots, book)
-cargo xtask snapshot [--bless] [CHAPTER..] compare every view with its reference; --bless rewrites them
+cargo xtask snapshot [CHAPTER[/VIEW]..]    compare every view (or these) with its reference
+cargo xtask snapshot --bless CHAPTER[/VIEW].. --reason \"..\"
+                                           rewrite the references that changed, each logged with the reason
 cargo xtask book                           check snapshots, copy figures, build the chapters for the browser and book/book/
 cargo xtask serve [PORT]                   serve book/book on http://127.0.0.1:PORT/ (default 3000)
 cargo xtask web                            only rebuild the chapters' browser pages, book/book/live/
