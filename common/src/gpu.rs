@@ -22,10 +22,26 @@ pub struct Gpu {
 
 /// What a chapter needs beyond the WebGPU baseline. Optional features are
 /// enabled when the adapter has them; required ones make setup fail clearly.
-#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub struct GpuNeeds {
     pub required: wgpu::Features,
     pub optional: wgpu::Features,
+    /// What the chapter needs of an adapter that is less than a full
+    /// WebGPU one (OpenGL, WebGL2): compute shaders, storage buffers in
+    /// vertex shaders, indirect draws. Setup on an adapter without them
+    /// fails with one line naming what is missing.
+    pub downlevel: wgpu::DownlevelFlags,
+}
+
+/// Nothing beyond WebGPU's baseline, and nothing WebGL2 lacks.
+impl Default for GpuNeeds {
+    fn default() -> Self {
+        Self {
+            required: wgpu::Features::empty(),
+            optional: wgpu::Features::empty(),
+            downlevel: wgpu::DownlevelFlags::empty(),
+        }
+    }
 }
 
 /// Setup failed in a way a learner can fix: the message says how.
@@ -83,6 +99,11 @@ pub async fn window_instance(desc: wgpu::InstanceDescriptor) -> wgpu::Instance {
     wgpu::Instance::new(desc)
 }
 
+/// `COMPUTE_SHADERS, VERTEX_STORAGE`: flags by name, for a one-line message.
+fn names(flags: wgpu::DownlevelFlags) -> String {
+    flags.iter_names().map(|(name, _)| name).collect::<Vec<_>>().join(", ")
+}
+
 impl Gpu {
     /// A device with no window: for screenshots, benches and tests.
     ///
@@ -90,18 +111,18 @@ impl Gpu {
     /// the primary APIs are tried first and OpenGL only if they find
     /// nothing, which avoids GL driver noise on machines with Vulkan.
     pub fn headless(needs: GpuNeeds) -> Result<Self, NoAdapter> {
-        let instance = |backends: Option<wgpu::Backends>| {
-            let mut desc = wgpu::InstanceDescriptor::new_without_display_handle_from_env();
-            if let Some(backends) = backends {
-                desc.backends = backends;
-            }
-            wgpu::Instance::new(desc)
-        };
-        if wgpu::Backends::from_env().is_some() {
-            return pollster::block_on(Self::open(instance(None), None, needs));
+        if let Some(backends) = wgpu::Backends::from_env() {
+            return Self::headless_on(backends, needs);
         }
-        pollster::block_on(Self::open(instance(Some(wgpu::Backends::PRIMARY)), None, needs))
-            .or_else(|_| pollster::block_on(Self::open(instance(Some(wgpu::Backends::GL)), None, needs)))
+        Self::headless_on(wgpu::Backends::PRIMARY, needs).or_else(|_| Self::headless_on(wgpu::Backends::GL, needs))
+    }
+
+    /// [`Gpu::headless`] on `backends` only: the snapshot test draws every
+    /// chapter on OpenGL too.
+    pub fn headless_on(backends: wgpu::Backends, needs: GpuNeeds) -> Result<Self, NoAdapter> {
+        let mut desc = wgpu::InstanceDescriptor::new_without_display_handle_from_env();
+        desc.backends = backends;
+        pollster::block_on(Self::open(wgpu::Instance::new(desc), None, needs))
     }
 
     /// A device that can present to `surface` (created from `instance`).
@@ -123,6 +144,18 @@ impl Gpu {
         let missing = needs.required - adapter.features();
         if !missing.is_empty() {
             return Err(NoAdapter { reason: format!("{} lacks the features {missing:?}", adapter.get_info().name) });
+        }
+        let lacking = needs.downlevel - adapter.get_downlevel_capabilities().flags;
+        if !lacking.is_empty() {
+            let info = adapter.get_info();
+            return Err(NoAdapter {
+                reason: format!(
+                    "{} on {:?} cannot do what this chapter needs: {}",
+                    info.name,
+                    info.backend,
+                    names(lacking)
+                ),
+            });
         }
         let features = needs.required | (needs.optional & adapter.features());
         let (device, queue) = adapter

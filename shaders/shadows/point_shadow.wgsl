@@ -21,7 +21,7 @@ struct PointShadow {
     // point's distance; z: how far apart the PCF taps are, in texels.
     params: vec4<f32>,
 };
-// Bindings 1 to 4 of the scene's group 2 (binding 0 is the surface
+// Bindings 1 to 5 of the scene's group 2 (binding 0 is the surface
 // sampler): WebGPU promises a pipeline four groups, and the scene uses all four.
 @group(2) @binding(1) var point_map: texture_depth_cube;
 // One texel's answer, and four texels' answers blended, as the sun's.
@@ -29,6 +29,9 @@ struct PointShadow {
 @group(2) @binding(3) var point_compare_linear: sampler_comparison;
 // Storage, not uniform: `point_lit` switches on `options.x` (lights.wgsl's `frame` says why).
 @group(2) @binding(4) var<storage, read> point_shadow: PointShadow;
+// The cube again, for the blended lookups: OpenGL's GLSL reads a texture
+// through one sampler only.
+@group(2) @binding(5) var point_map_blended: texture_depth_cube;
 // ANCHOR_END: bindings
 
 // ANCHOR: lookup
@@ -71,7 +74,7 @@ fn point_lit(world: vec3<f32>, n: vec3<f32>) -> f32 {
     for (var y = -1; y <= 1; y++) {
         for (var x = -1; x <= 1; x++) {
             let tap = axis + (right * f32(x) + up * f32(y)) * step;
-            sum += textureSampleCompareLevel(point_map, point_compare_linear, tap, reference);
+            sum += textureSampleCompareLevel(point_map_blended, point_compare_linear, tap, reference);
         }
     }
     return sum / 9.0;

@@ -26,6 +26,14 @@ struct Shadow {
 @group(3) @binding(2) var compare_linear: sampler_comparison;
 // Storage, not uniform: `sunlit` switches on `options.x` (lights.wgsl's `frame` says why).
 @group(3) @binding(3) var<storage, read> shadow: Shadow;
+// The same map again, as plain floats through a nearest sampler, for PCSS's
+// blocker search, which needs the stored depths themselves: OpenGL's GLSL
+// cannot fetch the texels of a texture declared as depth.
+@group(3) @binding(4) var shadow_depths: texture_2d<f32>;
+@group(3) @binding(5) var depth_nearest: sampler;
+// And once more for the blended comparisons: GLSL reads a texture through
+// one sampler only.
+@group(3) @binding(6) var shadow_map_blended: texture_depth_2d;
 // ANCHOR_END: bindings
 
 // ANCHOR: project
@@ -86,7 +94,7 @@ fn pcf_3x3(uv: vec2<f32>, depth: f32, texel: f32) -> f32 {
     for (var y = -1; y <= 1; y++) {
         for (var x = -1; x <= 1; x++) {
             let offset = vec2<f32>(f32(x), f32(y)) * texel;
-            sum += textureSampleCompareLevel(shadow_map, compare_linear, uv + offset, depth);
+            sum += textureSampleCompareLevel(shadow_map_blended, compare_linear, uv + offset, depth);
         }
     }
     return sum / 9.0;
@@ -98,7 +106,7 @@ fn poisson(uv: vec2<f32>, depth: f32, texel: f32, radius: f32, pixel: vec2<f32>)
     var sum = 0.0;
     for (var i = 0u; i < 16u; i++) {
         let offset = poisson_tap(i, angle, radius) * texel;
-        sum += textureSampleCompareLevel(shadow_map, compare_linear, uv + offset, depth);
+        sum += textureSampleCompareLevel(shadow_map_blended, compare_linear, uv + offset, depth);
     }
     return sum / 16.0;
 }
@@ -118,7 +126,7 @@ fn pcss(uv: vec2<f32>, depth: f32, texel: f32, pixel: vec2<f32>) -> f32 {
     for (var i = 0u; i < 16u; i++) {
         let at = uv + poisson_tap(i, angle, search) * texel;
         let texel_at = clamp(vec2<i32>(at * f32(size)), vec2<i32>(0), vec2<i32>(size - 1));
-        let stored = textureLoad(shadow_map, texel_at, 0);
+        let stored = textureSampleLevel(shadow_depths, depth_nearest, (vec2<f32>(texel_at) + 0.5) / f32(size), 0.0).r;
         if stored < depth {
             blockers += 1.0;
             blocker_depth += stored;

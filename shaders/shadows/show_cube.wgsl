@@ -13,7 +13,9 @@ struct Unfolded {
     // x: the target's width over its height, y: a face's side in pixels.
     shape: vec4<f32>,
 };
-@group(0) @binding(0) var cube: texture_depth_cube;
+// Read as plain floats, as chapter 02's depth view reads its depth buffer:
+// OpenGL's GLSL samples a texture declared as depth only to compare.
+@group(0) @binding(0) var cube: texture_cube<f32>;
 @group(0) @binding(1) var nearest: sampler;
 @group(0) @binding(2) var<uniform> unfolded: Unfolded;
 
@@ -63,6 +65,6 @@ fn fs_unfolded(in: FullscreenOutput) -> @location(0) vec4<f32> {
     let i = u32(face) * 3u;
     let direction = unfolded.axes[i].xyz + unfolded.axes[i + 1u].xyz * (st.x * 2.0 - 1.0)
         + unfolded.axes[i + 2u].xyz * (st.y * 2.0 - 1.0);
-    let distance = textureSampleLevel(cube, nearest, direction, 0);
+    let distance = textureSampleLevel(cube, nearest, direction, 0.0).r;
     return vec4<f32>(vec3<f32>(distance), 1.0);
 }

@@ -8,8 +8,12 @@ struct Stretch {
     // width over its height.
     range: vec4<f32>,
 };
-@group(0) @binding(0) var shadow_map: texture_depth_2d;
+// The depth map read as plain floats through a nearest sampler, as
+// chapter 02's depth view does: OpenGL's GLSL cannot fetch the texels of a
+// texture declared as depth.
+@group(0) @binding(0) var shadow_map: texture_2d<f32>;
 @group(0) @binding(1) var<uniform> stretch: Stretch;
+@group(0) @binding(2) var nearest: sampler;
 
 @vertex
 fn vs_fullscreen(@builtin(vertex_index) index: u32) -> FullscreenOutput {
@@ -26,7 +30,7 @@ fn fs_depth(in: FullscreenOutput) -> @location(0) vec4<f32> {
         return vec4<f32>(0.02, 0.03, 0.06, 1.0);
     }
     let texel = clamp(vec2<i32>(uv * size), vec2<i32>(0), vec2<i32>(size) - 1);
-    let depth = textureLoad(shadow_map, texel, 0);
+    let depth = textureSampleLevel(shadow_map, nearest, (vec2<f32>(texel) + 0.5) / size, 0.0).r;
     let shade = clamp((depth - stretch.range.x) / (stretch.range.y - stretch.range.x), 0.0, 1.0);
     return vec4<f32>(vec3<f32>(shade), 1.0);
 }

@@ -30,13 +30,16 @@ struct Water {
 @group(2) @binding(0) var<uniform> water: Water;
 @group(2) @binding(1) var reflection_texture: texture_2d<f32>;
 @group(2) @binding(2) var refraction_texture: texture_2d<f32>;
-@group(2) @binding(3) var refraction_depth: texture_depth_2d;
+// The refraction's depth buffer, read as plain floats through a nearest
+// sampler: chapter 02's depth view says why.
+@group(2) @binding(3) var refraction_depth: texture_2d<f32>;
 @group(2) @binding(4) var dudv_map: texture_2d<f32>;
 @group(2) @binding(5) var normal_map: texture_2d<f32>;
 @group(2) @binding(6) var repeat_sampler: sampler;
 @group(2) @binding(7) var clamp_sampler: sampler;
 @group(2) @binding(8) var water_texture: texture_2d<f32>;
 @group(2) @binding(9) var water_texture_sampler: sampler;
+@group(2) @binding(10) var depth_nearest: sampler;
 // ANCHOR_END: uniforms
 
 struct WaterOutput {
@@ -87,7 +90,8 @@ fn fs_water(in: WaterOutput) -> @location(0) vec4<f32> {
     // How deep the water is here: the refraction's depth buffer holds the
     // lake bed, the fragment's own depth the surface.
     let size = vec2<f32>(textureDimensions(refraction_depth));
-    let bed = textureLoad(refraction_depth, vec2<i32>(refraction_uv * (size - 1.0)), 0);
+    let texel = vec2<f32>(vec2<i32>(refraction_uv * (size - 1.0)));
+    let bed = textureSampleLevel(refraction_depth, depth_nearest, (texel + 0.5) / size, 0.0).r;
     let depth = linear_depth(bed) - linear_depth(in.clip_position.z);
     let shallow = clamp(depth / 1.5, 0.0, 1.0);
 

@@ -17,7 +17,7 @@ use std::sync::{Arc, Mutex};
 
 use common::glam::Vec3;
 use common::headless::OFFSCREEN_FORMAT;
-use common::{Camera, Gpu, GpuNeeds, Target, ViewKind, anyhow, image};
+use common::{Camera, Gpu, GpuNeeds, NoAdapter, Target, ViewKind, anyhow, image, wgpu};
 pub use course::{AnyChapter, Record, chapters, find};
 
 use blessings::{Entry, Log};
@@ -66,8 +66,12 @@ pub fn reference_path(chapter: &str, view: &str) -> PathBuf {
     snapshot_dir().join(chapter).join(format!("{view}.png"))
 }
 
-/// Devices not lent out at the moment, with what was cached on them.
-static IDLE_DEVICES: Mutex<Vec<(GpuNeeds, Arc<Gpu>)>> = Mutex::new(Vec::new());
+/// Devices not lent out at the moment, with what was cached on them, by
+/// the needs and backends they were made for.
+static IDLE_DEVICES: Mutex<Vec<(Key, Arc<Gpu>)>> = Mutex::new(Vec::new());
+
+/// What a device was made for: the chapter's needs, on which backends.
+type Key = (GpuNeeds, wgpu::Backends);
 
 /// A device lent to one thread until the lease is dropped, then kept for
 /// the next chapter with the same needs, which finds the terrain and rocks
@@ -75,7 +79,7 @@ static IDLE_DEVICES: Mutex<Vec<(GpuNeeds, Arc<Gpu>)>> = Mutex::new(Vec::new());
 /// software rasteriser runs one device's submissions one after another, so
 /// two threads on one device would wait for each other.
 pub struct Lease {
-    needs: GpuNeeds,
+    key: Key,
     gpu: Option<Arc<Gpu>>,
 }
 
@@ -89,22 +93,29 @@ impl std::ops::Deref for Lease {
 impl Drop for Lease {
     fn drop(&mut self) {
         if let Some(gpu) = self.gpu.take() {
-            IDLE_DEVICES.lock().unwrap_or_else(|e| e.into_inner()).push((self.needs, gpu));
+            IDLE_DEVICES.lock().unwrap_or_else(|e| e.into_inner()).push((self.key, gpu));
         }
     }
 }
 
 /// Lends a device with `needs`: an idle one if there is one, else a new one.
 pub fn lease(needs: GpuNeeds) -> anyhow::Result<Lease> {
+    lease_on(needs, wgpu::Backends::empty())
+}
+
+/// [`lease`] on `backends` (empty: as `Gpu::headless` chooses).
+pub fn lease_on(needs: GpuNeeds, backends: wgpu::Backends) -> anyhow::Result<Lease> {
+    let key = (needs, backends);
     let idle = {
         let mut devices = IDLE_DEVICES.lock().unwrap_or_else(|e| e.into_inner());
-        devices.iter().position(|(n, _)| *n == needs).map(|i| devices.swap_remove(i).1)
+        devices.iter().position(|(k, _)| *k == key).map(|i| devices.swap_remove(i).1)
     };
     let gpu = match idle {
         Some(gpu) => gpu,
-        None => Arc::new(Gpu::headless(needs)?),
+        None if backends.is_empty() => Arc::new(Gpu::headless(needs)?),
+        None => Arc::new(Gpu::headless_on(backends, needs)?),
     };
-    Ok(Lease { needs, gpu: Some(gpu) })
+    Ok(Lease { key, gpu: Some(gpu) })
 }
 
 /// The outcome for one view.
@@ -359,6 +370,63 @@ fn views_told_apart(record: &Record) -> Vec<String> {
     }
     problems
 }
+
+// ANCHOR: gl
+/// How far a chapter's first view drawn by OpenGL may be from its
+/// reference, drawn by Vulkan: llvmpipe's GL and lavapipe share Mesa's
+/// rasteriser but not the path from WGSL to it (GLSL, not SPIR-V), and
+/// round some shading apart. Measured on this machine's llvmpipe GL 4.5,
+/// the eleven first views came within FLIP mean 0.0043, 0.007 % of pixels
+/// above 0.3 and a worst patch of 0.124 (chapter 07's lake) of their
+/// references: the default tolerance holds, with room.
+pub const GL_TOLERANCE: Tolerance = Tolerance::DEFAULT;
+
+/// What OpenGL made of a chapter: its first view's picture within
+/// [`GL_TOLERANCE`] of the reference, or the one line a chapter that needs
+/// more than the adapter has stops with.
+pub enum OnGl {
+    Drawn(Comparison),
+    Refused(String),
+}
+
+/// Opens `record`'s chapter on OpenGL (`WGPU_BACKEND=gl`: llvmpipe's GL 4.5
+/// with Debian's `libegl1 libegl-mesa0 libgles2 libgl1-mesa-dri`) and
+/// draws its first view, or takes its refusal. A panic (a shader the GL
+/// backend cannot translate, a feature it lacks) fails the caller's test.
+pub fn draw_on_gl(record: &Record) -> anyhow::Result<OnGl> {
+    let gpu = match lease_on(record.needs, wgpu::Backends::GL) {
+        Ok(gpu) => gpu,
+        Err(error) => {
+            let Some(refusal) = error.downcast_ref::<NoAdapter>() else { return Err(error) };
+            // What the chapter's binary prints before it exits with 2.
+            let line = format!("error: {refusal}");
+            anyhow::ensure!(
+                line.contains("cannot do what this chapter needs"),
+                "no OpenGL adapter ({line}): install Debian's libegl1 libegl-mesa0 libgles2 libgl1-mesa-dri \
+                 (`cargo xtask test` does)"
+            );
+            anyhow::ensure!(line.lines().count() == 1, "a refusal of more than one line: {line}");
+            return Ok(OnGl::Refused(line));
+        }
+    };
+    let info = gpu.adapter.get_info();
+    anyhow::ensure!(info.backend == wgpu::Backend::Gl, "asked for OpenGL, got {:?}", info.backend);
+    let mut chapter = (record.open)(&gpu, target())?;
+    let view = record.views.iter().position(|v| v.snapshot).expect("a chapter has a snapshot view");
+    chapter.show(view);
+    let (picture, _) = chapter.render(&gpu, view, record.snapshot_time)?;
+    let reference = reference_path(record.name, record.views[view].name);
+    let shown = std::env::temp_dir().join(format!("{}-{}-gl", record.name, record.views[view].name));
+    let _ = std::fs::create_dir_all(&shown);
+    // The reference's copy beside the picture, so a failure's -actual and
+    // -diff land in a scratch folder and not beside the reference.
+    let copy = shown.join(format!("{}.png", record.views[view].name));
+    std::fs::copy(&reference, &copy)?;
+    let comparison = snapshot::check(&picture, &copy, Rule::Perceptual(GL_TOLERANCE))
+        .map_err(|e| anyhow::anyhow!("{}/{} on OpenGL: {e}", record.name, record.views[view].name))?;
+    Ok(OnGl::Drawn(comparison))
+}
+// ANCHOR_END: gl
 
 /// Which [`Rule`] holds for a reference: the bless log, and the adapter
 /// the pictures are drawn on now.

@@ -23,6 +23,13 @@ fn main() {
             })
         })
         .collect();
+    // Every chapter once on OpenGL: drawn, or refused in one line.
+    trials.extend(snapshots::chapters().into_iter().map(|entry| {
+        Trial::test(format!("opengl::{}", entry.name), move || match snapshots::draw_on_gl(&entry) {
+            Ok(_) => Ok(()),
+            Err(e) => Err(format!("{e:#}").into()),
+        })
+    }));
     trials.push(Trial::test("every_chapter_crate_is_registered", every_chapter_crate_is_registered));
     trials.push(Trial::test("no_stale_references", no_stale_references));
     trials.push(Trial::test("every_reference_is_in_the_bless_log", every_reference_is_in_the_bless_log));

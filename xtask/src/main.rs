@@ -131,7 +131,7 @@ fn test() -> anyhow::Result<()> {
         );
         result
     };
-    step("prerequisites", &prerequisites::ensure_adapter)?;
+    step("prerequisites", &prerequisites::ensure_adapters)?;
     step("fmt", &|| cargo(&["fmt", "--all", "--", "--check"]))?;
     // xtask is built alone (`cargo xtask` resolves its features alone); in
     // a workspace-wide build its dependencies (mdbook, wasm-bindgen) would

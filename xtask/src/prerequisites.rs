@@ -1,5 +1,5 @@
 //! Making sure the tests have what they need from the system: a Vulkan
-//! driver (lavapipe will do) and, for the window test, a virtual X server,
+//! driver (lavapipe will do), Mesa's OpenGL for the GL run, and, for the window test, a virtual X server,
 //! a window manager and xdotool.
 
 use std::path::Path;
@@ -24,6 +24,10 @@ const WINDOW: [&str; 10] = [
     "x11-apps",
 ];
 
+/// Mesa's OpenGL through EGL, with no display (llvmpipe's GL 4.5): the
+/// snapshot test draws every chapter once on wgpu's GL backend too.
+const OPENGL: [&str; 4] = ["libegl1", "libegl-mesa0", "libgles2", "libgl1-mesa-dri"];
+
 /// On Linux, wgpu needs the Vulkan loader and at least one driver (ICD);
 /// with no GPU, Mesa's lavapipe is that driver.
 pub fn ensure_adapter() -> anyhow::Result<()> {
@@ -33,6 +37,25 @@ pub fn ensure_adapter() -> anyhow::Result<()> {
     apt_install("no Vulkan driver found", &VULKAN)?;
     ensure!(vulkan_present(), "installed {} but still no Vulkan driver", VULKAN.join(" "));
     Ok(())
+}
+
+/// [`ensure_adapter`], and Mesa's OpenGL for the snapshot test's GL run.
+pub fn ensure_adapters() -> anyhow::Result<()> {
+    ensure_adapter()?;
+    if cfg!(target_os = "linux") && !opengl_present() {
+        apt_install("the snapshot test draws every chapter on OpenGL too", &OPENGL)?;
+    }
+    Ok(())
+}
+
+/// EGL and Mesa's drivers for it are installed.
+fn opengl_present() -> bool {
+    ["/usr/lib/x86_64-linux-gnu", "/usr/lib/aarch64-linux-gnu", "/usr/lib64", "/usr/lib"].iter().any(|dir| {
+        let dir = Path::new(dir);
+        dir.join("libEGL.so.1").exists()
+            && dir.join("libEGL_mesa.so.0").exists()
+            && dir.join("dri/swrast_dri.so").exists()
+    })
 }
 
 /// Xvfb, openbox, xdotool and xwd (x11-apps) for the window test: true when they are

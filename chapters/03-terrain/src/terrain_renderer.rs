@@ -42,7 +42,7 @@ struct Globals {
 /// chapters 03 to 07 on one kind of device, so a process that opens several
 /// of them can share the terrain made on it (`Gpu::cached`).
 pub fn gpu_needs() -> common::GpuNeeds {
-    common::GpuNeeds { required: wgpu::Features::empty(), optional: wgpu::Features::CLIP_DISTANCES }
+    common::GpuNeeds { optional: wgpu::Features::CLIP_DISTANCES, ..Default::default() }
 }
 
 /// A clip plane (n, d): fragments with n · p + d < 0 are discarded. `KEEP_ALL`

@@ -140,6 +140,7 @@ pub struct WaterRenderer {
     /// Seed 003's style: the water texture, with mipmaps, and its sampler.
     water_texture: (wgpu::TextureView, wgpu::Sampler),
     clamp_sampler: wgpu::Sampler,
+    depth_sampler: wgpu::Sampler,
     uniform: wgpu::Buffer,
     water_layout: wgpu::BindGroupLayout,
     water_group: wgpu::BindGroup,
@@ -185,6 +186,9 @@ impl WaterRenderer {
             min_filter: wgpu::FilterMode::Linear,
             ..Default::default()
         });
+        // The lake bed's depth is read texel by texel: through "nearest".
+        let depth_sampler =
+            device.create_sampler(&wgpu::SamplerDescriptor { label: Some("depth"), ..Default::default() });
         let uniform = device.create_buffer_init(&wgpu::util::BufferInitDescriptor {
             label: Some("water"),
             contents: &[0; std::mem::size_of::<WaterUniform>()],
@@ -197,13 +201,22 @@ impl WaterRenderer {
                 uniform_entry(0, wgpu::ShaderStages::VERTEX_FRAGMENT, std::mem::size_of::<WaterUniform>()),
                 texture_entry(1, float),
                 texture_entry(2, float),
-                texture_entry(3, wgpu::TextureSampleType::Depth),
+                // The refraction's depth buffer, read as plain floats (as
+                // chapter 02's depth view does: OpenGL's GLSL cannot fetch
+                // the texels of a texture declared as depth).
+                texture_entry(3, wgpu::TextureSampleType::Float { filterable: false }),
                 texture_entry(4, float),
                 texture_entry(5, float),
                 sampler_entry(6),
                 sampler_entry(7),
                 texture_entry(8, float),
                 sampler_entry(9),
+                wgpu::BindGroupLayoutEntry {
+                    binding: 10,
+                    visibility: wgpu::ShaderStages::FRAGMENT,
+                    ty: wgpu::BindingType::Sampler(wgpu::SamplerBindingType::NonFiltering),
+                    count: None,
+                },
             ],
         });
         let pipeline_layout = device.create_pipeline_layout(&wgpu::PipelineLayoutDescriptor {
@@ -228,7 +241,7 @@ impl WaterRenderer {
         let refraction = Picture::new(device, target.format, pictures_size);
         let textures =
             [&reflection.colour, &refraction.colour, &refraction.depth, &dudv.view, &normal_map.view, &water_texture.0];
-        let samplers = [&dudv.sampler, &clamp_sampler, &water_texture.1];
+        let samplers = [&dudv.sampler, &clamp_sampler, &water_texture.1, &depth_sampler];
         let water_group = water_group(device, &water_layout, &uniform, textures, samplers);
         let show_groups = show_groups(device, &show_layout, [&reflection, &refraction], &clamp_sampler);
         Ok(Self {
@@ -240,6 +253,7 @@ impl WaterRenderer {
             normal_map,
             water_texture,
             clamp_sampler,
+            depth_sampler,
             uniform,
             water_layout,
             water_group,
@@ -272,7 +286,7 @@ impl WaterRenderer {
             &self.normal_map.view,
             &self.water_texture.0,
         ];
-        let samplers = [&self.dudv.sampler, &self.clamp_sampler, &self.water_texture.1];
+        let samplers = [&self.dudv.sampler, &self.clamp_sampler, &self.water_texture.1, &self.depth_sampler];
         self.water_group = water_group(device, &self.water_layout, &self.uniform, textures, samplers);
         self.show_groups =
             show_groups(device, &self.show_layout, [&self.reflection, &self.refraction], &self.clamp_sampler);
@@ -335,10 +349,10 @@ fn water_group(
     layout: &wgpu::BindGroupLayout,
     uniform: &wgpu::Buffer,
     textures: [&wgpu::TextureView; 6],
-    samplers: [&wgpu::Sampler; 3],
+    samplers: [&wgpu::Sampler; 4],
 ) -> wgpu::BindGroup {
     let [reflection, refraction, depth, dudv, normal_map, water_texture] = textures;
-    let [repeat, clamp, water_sampler] = samplers;
+    let [repeat, clamp, water_sampler, depth_sampler] = samplers;
     let texture_at =
         |binding, view| wgpu::BindGroupEntry { binding, resource: wgpu::BindingResource::TextureView(view) };
     let sampler_at =
@@ -354,6 +368,7 @@ fn water_group(
         sampler_at(7, clamp),
         texture_at(8, water_texture),
         sampler_at(9, water_sampler),
+        sampler_at(10, depth_sampler),
     ];
     device.create_bind_group(&wgpu::BindGroupDescriptor { label: Some("water"), layout, entries: &entries })
 }

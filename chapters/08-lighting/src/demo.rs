@@ -573,7 +573,11 @@ impl Chapter for LightingChapter {
     ];
 
     fn gpu_needs() -> common::GpuNeeds {
-        common::GpuNeeds { required: wgpu::Features::empty(), optional: PostChain::OPTIONAL_FEATURES }
+        common::GpuNeeds {
+            required: wgpu::Features::empty(),
+            optional: PostChain::OPTIONAL_FEATURES,
+            downlevel: crate::scene_lights::DOWNLEVEL,
+        }
     }
 
     /// Nothing takes long enough to prepare in steps.

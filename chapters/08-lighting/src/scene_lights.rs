@@ -46,6 +46,13 @@ pub struct LoopOptions {
     pub heat_map: bool,
 }
 
+/// What the lit chapters (08-11) need of an adapter that is less than a
+/// full WebGPU one: storage buffers read by vertex and fragment shaders,
+/// where the lights, their cluster lists and the values shaders branch on
+/// live (`common::pipeline::storage_entry` says why). WebGL2 has none.
+pub const DOWNLEVEL: wgpu::DownlevelFlags =
+    wgpu::DownlevelFlags::VERTEX_STORAGE.union(wgpu::DownlevelFlags::FRAGMENT_STORAGE);
+
 // ANCHOR: scene_lights
 /// The lights of a frame on the GPU: group 0 of `lights.wgsl`, with the
 /// frame's camera and sun, every light, and the cluster lists. A piece with

@@ -115,6 +115,7 @@ pub fn upload(up: &mut Uploader, image: &RgbaImage, space: ColorSpace, label: &s
         ColorSpace::Linear => (wgpu::TextureFormat::Rgba8Unorm, wgpu::TextureFormat::Rgba8UnormSrgb),
     };
     let size = wgpu::Extent3d { width: image.width(), height: image.height(), depth_or_array_layers: 1 };
+    let view_formats = [other];
     let texture = gpu.device.create_texture(&wgpu::TextureDescriptor {
         label: Some(label),
         size,
@@ -127,7 +128,7 @@ pub fn upload(up: &mut Uploader, image: &RgbaImage, space: ColorSpace, label: &s
             | wgpu::TextureUsages::COPY_SRC
             | wgpu::TextureUsages::RENDER_ATTACHMENT,
         // The same bytes may also be viewed in the other colour space.
-        view_formats: &[other],
+        view_formats: if can_view_as_other_formats(gpu) { &view_formats } else { &[] },
     });
     gpu.queue.write_texture(
         texture.as_image_copy(),
@@ -138,10 +139,49 @@ pub fn upload(up: &mut Uploader, image: &RgbaImage, space: ColorSpace, label: &s
     let averaging = if space == ColorSpace::Srgb { Averaging::Colour } else { Averaging::Normals };
     up.mips.generate(&gpu.device, &mut up.encoder, &texture, averaging);
     let view = texture.create_view(&Default::default());
-    let swapped_view = texture.create_view(&wgpu::TextureViewDescriptor { format: Some(other), ..Default::default() });
+    let swapped_view = if can_view_as_other_formats(gpu) {
+        texture.create_view(&wgpu::TextureViewDescriptor { format: Some(other), ..Default::default() })
+    } else {
+        copy_as(up, &texture, other)
+    };
     GpuTexture { texture, view, swapped_view }
 }
 // ANCHOR_END: upload
+
+/// Whether a texture's bytes can be viewed in another format; OpenGL and
+/// WebGL2 cannot ([`wgpu::DownlevelFlags::VIEW_FORMATS`]).
+fn can_view_as_other_formats(gpu: &Gpu) -> bool {
+    gpu.adapter.get_downlevel_capabilities().flags.contains(wgpu::DownlevelFlags::VIEW_FORMATS)
+}
+
+/// Where a texture cannot be viewed in the other colour space: a copy of
+/// its bytes, every mip level, in a texture of that format (copies between
+/// an sRGB format and its plain twin keep the bytes). Says so once.
+fn copy_as(up: &mut Uploader, texture: &wgpu::Texture, format: wgpu::TextureFormat) -> wgpu::TextureView {
+    static SAID: std::sync::Once = std::sync::Once::new();
+    SAID.call_once(|| {
+        common::log::warn!("this adapter cannot view a texture in another format (VIEW_FORMATS): each texture is copied for the swapped colour spaces")
+    });
+    let copy = up.gpu.device.create_texture(&wgpu::TextureDescriptor {
+        label: Some("in the other colour space"),
+        format,
+        usage: wgpu::TextureUsages::TEXTURE_BINDING | wgpu::TextureUsages::COPY_DST,
+        view_formats: &[],
+        size: texture.size(),
+        mip_level_count: texture.mip_level_count(),
+        sample_count: 1,
+        dimension: wgpu::TextureDimension::D2,
+    });
+    for level in 0..texture.mip_level_count() {
+        let size = texture.size().mip_level_size(level, wgpu::TextureDimension::D2);
+        up.encoder.copy_texture_to_texture(
+            wgpu::TexelCopyTextureInfo { mip_level: level, ..texture.as_image_copy() },
+            wgpu::TexelCopyTextureInfo { mip_level: level, ..copy.as_image_copy() },
+            size,
+        );
+    }
+    copy.create_view(&Default::default())
+}
 
 /// The texture of a missing or unreadable file: a magenta and black checker
 /// of 8 × 8 squares, impossible to mistake for a real surface.

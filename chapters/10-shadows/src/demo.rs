@@ -399,7 +399,11 @@ impl Chapter for ShadowsChapter {
     }];
 
     fn gpu_needs() -> common::GpuNeeds {
-        common::GpuNeeds { required: wgpu::Features::empty(), optional: PostChain::OPTIONAL_FEATURES }
+        common::GpuNeeds {
+            required: wgpu::Features::empty(),
+            optional: PostChain::OPTIONAL_FEATURES,
+            downlevel: lighting::scene_lights::DOWNLEVEL,
+        }
     }
 
     /// Nothing takes long enough to prepare in steps.

@@ -235,7 +235,7 @@ struct FaceUniform {
 /// A point light's cube shadow map, the six passes that render it, and
 /// what the main pass needs to read it. Inputs: the light (chapter 08's
 /// [`Light`], a point light) and the settings, each frame; what casts
-/// shadows, as a draw list. Output: four bindings, 1 to 4, that a
+/// shadows, as a draw list. Output: five bindings, 1 to 5, that a
 /// renderer adds to a bind group of its own ([`PointShadow::layout_entries`],
 /// [`PointShadow::group_entries`]): WebGPU promises only four bind groups
 /// a pipeline, and the shadowed main pass already uses all four.
@@ -415,10 +415,12 @@ impl PointShadow {
     }
     // ANCHOR_END: caster_pipeline
 
-    /// Bindings 1 to 4 of the group a renderer shares with the cube: the
-    /// cube, its two comparison samplers, and the light with its settings.
-    /// `point_shadow.wgsl` declares them in group 2.
-    pub fn layout_entries() -> [wgpu::BindGroupLayoutEntry; 4] {
+    /// Bindings 1 to 5 of the group a renderer shares with the cube: the
+    /// cube, its two comparison samplers, the light with its settings, and
+    /// the cube again for the second sampler (OpenGL's GLSL reads a texture
+    /// through one sampler only). `point_shadow.wgsl` declares them in
+    /// group 2.
+    pub fn layout_entries() -> [wgpu::BindGroupLayoutEntry; 5] {
         let fragment = wgpu::ShaderStages::FRAGMENT;
         let comparison = |binding| wgpu::BindGroupLayoutEntry {
             binding,
@@ -426,34 +428,37 @@ impl PointShadow {
             ty: wgpu::BindingType::Sampler(wgpu::SamplerBindingType::Comparison),
             count: None,
         };
-        [
-            wgpu::BindGroupLayoutEntry {
-                binding: 1,
-                visibility: fragment,
-                ty: wgpu::BindingType::Texture {
-                    sample_type: wgpu::TextureSampleType::Depth,
-                    view_dimension: wgpu::TextureViewDimension::Cube,
-                    multisampled: false,
-                },
-                count: None,
+        let cube = |binding| wgpu::BindGroupLayoutEntry {
+            binding,
+            visibility: fragment,
+            ty: wgpu::BindingType::Texture {
+                sample_type: wgpu::TextureSampleType::Depth,
+                view_dimension: wgpu::TextureViewDimension::Cube,
+                multisampled: false,
             },
+            count: None,
+        };
+        [
+            cube(1),
             comparison(2),
             comparison(3),
             // Storage, not uniform: `point_lit` switches on the filter
             // (lights.wgsl's `frame` says why).
             common::chapter::storage_entry(4, fragment),
+            cube(5),
         ]
     }
 
     /// The resources for [`PointShadow::layout_entries`]. The cube and the
     /// buffer are made once and never replaced, so a group made from these
     /// stays valid.
-    pub fn group_entries(&self) -> [wgpu::BindGroupEntry<'_>; 4] {
+    pub fn group_entries(&self) -> [wgpu::BindGroupEntry<'_>; 5] {
         [
             wgpu::BindGroupEntry { binding: 1, resource: wgpu::BindingResource::TextureView(&self.cube) },
             wgpu::BindGroupEntry { binding: 2, resource: wgpu::BindingResource::Sampler(&self.compare_nearest) },
             wgpu::BindGroupEntry { binding: 3, resource: wgpu::BindingResource::Sampler(&self.compare_linear) },
             wgpu::BindGroupEntry { binding: 4, resource: self.uniform.as_entire_binding() },
+            wgpu::BindGroupEntry { binding: 5, resource: wgpu::BindingResource::TextureView(&self.cube) },
         ]
     }
 
@@ -543,8 +548,9 @@ impl CubeView {
                 wgpu::BindGroupLayoutEntry {
                     binding: 0,
                     visibility: fragment,
+                    // Depths read as plain floats (show_cube.wgsl says why).
                     ty: wgpu::BindingType::Texture {
-                        sample_type: wgpu::TextureSampleType::Depth,
+                        sample_type: wgpu::TextureSampleType::Float { filterable: false },
                         view_dimension: wgpu::TextureViewDimension::Cube,
                         multisampled: false,
                     },

@@ -221,6 +221,8 @@ pub struct ShadowMap {
     uniform: wgpu::Buffer,
     compare_nearest: wgpu::Sampler,
     compare_linear: wgpu::Sampler,
+    /// Reads one depth texel as a float, for PCSS's blocker search.
+    depth_nearest: wgpu::Sampler,
     pub layout: wgpu::BindGroupLayout,
     pub group: wgpu::BindGroup,
     caster_layout: wgpu::PipelineLayout,
@@ -236,6 +238,17 @@ pub struct ShadowMap {
 /// no new pipeline.
 fn caster_key(settings: &ShadowSettings) -> (Bias, Cull) {
     (Bias { normal_offset: 0.0, ..settings.bias }, settings.cull)
+}
+
+/// A sampler that reads one texel, read by fragment shaders: a depth map
+/// bound as plain floats goes through one (chapter 02's depth view).
+fn nearest_entry(binding: u32) -> wgpu::BindGroupLayoutEntry {
+    wgpu::BindGroupLayoutEntry {
+        binding,
+        visibility: wgpu::ShaderStages::FRAGMENT,
+        ty: wgpu::BindingType::Sampler(wgpu::SamplerBindingType::NonFiltering),
+        count: None,
+    }
 }
 
 /// A comparison sampler read by fragment shaders.
@@ -276,6 +289,12 @@ impl ShadowMap {
                 comparison_entry(2),
                 // Storage, not uniform: `sunlit` switches on the filter (see `storage_entry`).
                 storage_entry(3, fragment),
+                // The map again, as floats read through "nearest", for PCSS.
+                texture_entry(4, wgpu::TextureSampleType::Float { filterable: false }),
+                nearest_entry(5),
+                // And once more for the blended comparisons (GLSL reads a
+                // texture through one sampler only).
+                texture_entry(6, wgpu::TextureSampleType::Depth),
             ],
         });
         let uniform = device.create_buffer(&wgpu::BufferDescriptor {
@@ -309,7 +328,10 @@ impl ShadowMap {
         let (bias, cull) = caster_key(&ShadowSettings::DEFAULT);
         let caster = (bias, cull, Self::caster(gpu, &caster_layout, bias, cull)?);
         let view = Self::texture(device, size);
-        let group = Self::group(device, &layout, &view, [&compare_nearest, &compare_linear], &uniform);
+        let depth_nearest =
+            device.create_sampler(&wgpu::SamplerDescriptor { label: Some("depth"), ..Default::default() });
+        let samplers = [&compare_nearest, &compare_linear, &depth_nearest];
+        let group = Self::group(device, &layout, &view, samplers, &uniform);
         Ok(Self {
             size,
             note,
@@ -317,6 +339,7 @@ impl ShadowMap {
             uniform,
             compare_nearest,
             compare_linear,
+            depth_nearest,
             layout,
             group,
             caster_layout,
@@ -348,7 +371,7 @@ impl ShadowMap {
         device: &wgpu::Device,
         layout: &wgpu::BindGroupLayout,
         view: &wgpu::TextureView,
-        [nearest, linear]: [&wgpu::Sampler; 2],
+        [nearest, linear, depth_nearest]: [&wgpu::Sampler; 3],
         uniform: &wgpu::Buffer,
     ) -> wgpu::BindGroup {
         device.create_bind_group(&wgpu::BindGroupDescriptor {
@@ -359,8 +382,15 @@ impl ShadowMap {
                 wgpu::BindGroupEntry { binding: 1, resource: wgpu::BindingResource::Sampler(nearest) },
                 wgpu::BindGroupEntry { binding: 2, resource: wgpu::BindingResource::Sampler(linear) },
                 wgpu::BindGroupEntry { binding: 3, resource: uniform.as_entire_binding() },
+                wgpu::BindGroupEntry { binding: 4, resource: wgpu::BindingResource::TextureView(view) },
+                wgpu::BindGroupEntry { binding: 5, resource: wgpu::BindingResource::Sampler(depth_nearest) },
+                wgpu::BindGroupEntry { binding: 6, resource: wgpu::BindingResource::TextureView(view) },
             ],
         })
+    }
+
+    fn samplers(&self) -> [&wgpu::Sampler; 3] {
+        [&self.compare_nearest, &self.compare_linear, &self.depth_nearest]
     }
 
     /// Makes the map `requested` texels square (clamped), if it is not already.
@@ -372,8 +402,7 @@ impl ShadowMap {
         }
         self.size = size;
         self.view = Self::texture(device, size);
-        self.group =
-            Self::group(device, &self.layout, &self.view, [&self.compare_nearest, &self.compare_linear], &self.uniform);
+        self.group = Self::group(device, &self.layout, &self.view, self.samplers(), &self.uniform);
     }
 
     /// The shadow pass's pipeline for `bias` and `cull`, kept up to date
@@ -499,6 +528,7 @@ pub struct MapView {
     /// Made again when show_depth.wgsl is saved (hot reload).
     pipeline: Reloadable<wgpu::RenderPipeline>,
     uniform: wgpu::Buffer,
+    nearest: wgpu::Sampler,
 }
 
 impl MapView {
@@ -507,8 +537,10 @@ impl MapView {
         let layout = device.create_bind_group_layout(&wgpu::BindGroupLayoutDescriptor {
             label: Some("shadow map view"),
             entries: &[
-                texture_entry(0, wgpu::TextureSampleType::Depth),
+                // Plain floats through "nearest", as show_depth.wgsl says.
+                texture_entry(0, wgpu::TextureSampleType::Float { filterable: false }),
                 uniform_entry(1, wgpu::ShaderStages::FRAGMENT, 16),
+                nearest_entry(2),
             ],
         });
         let pipeline_layout = device.create_pipeline_layout(&wgpu::PipelineLayoutDescriptor {
@@ -523,7 +555,8 @@ impl MapView {
             mapped_at_creation: false,
         });
         let pipeline = Reloadable::new(gpu, move |gpu| Self::pipeline(gpu, &pipeline_layout, format))?;
-        Ok(Self { layout, pipeline, uniform })
+        let nearest = device.create_sampler(&wgpu::SamplerDescriptor { label: Some("nearest"), ..Default::default() });
+        Ok(Self { layout, pipeline, uniform, nearest })
     }
 
     fn pipeline(
@@ -556,6 +589,7 @@ impl MapView {
             entries: &[
                 wgpu::BindGroupEntry { binding: 0, resource: wgpu::BindingResource::TextureView(&map.view) },
                 wgpu::BindGroupEntry { binding: 1, resource: self.uniform.as_entire_binding() },
+                wgpu::BindGroupEntry { binding: 2, resource: wgpu::BindingResource::Sampler(&self.nearest) },
             ],
         });
         let mut pass = common::fullscreen::pass(

@@ -150,9 +150,10 @@ pub struct SeaRenderer {
     group_layout: wgpu::BindGroupLayout,
     group: Option<wgpu::BindGroup>,
     sampler: wgpu::Sampler,
-    /// The lit sea, its edges and the tests' probe, made again when
+    /// The lit sea and its edges, and the tests' probe where the adapter
+    /// can draw into 32-bit floats (OpenGL cannot), made again when
     /// sea.wgsl or a module it imports is saved (hot reload).
-    pipelines: Reloadable<[wgpu::RenderPipeline; 3]>,
+    pipelines: Reloadable<([wgpu::RenderPipeline; 2], Option<wgpu::RenderPipeline>)>,
     whole: (wgpu::Buffer, u32),
     small: (wgpu::Buffer, u32),
     lines: (wgpu::Buffer, u32),
@@ -227,7 +228,10 @@ impl SeaRenderer {
         })
     }
 
-    fn pipelines(gpu: &Gpu, layout: &wgpu::PipelineLayout) -> Result<[wgpu::RenderPipeline; 3], ShaderError> {
+    fn pipelines(
+        gpu: &Gpu,
+        layout: &wgpu::PipelineLayout,
+    ) -> Result<([wgpu::RenderPipeline; 2], Option<wgpu::RenderPipeline>), ShaderError> {
         let device = &gpu.device;
         let module = shader!(
             "voronoi-water/sea.wgsl",
@@ -292,7 +296,12 @@ impl SeaRenderer {
                 cache: None,
             })
         };
-        gpu.catch_validation(|| [lit(), wire(), probe()]).map_err(ShaderError)
+        let probe_drawable = gpu
+            .adapter
+            .get_texture_format_features(wgpu::TextureFormat::Rgba32Float)
+            .allowed_usages
+            .contains(wgpu::TextureUsages::RENDER_ATTACHMENT);
+        gpu.catch_validation(|| ([lit(), wire()], probe_drawable.then(probe))).map_err(ShaderError)
     }
 
     pub fn waves(&self) -> &[Wave; 8] {
@@ -330,7 +339,7 @@ impl SeaRenderer {
     pub fn draw(&self, pass: &mut wgpu::RenderPass<'_>, small: bool, wires: bool) {
         pass.set_bind_group(2, self.group.as_ref(), &[]);
         let (indices, count) = if small { &self.small } else { &self.whole };
-        let [lit, wire, _] = self.pipelines.get();
+        let ([lit, wire], _) = self.pipelines.get();
         pass.set_pipeline(&lit);
         pass.set_index_buffer(indices.slice(..), wgpu::IndexFormat::Uint32);
         pass.draw_indexed(0..*count, 0, 0..1);
@@ -352,6 +361,9 @@ impl SeaRenderer {
         atmosphere: &Atmosphere,
         shadow: &ShadowMap,
     ) -> common::anyhow::Result<Vec<[f32; 4]>> {
+        let Some(pipeline) = self.pipelines.get().1 else {
+            common::anyhow::bail!("this adapter cannot draw into Rgba32Float, which the sea's probe reads back");
+        };
         let texture = gpu.device.create_texture(&wgpu::TextureDescriptor {
             label: Some("sea probe"),
             size: wgpu::Extent3d { width: GRID_VERTICES, height: GRID_VERTICES, depth_or_array_layers: 1 },
@@ -372,7 +384,7 @@ impl SeaRenderer {
                 &view,
                 Some(wgpu::Color::TRANSPARENT),
             );
-            pass.set_pipeline(&self.pipelines.get()[2]);
+            pass.set_pipeline(&pipeline);
             pass.set_bind_group(0, &lights.group, &[]);
             pass.set_bind_group(1, &atmosphere.group, &[]);
             pass.set_bind_group(2, self.group.as_ref(), &[]);

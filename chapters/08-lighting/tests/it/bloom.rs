@@ -48,8 +48,7 @@ fn bloom_of(gpu: &Gpu, bloom: &Bloom, source: &wgpu::Texture, settings: &BloomSe
 
 fn devices() -> Vec<Gpu> {
     // With the small float format where the adapter renders to it, and the fallback.
-    let with =
-        Gpu::headless(GpuNeeds { required: wgpu::Features::empty(), optional: Bloom::OPTIONAL_FEATURES }).unwrap();
+    let with = Gpu::headless(GpuNeeds { optional: Bloom::OPTIONAL_FEATURES, ..Default::default() }).unwrap();
     let without = Gpu::headless(GpuNeeds::default()).unwrap();
     vec![with, without]
 }
