@@ -388,7 +388,7 @@ struct Probe {
     skipped: u64,
     held: u64,
     looked: f64,
-    /// The page's WebAssembly heap, in bytes.
+    /// The page's live heap, in bytes.
     memory: Option<u64>,
     camera: Option<Vec<f32>>,
 }
@@ -748,30 +748,35 @@ fn picture_alone(page: &ChapterPage) -> anyhow::Result<image::RgbaImage> {
 /// chapter's memory is also watched natively, in the window test.
 const MEMORY_CHAPTERS: [&str; 2] = ["triangle", "textures"];
 
-/// Frames between the three readings of the page's WebAssembly heap.
-const MEMORY_FRAMES: u64 = 10;
-
-/// Watches the page's WebAssembly heap over 2 × `MEMORY_FRAMES` frames,
-/// on a small canvas after ten frames to settle; fails when it grew by more
-/// than `common::memory::LEAK_BOUND` a frame over both stretches (a leak
-/// grows it over both, a one-off allocation over one). Returns a summary.
+/// Watches the page's live heap (the bytes its allocator has handed out
+/// and not taken back) at every frame for `common::leak::WATCHED_FRAMES`
+/// frames, on a small canvas after ten frames to settle; fails when it
+/// grew by more than `common::leak::LEAK_BOUND` a frame (the median of the
+/// stretches' slopes: a leak raises every stretch, a one-off one).
+/// Returns a summary.
 fn memory_stays_flat(browser: &Browser, base: &str, chapter: &str) -> anyhow::Result<String> {
     let page = ChapterPage::open(browser, &page_url(base, chapter, ""))?;
     page.eval("document.getElementById('chapter').style.cssText = 'width: 256px; height: 144px', 1")?;
     let settled = page.wait_for("ten frames", |p| p.drawn >= 10)?;
-    let middle = page.wait_for("frames while watching memory", |p| p.drawn >= settled.drawn + MEMORY_FRAMES)?;
-    let last = page.wait_for("more frames while watching memory", |p| p.drawn >= middle.drawn + MEMORY_FRAMES)?;
-    let growth = common::memory::Growth {
-        readings: [&settled, &middle, &last].map(|p| common::memory::MemoryUse { process: p.memory, gpu: None }),
-        frames: [middle.drawn - settled.drawn, last.drawn - middle.drawn],
-    };
-    let per_frame = growth.process_per_frame().context("the page reports no memory")?;
+    let mut readings = vec![settled.clone()];
+    while let Some(last) = readings.last().filter(|l| l.drawn < settled.drawn + common::leak::WATCHED_FRAMES) {
+        let drawn = last.drawn;
+        readings.push(page.wait_for("the next frame while watching memory", |p| p.drawn > drawn)?);
+    }
+    let values: Vec<common::leak::Reading> = readings
+        .iter()
+        .map(|p| Some((p.drawn, p.memory?)))
+        .collect::<Option<_>>()
+        .context("the page reports no memory")?;
+    let per_frame = common::leak::growth_per_frame(&values).context("too few readings")?;
     ensure!(
-        per_frame <= common::memory::LEAK_BOUND,
-        "the page's heap grew by {:.0} KB a frame over {} frames: a leak ({})",
+        per_frame <= common::leak::LEAK_BOUND,
+        "the page's live heap grew by {:.1} KB a frame over {} frames (the median of {} stretches; more than {:.0} KB): \
+         a leak; read {values:?}",
         per_frame / 1024.0,
-        last.drawn - settled.drawn,
-        growth.line()
+        values.last().map_or(0, |r| r.0) - values[0].0,
+        common::leak::STRETCHES,
+        common::leak::LEAK_BOUND / 1024.0
     );
     no_console_errors(&page)?;
     Ok(format!("{chapter} {:+.1} KB a frame", per_frame / 1024.0))

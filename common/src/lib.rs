@@ -26,6 +26,7 @@ pub mod fullscreen;
 pub mod gpu;
 pub mod headless;
 pub mod input;
+pub mod leak;
 pub mod memory;
 pub mod mesh;
 pub mod noise;

@@ -3,13 +3,14 @@
 //! buffer and texture the device holds). The overlay shows both, the
 //! window test's probe reports them, `--bench` measures how they change
 //! over its frames, and `cargo xtask test` fails a chapter whose memory
-//! grows frame after frame.
+//! grows frame after frame (`crate::leak` judges it).
 
 /// Memory in use now, in bytes; `None` where this platform cannot say.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
 pub struct MemoryUse {
     /// The process's resident memory on the desktop (`VmRSS` on Linux); in
-    /// a browser, the WebAssembly heap (it grows and never shrinks).
+    /// a browser, the bytes allocated and not yet freed, counted by the
+    /// page's allocator (the WebAssembly heap itself only ever grows).
     pub process: Option<u64>,
     /// The bytes of every buffer and texture alive on the device, counted
     /// by wgpu (its `counters` feature) where the backend keeps the count:
@@ -27,7 +28,7 @@ impl MemoryUse {
     /// "412 MB process, 38.2 MB GPU" for the overlay.
     pub fn describe(&self) -> String {
         let mb = |bytes: Option<u64>| bytes.map_or("n/a".into(), |b| format!("{:.1} MB", b as f64 / 1e6));
-        let process = if cfg!(target_arch = "wasm32") { "heap" } else { "process" };
+        let process = if cfg!(target_arch = "wasm32") { "live heap" } else { "process" };
         format!("{} {process}, {} GPU buffers + textures", mb(self.process), mb(self.gpu))
     }
 }
@@ -76,17 +77,70 @@ fn status_bytes(field: &str) -> Option<u64> {
     Some(kib * 1024)
 }
 
-/// The page's WebAssembly heap: the module's linear memory.
+/// The page's live heap: bytes allocated and not yet freed, as
+/// [`live::Counting`] counts them.
 #[cfg(target_arch = "wasm32")]
 pub fn process_bytes() -> Option<u64> {
-    use wasm_bindgen::JsCast as _;
-    let memory = wasm_bindgen::memory().dyn_into::<js_sys::WebAssembly::Memory>().ok()?;
-    let buffer = memory.buffer().dyn_into::<js_sys::ArrayBuffer>().ok()?;
-    Some(u64::from(buffer.byte_length()))
+    Some(live::LIVE.load(std::sync::atomic::Ordering::Relaxed) as u64)
+}
+
+/// A page's allocator, counting. The WebAssembly heap only grows: memory a
+/// page frees stays in it for the allocator to hand out again, so the
+/// heap's size would hide a leak behind the largest moment so far. Every
+/// allocation through this one adds its size to [`live::LIVE`], every free
+/// takes it off.
+#[cfg(target_arch = "wasm32")]
+mod live {
+    use std::alloc::{GlobalAlloc, Layout, System};
+    use std::sync::atomic::{AtomicUsize, Ordering::Relaxed};
+
+    /// Bytes allocated and not yet freed.
+    pub static LIVE: AtomicUsize = AtomicUsize::new(0);
+
+    /// The system allocator (dlmalloc, on wasm32), counting.
+    pub struct Counting;
+
+    // SAFETY: every call goes to `System` with the caller's arguments; the
+    // count is only bookkeeping beside it.
+    unsafe impl GlobalAlloc for Counting {
+        unsafe fn alloc(&self, layout: Layout) -> *mut u8 {
+            let pointer = unsafe { System.alloc(layout) };
+            if !pointer.is_null() {
+                LIVE.fetch_add(layout.size(), Relaxed);
+            }
+            pointer
+        }
+
+        unsafe fn alloc_zeroed(&self, layout: Layout) -> *mut u8 {
+            let pointer = unsafe { System.alloc_zeroed(layout) };
+            if !pointer.is_null() {
+                LIVE.fetch_add(layout.size(), Relaxed);
+            }
+            pointer
+        }
+
+        unsafe fn dealloc(&self, pointer: *mut u8, layout: Layout) {
+            unsafe { System.dealloc(pointer, layout) };
+            LIVE.fetch_sub(layout.size(), Relaxed);
+        }
+
+        unsafe fn realloc(&self, pointer: *mut u8, layout: Layout, new_size: usize) -> *mut u8 {
+            let moved = unsafe { System.realloc(pointer, layout, new_size) };
+            if !moved.is_null() {
+                LIVE.fetch_add(new_size, Relaxed);
+                LIVE.fetch_sub(layout.size(), Relaxed);
+            }
+            moved
+        }
+    }
+
+    #[global_allocator]
+    static ALLOCATOR: Counting = Counting;
 }
 
 /// Three readings of memory, `frames[0]` and then `frames[1]` frames
-/// apart: how it changed over a run. A leak grows memory between every two readings; a one-off
+/// apart: how it changed over a `--bench` run, for its tables (the tests
+/// judge leaks with [`crate::leak`], over every frame). A leak grows memory between every two readings; a one-off
 /// allocation (a cache filled, an allocator taking a bigger arena) grows it
 /// between two of them only. So the steady growth is the smaller of the two.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -94,12 +148,6 @@ pub struct Growth {
     pub readings: [MemoryUse; 3],
     pub frames: [u64; 2],
 }
-
-/// The most a chapter's memory may grow by steadily, in bytes a frame,
-/// before `cargo xtask test` calls it a leak. Chapters that do not leak
-/// grow by under 10 KB a frame (measured in the window and headless), the
-/// leaks found so far by 1.4 to 25 MB a frame.
-pub const LEAK_BOUND: f64 = 32.0 * 1024.0;
 
 impl Growth {
     /// Bytes a frame the process grew by steadily (negative: it shrank).

@@ -4,9 +4,11 @@
 //! window through 1×1 and back, minimises and restores it (three times
 //! each), drags with the mouse and checks that the camera turned, holds a
 //! key and clicks the overlay and checks that the camera stops once the key
-//! is let go, watches memory over 2 × 10 frames (3 × 10 when both grew), then closes the window
-//! with Esc. One chapter runs once more with the shader panel open (`drive_panel`). Any panic, wgpu validation error, non-zero exit, frame that
-//! never comes or memory that grows frame after frame fails it.
+//! is let go, watches memory over 60 frames, then closes the window with
+//! Esc. One chapter runs once more with the shader panel open
+//! (`drive_panel`). Any panic, wgpu validation error, non-zero exit, frame
+//! that never comes, or memory that grows frame after frame or cycle after
+//! cycle (`common/src/leak.rs`, compiled here too) fails it.
 //!
 //! What cannot be seen in pixels (frames drawn, the surface's size, the
 //! camera) the chapter reports through its hidden `--probe FILE` flag.
@@ -19,19 +21,19 @@ use anyhow::{Context as _, bail, ensure};
 
 use crate::{chapter_names, quiet_env, target_dir};
 
+/// How memory growth is judged, and its bounds: the chapters' own file,
+/// which uses nothing but `std`, so that the bounds are written once.
+#[path = "../../common/src/leak.rs"]
+mod leak;
+
 /// The window's size, and how long any one step may take: a frame of the
 /// water chapter takes over a second on a software rasteriser in a debug build.
 const SIZE: (u32, u32) = (640, 360);
 const STEP_TIMEOUT: Duration = Duration::from_secs(90);
-/// Resizes through 1×1 and minimise/restore cycles per chapter: a state
-/// left stuck by one shows by the second; each cycle costs two frames,
-/// seconds each for the terrain chapters on a software rasteriser.
-const CYCLES: usize = 3;
-/// Frames between the memory readings (see `memory_stays_flat`).
-const MEMORY_FRAMES: u64 = 10;
-/// The most memory may grow by steadily, in bytes a frame: the chapters'
-/// own figure, `common::memory::LEAK_BOUND`, which says why.
-const LEAK_BOUND: f64 = 32.0 * 1024.0;
+/// Resizes through 1×1 and minimise/restore cycles per chapter (each costs
+/// two frames, seconds each for the terrain chapters on a software
+/// rasteriser): `leak::CYCLES` says why three.
+const CYCLES: usize = leak::CYCLES;
 
 /// x, y, z, yaw and pitch, as the probe reports them; `None` for chapters
 /// without a camera.
@@ -247,30 +249,107 @@ impl<'d> Session<'d> {
         lines[lines.len().saturating_sub(25)..].join("\n")
     }
 
+    /// Resizes the window through 1×1 and back `CYCLES` times (or
+    /// `leak::MORE_CYCLES` more); fails when memory grew by more than its
+    /// bound a cycle (`leak::CYCLE_BOUND`, `leak::GPU_CYCLE_BOUND`).
     fn resize_through_one_pixel(&mut self) -> anyhow::Result<()> {
         let (w, h) = (SIZE.0.to_string(), SIZE.1.to_string());
-        for _ in 0..CYCLES {
+        let mut at_full_size = vec![self.frames(1, "a frame before resizing")?];
+        let mut cycles = CYCLES;
+        while at_full_size.len() <= cycles {
             self.x(&["windowsize", "1", "1"])?;
             self.wait_for("a 1×1 frame", |p| p.surface == (1, 1))?;
             self.x(&["windowsize", &w, &h])?;
             self.wait_for("a full-size frame again", |p| p.surface == SIZE)?;
+            at_full_size.push(self.frames(1, "another full-size frame")?);
+            if at_full_size.len() == CYCLES + 1 && self.grows_too_much_a_cycle(&at_full_size) {
+                cycles += leak::MORE_CYCLES;
+            }
+        }
+        self.grows_less_than_a_leak_a_cycle("resize through 1×1", &at_full_size)
+    }
+
+    /// Minimises and restores the window `CYCLES` times: nothing may be
+    /// drawn while minimised (watched for a few of the chapter's own frame
+    /// times, so that a chapter whose frames take a second cannot pass by
+    /// being slow), and memory may not grow by more than its bound a cycle.
+    fn minimise_and_restore(&mut self) -> anyhow::Result<()> {
+        let frame = self.frame_time()?;
+        // A frame in flight may still finish; after that, nothing is drawn:
+        // a chapter still drawing would draw two more in three frame times.
+        let settle = Duration::from_millis(200).max(frame * 3 / 2);
+        let watch = Duration::from_millis(300).max(3 * frame);
+        let mut shown = vec![self.frames(1, "a frame before minimising")?];
+        let mut cycles = CYCLES;
+        while shown.len() <= cycles {
+            self.x(&["windowminimize"])?;
+            std::thread::sleep(settle);
+            let hidden = self.read().map_or(0, |p| p.drawn);
+            std::thread::sleep(watch);
+            let still = self.read().map_or(0, |p| p.drawn);
+            ensure!(
+                still <= hidden + 1,
+                "{} kept drawing while minimised ({hidden} → {still} frames in {:.1} s, frames take {:.2} s)",
+                self.chapter,
+                watch.as_secs_f64(),
+                frame.as_secs_f64()
+            );
+            self.x(&["windowactivate"])?;
+            self.frames(1, "a frame after restoring")?;
+            shown.push(self.frames(1, "another frame after restoring")?);
+            if shown.len() == CYCLES + 1 && self.grows_too_much_a_cycle(&shown) {
+                cycles += leak::MORE_CYCLES;
+            }
+        }
+        self.grows_less_than_a_leak_a_cycle("minimise and restore", &shown)
+    }
+
+    /// How long the chapter's frames take now: the mean of two.
+    fn frame_time(&mut self) -> anyhow::Result<Duration> {
+        let start = self.frames(1, "a frame to start timing at")?;
+        let began = Instant::now();
+        let end = self.frames(2, "two frames to time")?;
+        Ok(began.elapsed() / (end.drawn - start.drawn).max(1) as u32)
+    }
+
+    /// Whether memory read in the same state before each cycle and after
+    /// the last (`readings`) grew by more than its bound a cycle.
+    fn grows_too_much_a_cycle(&self, readings: &[Probe]) -> bool {
+        MEASURED.iter().zip(CYCLE_BOUNDS).any(|((_, read), bound)| {
+            let values: Option<Vec<u64>> = readings.iter().map(read).collect();
+            values.as_deref().and_then(leak::growth_per_cycle).is_some_and(|growth| growth > bound)
+        })
+    }
+
+    /// Fails when memory read in the same state before each cycle and after
+    /// the last (`readings`) grew by more than its bound a cycle (the
+    /// median: a first cycle that fills a cache does not count).
+    fn grows_less_than_a_leak_a_cycle(&self, cycle: &str, readings: &[Probe]) -> anyhow::Result<()> {
+        for ((what, read), bound) in MEASURED.into_iter().zip(CYCLE_BOUNDS) {
+            let values: Option<Vec<u64>> = readings.iter().map(read).collect();
+            let Some(growth) = values.as_deref().and_then(leak::growth_per_cycle) else { continue };
+            self.log_memory(&format!("{cycle}: {what} {growth:+.0} bytes a cycle, read {values:?}"));
+            ensure!(
+                growth <= bound,
+                "{}: {what} grew by {:.0} KB a {cycle} (the median of {}; more than {:.0} KB): a leak; read {values:?}",
+                self.chapter,
+                growth / 1024.0,
+                readings.len() - 1,
+                bound / 1024.0
+            );
         }
         Ok(())
     }
 
-    fn minimise_and_restore(&mut self) -> anyhow::Result<()> {
-        for _ in 0..CYCLES {
-            self.x(&["windowminimize"])?;
-            // A frame in flight may still finish; after that, nothing is drawn.
-            std::thread::sleep(Duration::from_millis(200));
-            let hidden = self.read().map_or(0, |p| p.drawn);
-            std::thread::sleep(Duration::from_millis(300));
-            let still = self.read().map_or(0, |p| p.drawn);
-            ensure!(still <= hidden + 1, "{} kept drawing while minimised ({hidden} → {still} frames)", self.chapter);
-            self.x(&["windowactivate"])?;
-            self.frames(1, "a frame after restoring")?;
+    /// Adds a line to the chapter's memory log, beside its probe: what the
+    /// tests read and concluded, for when one fails.
+    fn log_memory(&self, line: &str) {
+        use std::io::Write as _;
+        if let Ok(mut file) =
+            std::fs::OpenOptions::new().create(true).append(true).open(self.probe.with_extension("memory"))
+        {
+            let _ = writeln!(file, "{line}");
         }
-        Ok(())
     }
 
     /// Drags across the scene; returns (camera before, camera after).
@@ -311,43 +390,48 @@ impl<'d> Session<'d> {
         Ok([held.camera, released, later])
     }
 
-    /// Reads memory three times, `MEMORY_FRAMES` frames apart, after
-    /// everything else (so caches are full); fails when it grew by more
-    /// than `LEAK_BOUND` a frame over every stretch. A leak grows it over
-    /// each; a one-off allocation over one. When both stretches grew (the
-    /// driver compiling a shader variant late, the allocator taking another
-    /// arena), a third stretch decides: terrain's window once grew 46 KB a
-    /// frame over two stretches, and 6 and 13 KB in the next two runs.
-    /// Returns the steady growth of the process and of the GPU's buffers
-    /// and textures, in bytes a frame.
+    /// Reads memory at every frame for `leak::WATCHED_FRAMES` frames, after
+    /// everything else (so caches are full), and fails when it grew by more
+    /// than `leak::LEAK_BOUND` a frame: the median of the slopes of
+    /// `leak::STRETCHES` stretches, which one-off steps cannot move. Returns
+    /// the growth of the process and of the GPU's buffers and textures, in
+    /// bytes a frame.
     fn memory_stays_flat(&mut self) -> anyhow::Result<(f64, Option<f64>)> {
-        let mut readings = vec![self.frames(1, "a frame before watching memory")?];
-        readings.push(self.frames(MEMORY_FRAMES, "frames while watching memory")?);
-        readings.push(self.frames(MEMORY_FRAMES, "more frames while watching memory")?);
-        let suspicious = |readings: &[Probe]| {
-            least_growth(readings, |p| p.memory).is_some_and(|g| g > LEAK_BOUND)
-                || least_growth(readings, |p| p.gpu).is_some_and(|g| g > LEAK_BOUND)
-        };
-        if suspicious(&readings) {
-            readings.push(self.frames(MEMORY_FRAMES, "a third stretch of frames while watching memory")?);
-        }
-        let process = least_growth(&readings, |p| p.memory)
-            .with_context(|| format!("{}: the probe reports no memory", self.chapter))?;
-        let gpu = least_growth(&readings, |p| p.gpu);
-        let frames = readings[readings.len() - 1].drawn - readings[0].drawn;
-        for (what, growth) in [("the process's memory", Some(process)), ("the GPU's buffers and textures", gpu)] {
-            if let Some(growth) = growth {
-                ensure!(
-                    growth <= LEAK_BOUND,
-                    "{}: {what} grew by {:.0} KB a frame over every stretch of {frames} frames (more than {:.0} KB a \
-                     frame): a leak",
-                    self.chapter,
-                    growth / 1024.0,
-                    LEAK_BOUND / 1024.0
-                );
+        let first = self.frames(1, "a frame before watching memory")?;
+        let mut readings = vec![first.clone()];
+        let deadline = Instant::now() + STEP_TIMEOUT * 2;
+        while readings.last().is_some_and(|last| last.drawn < first.drawn + leak::WATCHED_FRAMES) {
+            if let Some(probe) = self.read().filter(|p| readings.last().is_some_and(|last| p.drawn > last.drawn)) {
+                readings.push(probe);
             }
+            if let Some(status) = self.child.try_wait()? {
+                bail!("{} exited ({status}) while memory was watched:\n{}", self.chapter, self.log_tail());
+            }
+            ensure!(Instant::now() < deadline, "{}: timed out watching memory over frames", self.chapter);
+            std::thread::sleep(Duration::from_millis(5));
         }
-        Ok((process, gpu))
+        let mut growth = [None, None];
+        for (i, (what, read)) in MEASURED.iter().enumerate() {
+            let values: Option<Vec<leak::Reading>> = readings.iter().map(|p| Some((p.drawn, read(p)?))).collect();
+            let Some(values) = values else { continue };
+            let per_frame = leak::growth_per_frame(&values)
+                .with_context(|| format!("{}: too few readings of {what} ({values:?})", self.chapter))?;
+            self.log_memory(&format!("{what}: {per_frame:+.0} bytes a frame, read {values:?}"));
+            ensure!(
+                per_frame <= leak::LEAK_BOUND,
+                "{}: {what} grew by {:.1} KB a frame over {} frames (the median of {} stretches; more than {:.0} KB a \
+                 frame): a leak; readings in {}",
+                self.chapter,
+                per_frame / 1024.0,
+                values.last().map_or(0, |r| r.0) - values[0].0,
+                leak::STRETCHES,
+                leak::LEAK_BOUND / 1024.0,
+                self.probe.with_extension("memory").display()
+            );
+            growth[i] = Some(per_frame);
+        }
+        let process = growth[0].with_context(|| format!("{}: the probe reports no memory", self.chapter))?;
+        Ok((process, growth[1]))
     }
 
     fn close(mut self) -> anyhow::Result<()> {
@@ -370,18 +454,16 @@ impl<'d> Session<'d> {
     }
 }
 
-/// The smallest growth a frame, in bytes, over any stretch between two
-/// consecutive readings: a leak grows memory over every stretch, a one-off
-/// allocation over one. `None` when a reading lacks the figure.
-fn least_growth(readings: &[Probe], read: fn(&Probe) -> Option<u64>) -> Option<f64> {
-    readings
-        .windows(2)
-        .map(|pair| {
-            let grown = read(&pair[1])? as f64 - read(&pair[0])? as f64;
-            Some(grown / (pair[1].drawn - pair[0].drawn).max(1) as f64)
-        })
-        .try_fold(f64::INFINITY, |least, growth| Some(least.min(growth?)))
-}
+/// How a kind of memory is read from a probe line.
+type ReadBytes = fn(&Probe) -> Option<u64>;
+
+/// The memory the probe reports, by name: the process's resident set and
+/// the GPU's buffers and textures.
+const MEASURED: [(&str, ReadBytes); 2] =
+    [("the process's memory", |p| p.memory), ("the GPU's buffers and textures", |p| p.gpu)];
+
+/// The most each of [`MEASURED`] may grow by a cycle.
+const CYCLE_BOUNDS: [f64; 2] = [leak::CYCLE_BOUND, leak::GPU_CYCLE_BOUND];
 
 impl Drop for Session<'_> {
     fn drop(&mut self) {
@@ -544,30 +626,17 @@ pub fn run_built(chosen: &[String]) -> anyhow::Result<()> {
     });
     let failures = failures.into_inner().unwrap_or_default();
     ensure!(failures.is_empty(), "the window test failed for {}", failures.join(", "));
-    let _ = std::fs::remove_dir_all(&dir);
+    if std::env::var_os("KEEP_WINDOW_LOGS").is_none() {
+        let _ = std::fs::remove_dir_all(&dir);
+    } else {
+        println!("logs in {}", dir.display());
+    }
     Ok(())
 }
 
 #[cfg(test)]
 mod tests {
     use super::*;
-
-    #[test]
-    fn a_leak_grows_over_every_stretch_and_a_one_off_over_one() {
-        let at = |drawn: u64, memory: u64| Probe {
-            drawn,
-            surface: (640, 360),
-            typing: false,
-            memory: Some(memory),
-            gpu: None,
-            camera: None,
-        };
-        let leak = [at(0, 0), at(10, 500_000), at(20, 1_000_000), at(30, 1_500_000)];
-        assert_eq!(least_growth(&leak, |p| p.memory), Some(50_000.0));
-        let one_off = [at(0, 0), at(10, 900_000), at(20, 1_000_000), at(30, 1_000_000)];
-        assert_eq!(least_growth(&one_off, |p| p.memory), Some(0.0));
-        assert_eq!(least_growth(&leak, |p| p.gpu), None, "no figure, no growth");
-    }
 
     #[test]
     fn probe_lines_parse() {

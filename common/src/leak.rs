@@ -1,0 +1,157 @@
+//! Telling a leak from noise. A leak grows memory frame after frame; a
+//! one-off allocation (a cache filled, an allocator taking another arena, a
+//! driver compiling a shader variant late) grows it once; and a process's
+//! resident set jitters from reading to reading. So memory is read every
+//! frame over at least [`WATCHED_FRAMES`] frames, the frames are cut into
+//! [`STRETCHES`] stretches, and the growth a frame is the median of the
+//! stretches' slopes: a steady leak raises every stretch's slope, a one-off
+//! step only one's, so no single step (nor two) moves the median, and
+//! nothing here is a minimum that a retry could only lower. Resizing the
+//! window and minimising it are judged the same way, per cycle: the median
+//! of the growths over [`CYCLES`] cycles.
+//!
+//! This file uses nothing but `std`: `cargo xtask`, which links no GPU
+//! crate, compiles it too (`#[path]`), so the bounds are written once.
+
+/// Frames memory is watched over, at least.
+pub const WATCHED_FRAMES: u64 = 60;
+
+/// Stretches the watched frames are cut into: each at least ten frames, and
+/// enough that two one-off steps still leave the median on a quiet one.
+pub const STRETCHES: usize = 6;
+
+/// Resize and minimise cycles the window test runs: a state left stuck by
+/// one shows by the second, and the median of three growths ignores a
+/// first cycle that fills a cache. Where that median is over the bound,
+/// [`MORE_CYCLES`] more are run and the median of all decides: a leak grows
+/// every cycle, a chance step (the driver taking 36 MB at a moment of its
+/// own, as chapter 06's window does now and then) only some.
+pub const CYCLES: usize = 3;
+pub const MORE_CYCLES: usize = 2;
+
+/// The most a chapter's memory (the process's resident set, the GPU's
+/// buffers and textures, a page's live heap) may grow by steadily, in
+/// bytes a frame, before the tests call it a leak: 8 KB, 1.7 GB an hour at
+/// 60 frames a second. Measured by the window test (the median of six
+/// stretch slopes over 60 frames), chapters that do not leak grew by at
+/// most 1.2 KB a frame, once 3.8; the leaks found so far by 1.4 to 25 MB.
+pub const LEAK_BOUND: f64 = 8192.0;
+
+/// The most the process's memory may grow by per resize through 1×1 and
+/// back, or per minimise and restore, in bytes: 4 MB. Measured, chapters
+/// that do not leak grew by up to 1.9 MB a resize (the median of three)
+/// while lavapipe's window code kept the pictures of the first few sizes
+/// (it stops after five cycles or so); the resident set cannot tell a
+/// leaked 640×360 picture (0.9 MB) from that, the GPU's count can.
+pub const CYCLE_BOUND: f64 = 4_194_304.0;
+
+/// The most the GPU's buffers and textures may grow by per cycle, in bytes:
+/// 256 KB. wgpu counts them exactly: chapters that do not leak grew by at
+/// most 2 KB a cycle, and one leaked 640×360 picture is 0.9 MB.
+pub const GPU_CYCLE_BOUND: f64 = 262_144.0;
+
+/// One reading: frames drawn so far, and bytes in use then.
+pub type Reading = (u64, u64);
+
+/// The median of `values` (the mean of the middle two for an even count);
+/// `None` when there are none.
+pub fn median(values: &mut [f64]) -> Option<f64> {
+    values.sort_by(f64::total_cmp);
+    let n = values.len();
+    match n {
+        0 => None,
+        _ if n % 2 == 1 => Some(values[n / 2]),
+        _ => Some((values[n / 2 - 1] + values[n / 2]) / 2.0),
+    }
+}
+
+/// The steady growth in bytes a frame of `readings` (in frame order): the
+/// median of the slopes of [`STRETCHES`] stretches of equal frame counts,
+/// each from the first reading at or after its start to the last at or
+/// before its end. `None` when the readings span fewer than
+/// [`WATCHED_FRAMES`] frames or a stretch has fewer than two.
+pub fn growth_per_frame(readings: &[Reading]) -> Option<f64> {
+    let (first, last) = (readings.first()?.0, readings.last()?.0);
+    if last - first < WATCHED_FRAMES {
+        return None;
+    }
+    let span = (last - first) as f64 / STRETCHES as f64;
+    let mut slopes = Vec::with_capacity(STRETCHES);
+    for k in 0..STRETCHES {
+        let (start, end) = (first as f64 + span * k as f64, first as f64 + span * (k + 1) as f64);
+        let inside: Vec<&Reading> =
+            readings.iter().filter(|(frame, _)| *frame as f64 >= start - 1e-9 && *frame as f64 <= end + 1e-9).collect();
+        let (a, b) = (inside.first()?, inside.last()?);
+        if b.0 <= a.0 {
+            return None;
+        }
+        slopes.push((b.1 as f64 - a.1 as f64) / (b.0 - a.0) as f64);
+    }
+    median(&mut slopes)
+}
+
+/// The growth in bytes a cycle (a resize, a minimise), from memory read in
+/// the same state before each cycle and after the last: the median of the
+/// differences. `None` with fewer than two readings.
+pub fn growth_per_cycle(readings: &[u64]) -> Option<f64> {
+    let mut growths: Vec<f64> = readings.windows(2).map(|pair| pair[1] as f64 - pair[0] as f64).collect();
+    median(&mut growths)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// 61 readings, frame 100 to 160, `bytes(frame)` each.
+    fn watched(bytes: impl Fn(u64) -> f64) -> Vec<Reading> {
+        (100..=160).map(|f| (f, bytes(f).round() as u64)).collect()
+    }
+
+    #[test]
+    fn a_steady_leak_is_its_slope_whatever_the_steps_and_the_jitter() {
+        // 16 KB a frame, two one-off steps of 30 MB, and jitter of ±200 KB.
+        let jitter = |f: u64| if f.is_multiple_of(2) { 200e3 } else { -200e3 };
+        let step = |f: u64| if f >= 117 { 30e6 } else { 0.0 } + if f >= 148 { 30e6 } else { 0.0 };
+        let leak = watched(|f| 500e6 + 16384.0 * (f - 100) as f64 + step(f) + jitter(f));
+        let growth = growth_per_frame(&leak).unwrap();
+        // Each stretch runs 10 frames between two readings of the same
+        // jitter's sign: the jitter cancels, the steps stay in theirs.
+        assert!((growth - 16384.0).abs() < 1.0, "{growth}");
+        assert!(growth > LEAK_BOUND);
+    }
+
+    #[test]
+    fn one_off_steps_and_jitter_are_not_a_leak() {
+        // Pages of 4 KB taken and given back, up to 48 KB, with no trend.
+        let noise = |f: u64| ((f * 7919) % 13) as f64 * 4096.0;
+        let steps =
+            watched(|f| 400e6 + if f >= 125 { 36e6 } else { 0.0 } + if f >= 141 { 9e6 } else { 0.0 } + noise(f));
+        let growth = growth_per_frame(&steps).unwrap();
+        assert!(growth.abs() <= LEAK_BOUND, "{growth}");
+        // The minimum of the stretches would hide a leak under one quiet
+        // stretch: the median does not.
+        let mut quiet_once = watched(|f| 16384.0 * (f - 100) as f64);
+        for reading in quiet_once.iter_mut().filter(|(f, _)| (130..=140).contains(f)) {
+            reading.1 = 16384 * 30;
+        }
+        assert!(growth_per_frame(&quiet_once).unwrap() > LEAK_BOUND);
+    }
+
+    #[test]
+    fn too_few_frames_say_nothing() {
+        let short: Vec<Reading> = (0..WATCHED_FRAMES).map(|f| (f, 1000 * f)).collect();
+        assert_eq!(growth_per_frame(&short), None, "59 frames apart");
+        let mut enough = short.clone();
+        enough.push((WATCHED_FRAMES, 1000 * WATCHED_FRAMES));
+        assert_eq!(growth_per_frame(&enough), Some(1000.0));
+        assert_eq!(growth_per_frame(&[]), None);
+    }
+
+    #[test]
+    fn cycles_grow_by_their_median() {
+        // A first resize fills a cache; a leak grows every cycle.
+        assert_eq!(growth_per_cycle(&[100, 9_000_100, 9_000_300, 9_000_200]), Some(200.0));
+        assert_eq!(growth_per_cycle(&[0, 3_000_000, 6_100_000, 9_000_000]), Some(3_000_000.0));
+        assert_eq!(growth_per_cycle(&[5]), None);
+    }
+}
