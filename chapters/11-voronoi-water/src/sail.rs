@@ -184,25 +184,73 @@ mod tests {
         }
     }
 
+    /// A pose at `heading`, somewhere on the sea, tilted by `pitch` and
+    /// `roll`, and its model matrix: the one the renderer draws the boat,
+    /// the sail and the sailor with.
+    fn model_at(heading: f32, pitch: f32, roll: f32) -> common::glam::Mat4 {
+        let helm = boat::Helm { position: Vec2::new(700.0, 1300.0), heading, speed: 5.0 };
+        boat::Pose { helm, heave: 0.4, pitch, roll }.model()
+    }
+
+    /// The boat's right side and its bow in the world's xz plane, as its
+    /// model matrix places the model's +x and −z: not from the expression
+    /// `wind_across` turns the heading into.
+    fn sides(model: common::glam::Mat4) -> (Vec2, Vec2) {
+        let flat = |v: Vec3| Vec2::new(v.x, v.z).normalize();
+        (flat(model.transform_vector3(Vec3::X)), flat(model.transform_vector3(Vec3::NEG_Z)))
+    }
+
     #[test]
-    fn the_sail_fills_downwind_and_not_with_the_wind_along_it() {
+    fn the_wind_across_is_the_winds_part_along_the_boats_right_side() {
         for heading in [0.0, 0.9, 2.5, 4.0, 5.9] {
-            let ahead = boat::forward(heading);
-            let starboard = Vec2::new(-ahead.y, ahead.x);
-            // With the wind along the keel, from ahead or astern: flat.
-            for along in [ahead, -ahead] {
-                assert!(wind_across(heading, along).abs() < 1e-6);
-                assert!(swell(0.3, 0.3, wind_across(heading, along)).abs() < 1e-6);
+            let (starboard, bow) = sides(model_at(heading, 0.0, 0.0));
+            // From the beam: all of it, and from the other beam, all of it
+            // the other way; along the keel, from ahead or astern, none.
+            assert!((wind_across(heading, starboard) - 1.0).abs() < 1e-5, "heading {heading}");
+            assert!((wind_across(heading, -starboard) + 1.0).abs() < 1e-5, "heading {heading}");
+            for along in [bow, -bow] {
+                assert!(wind_across(heading, along).abs() < 1e-5, "heading {heading}");
+                assert!(swell(0.3, 0.3, wind_across(heading, along)).abs() < 1e-5);
             }
-            // Blowing towards starboard, it pushes the cloth to +x; from
-            // the other side, exactly the other way.
-            let to_starboard = swell(0.3, 0.3, wind_across(heading, starboard));
-            let to_port = swell(0.3, 0.3, wind_across(heading, -starboard));
-            assert!(to_starboard > 0.5 * SWELL_DEPTH, "heading {heading}: {to_starboard}");
-            assert!((to_starboard + to_port).abs() < 1e-6);
             // Halfway between: as the cosine says.
-            let quarter = (ahead + starboard).normalize();
+            let quarter = (bow + starboard).normalize();
             assert!((wind_across(heading, quarter) - std::f32::consts::FRAC_1_SQRT_2).abs() < 1e-5);
+        }
+    }
+
+    /// The cloth fills downwind, measured where it is drawn: the bent sail
+    /// and the flat one placed by the boat's model matrix (on a level sea
+    /// and rolled and pitched on a wave), each cloth vertex's move in the
+    /// world compared with the wind. None moves against it, and the belly
+    /// moves with it by its depth times the wind across.
+    #[test]
+    fn the_cloth_moves_downwind_in_the_world() {
+        let rig = load(&read_builtin).unwrap();
+        let wind = wind();
+        let downwind = Vec3::new(wind.x, 0.0, wind.y);
+        for heading in [0.0, 0.9, 2.5, 4.0, 5.9] {
+            for (pitch, roll) in [(0.0, 0.0), (0.08, -0.12)] {
+                let model = model_at(heading, pitch, roll);
+                let across = wind_across(heading, wind);
+                let bent = rig.bent_sail(across);
+                let mut deepest = 0.0f32;
+                for &i in &rig.cloth {
+                    let at = |p: [f32; 3]| model.transform_point3(Vec3::from(p));
+                    let moved = at(bent[i].position) - at(rig.sail.vertices[i].position);
+                    let with_the_wind = moved.dot(downwind);
+                    assert!(with_the_wind >= -1e-4, "heading {heading}: vertex {i} moves {with_the_wind} m upwind");
+                    deepest = deepest.max(with_the_wind);
+                }
+                // The wind's part across the boat's right side, as its
+                // model matrix has it, times the belly's depth: the middle
+                // moves that far downwind (less the roll's tilt of the mast).
+                let (starboard, _) = sides(model);
+                let expected = SWELL_DEPTH * starboard.dot(wind).powi(2);
+                assert!(
+                    (deepest - expected).abs() < 0.02 * SWELL_DEPTH + 1e-4,
+                    "heading {heading}, pitch {pitch}, roll {roll}: the belly moved {deepest} m downwind, not {expected}"
+                );
+            }
         }
     }
 
