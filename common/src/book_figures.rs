@@ -1,8 +1,48 @@
 //! What a book page quotes from a bench table (`book/src/bench/*.md`,
-//! written by `cargo xtask bench`). The tests of the pages' worked
-//! solutions read a figure here, write it as the page does, and check that
-//! the page says it, so that a bench run that moves a figure fails them
-//! until the page follows.
+//! written by `cargo xtask bench`), and from a run of the code. The tests
+//! of the pages' worked solutions read a bench figure here, write it as the
+//! page does, and check that the page says it, so that a bench run that
+//! moves a figure fails them until the page follows; a figure measured by
+//! running the code once and copied into a test is a [`Measured`].
+
+/// A figure a worked solution's test got by running the chapter's code (a
+/// render, a cull, a simulation) and copied, with the page, which says
+/// "measured" beside it: a change detector. It says the code still gives
+/// what the page says, not why; a figure a test can derive from first
+/// principles is derived there instead. Each solutions file keeps its
+/// measured figures together, in one `measured` block.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Measured {
+    pub value: f64,
+    /// How far a new run may land from it and still be the page's figure.
+    pub within: f64,
+}
+
+impl Measured {
+    pub const fn new(value: f64, within: f64) -> Self {
+        Self { value, within }
+    }
+
+    /// Whether `actual` is the measured figure still.
+    pub fn holds(self, actual: f64) -> bool {
+        (actual - self.value).abs() <= self.within
+    }
+
+    /// Panics unless `actual` is the measured figure still, saying that
+    /// `what` moved and what to do about it.
+    #[track_caller]
+    pub fn check(self, what: &str, actual: impl Into<f64>) {
+        let actual = actual.into();
+        assert!(
+            self.holds(actual),
+            "{what} is now {actual}, where the test and its page have {} (±{}), measured on an earlier run: a \
+             change detector moved. If the change is meant, measure again and copy the new figure here and onto \
+             the page",
+            self.value,
+            self.within
+        );
+    }
+}
 
 /// The median, in ms, of the first row of a bench table that starts
 /// `| view | what`: `median_ms(table, "default", "frame")`.
@@ -33,6 +73,14 @@ pub fn solution<'page>(page: &'page str, opening: &str) -> Option<&'page str> {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    #[should_panic(expected = "a change detector moved")]
+    fn a_measured_figure_that_moved_says_so() {
+        let measured = Measured::new(0.157, 0.02);
+        assert!(measured.holds(0.17) && !measured.holds(0.18));
+        measured.check("the share of pixels that change", 0.18);
+    }
 
     #[test]
     fn figures_are_read_and_written_as_the_pages_do() {
