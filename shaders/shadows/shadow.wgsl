@@ -50,7 +50,7 @@ fn to_shadow_map(world: vec3<f32>) -> vec3<f32> {
 // Sixteen points spread over the unit disk, none closer to another than
 // 0.43: a Poisson-disk set, random but never clumped. Made by dart
 // throwing (random points, each kept only if it lands at least 0.42 from
-// every point kept before); a test in shadow_map.rs checks the spacing.
+// every point kept before); a test in tests/it/shadow_maps.rs checks the spacing.
 const POISSON = array<vec2<f32>, 16>(
     vec2<f32>(0.3601, 0.3278), vec2<f32>(0.3830, -0.2752),
     vec2<f32>(-0.6418, -0.5223), vec2<f32>(0.3585, -0.8642),

@@ -1,10 +1,19 @@
-//! Workspace-level tests that need more than one chapter's pieces, one binary: clip distances, the shader panel, hot reload, light culling. (The snapshot comparison is its own harness, `tests/snapshots.rs`.)
+//! Workspace-level tests, one binary: the snapshot comparison and the
+//! bless log, the bench tables' check, real references painted out, and
+//! what needs more than one chapter's pieces (clip distances, the shader
+//! panel, hot reload, light culling, chapter 04's fog). (The snapshot test
+//! of every view is its own harness, `tests/snapshots.rs`.)
 //!
 //! One test binary per crate: each links wgpu, naga, egui and winit, so
 //! every extra file here would be another link of all of them.
 
+mod bench_tables;
+mod blessings;
 mod clipping;
+mod comparison;
 mod editor;
+mod fog;
 mod hot_reload;
 mod light_culling;
+mod references;
 mod try_it_links;

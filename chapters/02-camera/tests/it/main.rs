@@ -1,7 +1,9 @@
-//! Chapter 02's integration tests, one binary: the worked solutions to the
-//! page's exercises. (The scene's own tests are unit tests in `src/`.)
+//! Chapter 02's tests, one binary: the scene's model matrices, and the
+//! worked solutions to the page's exercises. (The library has no unit
+//! tests: a second test binary would be one more link of wgpu.)
 //!
 //! One test binary per crate: each links wgpu, naga, egui and winit, so
 //! every extra file in `tests/` would be another link of all of them.
 
+mod scene;
 mod solutions;

@@ -7,28 +7,42 @@ use common::headless::{OFFSCREEN_FORMAT, Offscreen, draw_frame, read_floats};
 use common::{Chapter, Gpu, PassTimer, Target, chapter::view_index};
 use lighting::{Display, LightCount, LightTerm, LightingChapter, MAX_LIGHTS, Settings, Shading};
 
-/// Draws one frame with `settings` at `width` × `height`, inside a
-/// validation error scope, and checks the bloom for NaNs.
-fn draw(gpu: &Gpu, (width, height): (u32, u32), settings: Settings, case: &str) {
-    let target = Target { format: OFFSCREEN_FORMAT, width, height };
-    let mut chapter = LightingChapter::new(gpu, target, ()).unwrap();
-    chapter.select_view(view_index::<LightingChapter>("night").unwrap());
-    chapter.settings = settings;
-    let offscreen = Offscreen::new(&gpu.device, target);
-    gpu.catch_validation(|| draw_frame(gpu, &mut chapter, &offscreen.view, 6.0, 1, &PassTimer::off()))
-        .unwrap_or_else(|e| panic!("{case}: {e}"));
-    let bloom = read_floats(gpu, chapter.post.bloom().output().texture()).unwrap();
-    assert!(bloom.iter().flatten().all(|v| v.is_finite()), "{case}: the bloom holds a NaN or an infinity");
+/// The night city drawn into a `width` × `height` target, over and over
+/// with other settings: the city (its countryside too) is built once, as a
+/// learner's window builds it once and then moves sliders.
+struct Night {
+    chapter: LightingChapter,
+    offscreen: Offscreen,
+}
+
+impl Night {
+    fn new(gpu: &Gpu, (width, height): (u32, u32)) -> Self {
+        let target = Target { format: OFFSCREEN_FORMAT, width, height };
+        let mut chapter = LightingChapter::new(gpu, target, ()).unwrap();
+        chapter.select_view(view_index::<LightingChapter>("night").unwrap());
+        Self { chapter, offscreen: Offscreen::new(&gpu.device, target) }
+    }
+
+    /// Draws one frame with `settings`, inside a validation error scope,
+    /// and checks the bloom for NaNs.
+    fn draw(&mut self, gpu: &Gpu, settings: Settings, case: &str) {
+        self.chapter.settings = settings;
+        let Self { chapter, offscreen } = self;
+        gpu.catch_validation(|| draw_frame(gpu, chapter, &offscreen.view, 6.0, 1, &PassTimer::off()))
+            .unwrap_or_else(|e| panic!("{case}: {e}"));
+        let bloom = read_floats(gpu, chapter.post.bloom().output().texture()).unwrap();
+        assert!(bloom.iter().flatten().all(|v| v.is_finite()), "{case}: the bloom holds a NaN or an infinity");
+    }
 }
 
 #[test]
 fn sliders_at_their_ends_draw_without_errors_or_nans() {
     let gpu = Gpu::headless(LightingChapter::gpu_needs()).expect("an adapter (lavapipe will do)");
     let night = Settings::NIGHT;
-    let small = (96, 54);
+    let mut small = Night::new(&gpu, (96, 54));
     for lights in [LightCount::First(0), LightCount::First(MAX_LIGHTS), LightCount::City] {
         for shading in [Shading::Flat, Shading::Gouraud, Shading::Phong] {
-            draw(&gpu, small, Settings { lights, shading, ..night }, &format!("{lights:?}, {shading:?}"));
+            small.draw(&gpu, Settings { lights, shading, ..night }, &format!("{lights:?}, {shading:?}"));
         }
     }
     for (threshold, strength, spread, exposure) in [(0.2, 2.0, 0.0, 0.1), (4.0, 0.0, 1.0, 4.0), (0.2, 2.0, 1.0, 4.0)] {
@@ -42,10 +56,11 @@ fn sliders_at_their_ends_draw_without_errors_or_nans() {
         ] {
             let mut s = Settings { display, exposure, ..night };
             (s.bloom.threshold, s.bloom.strength, s.bloom.spread) = (threshold, strength, spread);
-            draw(&gpu, small, s, &format!("{display:?}, bloom {threshold}/{strength}/{spread}, exposure {exposure}"));
+            small.draw(&gpu, s, &format!("{display:?}, bloom {threshold}/{strength}/{spread}, exposure {exposure}"));
         }
     }
+    let mut one_pixel = Night::new(&gpu, (1, 1));
     for lights in [LightCount::City, LightCount::First(MAX_LIGHTS)] {
-        draw(&gpu, (1, 1), Settings { lights, ..night }, &format!("1 × 1, {lights:?}"));
+        one_pixel.draw(&gpu, Settings { lights, ..night }, &format!("1 × 1, {lights:?}"));
     }
 }

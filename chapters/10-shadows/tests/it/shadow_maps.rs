@@ -1,13 +1,15 @@
 //! Shadows against geometry: a box above a plane casts the shadow that
 //! rays towards the sun say it must; taking the bias away makes lit faces
 //! shadow themselves; the scripted run gives the same picture every time.
+//! And the map itself: its size clamped, its Poisson disk, its box
+//! snapped to whole texels.
 
 use common::glam::{Quat, Vec2, Vec3};
 use common::headless::{OFFSCREEN_FORMAT, Offscreen, capture, read_floats};
 use common::{Camera, Chapter, Gpu, Target, primitives, wgpu};
 use lighting::lights::{Daylight, daylight};
 use lighting::{HDR_FORMAT, Highlight, LoopOptions, SceneLights};
-use shadows::shadow_map::{Bias, Filter, ShadowMap, ShadowSettings, fit_light};
+use shadows::shadow_map::{self, Bias, Filter, ShadowMap, ShadowSettings, fit_light};
 use shadows::{ShadowedRenderer, ShadowsChapter, Show, game, scene};
 use textures::materials::{Materials, Uploader};
 use textures::mesh::{MaterialDesc, ModelData, ModelInstance};
@@ -273,3 +275,62 @@ fn a_key_takes_over_from_the_demo_and_every_key_at_once_breaks_nothing() {
     let solids = game::level().solids();
     assert!(shadows::physics::standing(&rest.aabb, &solids), "{rest:?}");
 }
+
+#[test]
+fn sizes_are_clamped_to_the_chapter_and_the_adapter_with_a_note() {
+    assert_eq!(shadow_map::clamp_size(2048, 8192), (2048, None));
+    let (size, note) = shadow_map::clamp_size(16384, 8192);
+    assert_eq!(size, 4096);
+    assert!(note.unwrap().contains("using 4096²"));
+    assert_eq!(shadow_map::clamp_size(100, 8192).0, 512);
+    // WebGL 2 promises only 2048.
+    let (size, note) = shadow_map::clamp_size(4096, 2048);
+    assert_eq!(size, 2048);
+    assert!(note.unwrap().contains("at most 2048²"));
+}
+
+#[test]
+fn the_poisson_disk_is_sixteen_well_spread_points_in_the_unit_disk() {
+    let source = include_str!("../../../../shaders/shadows/shadow.wgsl");
+    let table = source.split("const POISSON").nth(1).unwrap().split(");").next().unwrap();
+    let points: Vec<[f32; 2]> = table
+        .split("vec2<f32>(")
+        .skip(1)
+        .map(|p| {
+            let numbers: Vec<f32> =
+                p.split(')').next().unwrap().split(',').map(|n| n.trim().parse().unwrap()).collect();
+            [numbers[0], numbers[1]]
+        })
+        .collect();
+    assert_eq!(points.len(), 16);
+    let mut closest = f32::MAX;
+    for (i, a) in points.iter().enumerate() {
+        assert!(a[0].hypot(a[1]) <= 1.0, "{a:?} is outside the unit disk");
+        for b in &points[i + 1..] {
+            closest = closest.min((a[0] - b[0]).hypot(a[1] - b[1]));
+        }
+    }
+    assert!(closest >= 0.43, "two points only {closest} apart");
+}
+
+// ANCHOR: snapping_test
+#[test]
+fn sliding_the_view_moves_the_box_by_whole_texels_and_keeps_its_size() {
+    let towards_sun = Vec3::new(-0.7, 0.58, 0.41).normalize();
+    let view = [Vec3::new(-18.0, -9.0, 4.0), Vec3::new(18.0, 10.0, 4.0), Vec3::new(-22.0, -11.0, -4.0)];
+    let bounds = (Vec3::new(-5.0, -6.0, -4.0), Vec3::new(125.0, 9.0, 4.0));
+    let first = fit_light(towards_sun, &view, bounds, 2048);
+    for slide in [0.013, 0.5, 7.31, 40.77] {
+        let moved: Vec<Vec3> = view.iter().map(|p| *p + Vec3::new(slide, slide * 0.3, 0.0)).collect();
+        let next = fit_light(towards_sun, &moved, bounds, 2048);
+        assert_eq!(next.texel, first.texel, "the texel's size changed after sliding {slide} m");
+        // A world point lands on the map a whole number of texels from
+        // where it landed before: texel edges stay put on the ground.
+        let p = Vec3::new(3.0, 0.0, 1.0);
+        let shift = (next.view_proj.project_point3(p) - first.view_proj.project_point3(p)) * 1024.0;
+        for axis in [shift.x, shift.y] {
+            assert!((axis - axis.round()).abs() < 0.02, "moved {axis} texels after sliding {slide} m");
+        }
+    }
+}
+// ANCHOR_END: snapping_test
