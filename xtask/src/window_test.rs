@@ -260,8 +260,7 @@ impl<'d> Session<'d> {
             self.x(&["windowsize", "1", "1"])?;
             self.wait_for("a 1×1 frame", |p| p.surface == (1, 1))?;
             self.x(&["windowsize", &w, &h])?;
-            self.wait_for("a full-size frame again", |p| p.surface == SIZE)?;
-            at_full_size.push(self.frames(1, "another full-size frame")?);
+            at_full_size.push(self.wait_for("a full-size frame again", |p| p.surface == SIZE)?);
             if at_full_size.len() == CYCLES + 1 && self.grows_too_much_a_cycle(&at_full_size) {
                 cycles += leak::MORE_CYCLES;
             }
@@ -295,8 +294,7 @@ impl<'d> Session<'d> {
                 frame.as_secs_f64()
             );
             self.x(&["windowactivate"])?;
-            self.frames(1, "a frame after restoring")?;
-            shown.push(self.frames(1, "another frame after restoring")?);
+            shown.push(self.frames(1, "a frame after restoring")?);
             if shown.len() == CYCLES + 1 && self.grows_too_much_a_cycle(&shown) {
                 cycles += leak::MORE_CYCLES;
             }
