@@ -77,65 +77,71 @@ fn status_bytes(field: &str) -> Option<u64> {
     Some(kib * 1024)
 }
 
-/// The page's live heap: bytes allocated and not yet freed, as
-/// [`live::Counting`] counts them.
+/// The page's live heap: bytes allocated and not yet freed, as its
+/// allocator counts them ([`Counting`]).
 #[cfg(target_arch = "wasm32")]
 pub fn process_bytes() -> Option<u64> {
-    Some(live::LIVE.load(std::sync::atomic::Ordering::Relaxed) as u64)
+    Some(PAGE_ALLOCATOR.live() as u64)
 }
 
-/// A page's allocator, counting. The WebAssembly heap only grows: memory a
-/// page frees stays in it for the allocator to hand out again, so the
-/// heap's size would hide a leak behind the largest moment so far. Every
-/// allocation through this one adds its size to [`live::LIVE`], every free
-/// takes it off.
+/// A page's allocator: the system's (dlmalloc, on wasm32), counting.
 #[cfg(target_arch = "wasm32")]
-mod live {
-    use std::alloc::{GlobalAlloc, Layout, System};
-    use std::sync::atomic::{AtomicUsize, Ordering::Relaxed};
+#[global_allocator]
+static PAGE_ALLOCATOR: Counting<std::alloc::System> = Counting::new(std::alloc::System);
 
-    /// Bytes allocated and not yet freed.
-    pub static LIVE: AtomicUsize = AtomicUsize::new(0);
+/// An allocator that counts the bytes it has handed out and not taken
+/// back. The WebAssembly heap only grows: memory a page frees stays in it
+/// for the allocator to hand out again, so the heap's size would hide a
+/// leak behind the largest moment so far. A page allocates through one of
+/// these (on wasm32 it is the global allocator) and reports its count.
+pub struct Counting<A> {
+    inner: A,
+    live: std::sync::atomic::AtomicUsize,
+}
 
-    /// The system allocator (dlmalloc, on wasm32), counting.
-    pub struct Counting;
-
-    // SAFETY: every call goes to `System` with the caller's arguments; the
-    // count is only bookkeeping beside it.
-    unsafe impl GlobalAlloc for Counting {
-        unsafe fn alloc(&self, layout: Layout) -> *mut u8 {
-            let pointer = unsafe { System.alloc(layout) };
-            if !pointer.is_null() {
-                LIVE.fetch_add(layout.size(), Relaxed);
-            }
-            pointer
-        }
-
-        unsafe fn alloc_zeroed(&self, layout: Layout) -> *mut u8 {
-            let pointer = unsafe { System.alloc_zeroed(layout) };
-            if !pointer.is_null() {
-                LIVE.fetch_add(layout.size(), Relaxed);
-            }
-            pointer
-        }
-
-        unsafe fn dealloc(&self, pointer: *mut u8, layout: Layout) {
-            unsafe { System.dealloc(pointer, layout) };
-            LIVE.fetch_sub(layout.size(), Relaxed);
-        }
-
-        unsafe fn realloc(&self, pointer: *mut u8, layout: Layout, new_size: usize) -> *mut u8 {
-            let moved = unsafe { System.realloc(pointer, layout, new_size) };
-            if !moved.is_null() {
-                LIVE.fetch_add(new_size, Relaxed);
-                LIVE.fetch_sub(layout.size(), Relaxed);
-            }
-            moved
-        }
+impl<A> Counting<A> {
+    pub const fn new(inner: A) -> Self {
+        Self { inner, live: std::sync::atomic::AtomicUsize::new(0) }
     }
 
-    #[global_allocator]
-    static ALLOCATOR: Counting = Counting;
+    /// Bytes allocated and not yet freed.
+    pub fn live(&self) -> usize {
+        self.live.load(std::sync::atomic::Ordering::Relaxed)
+    }
+}
+
+// SAFETY: every call goes to `inner` with the caller's arguments; the count
+// is only bookkeeping beside it.
+unsafe impl<A: std::alloc::GlobalAlloc> std::alloc::GlobalAlloc for Counting<A> {
+    unsafe fn alloc(&self, layout: std::alloc::Layout) -> *mut u8 {
+        let pointer = unsafe { self.inner.alloc(layout) };
+        if !pointer.is_null() {
+            self.live.fetch_add(layout.size(), std::sync::atomic::Ordering::Relaxed);
+        }
+        pointer
+    }
+
+    unsafe fn alloc_zeroed(&self, layout: std::alloc::Layout) -> *mut u8 {
+        let pointer = unsafe { self.inner.alloc_zeroed(layout) };
+        if !pointer.is_null() {
+            self.live.fetch_add(layout.size(), std::sync::atomic::Ordering::Relaxed);
+        }
+        pointer
+    }
+
+    unsafe fn dealloc(&self, pointer: *mut u8, layout: std::alloc::Layout) {
+        unsafe { self.inner.dealloc(pointer, layout) };
+        self.live.fetch_sub(layout.size(), std::sync::atomic::Ordering::Relaxed);
+    }
+
+    unsafe fn realloc(&self, pointer: *mut u8, layout: std::alloc::Layout, new_size: usize) -> *mut u8 {
+        let moved = unsafe { self.inner.realloc(pointer, layout, new_size) };
+        if !moved.is_null() {
+            self.live.fetch_add(new_size, std::sync::atomic::Ordering::Relaxed);
+            self.live.fetch_sub(layout.size(), std::sync::atomic::Ordering::Relaxed);
+        }
+        moved
+    }
 }
 
 /// Three readings of memory, `frames[0]` and then `frames[1]` frames
@@ -223,6 +229,46 @@ mod tests {
             "memory: process 100000 130000 160000 bytes, gpu 4096 n/a 4096 bytes, after 15 and 15 frames"
         );
         assert_eq!(growth.summary(), "memory: process 0.2 MB (+2.0 KB a frame), GPU 0.0 MB, over 15 + 15 frames");
+    }
+
+    /// A page's frames through the counting allocator: one that frees what
+    /// it takes leaves the count flat, however much it took (the heap's
+    /// size would have grown to its largest moment); one that keeps 16 KB
+    /// a frame is a leak to the browser test's judge.
+    #[test]
+    fn the_counting_allocator_sees_a_page_leak_the_heap_size_hides() {
+        use std::alloc::{GlobalAlloc as _, Layout, System};
+        let (big, small) =
+            (Layout::from_size_align(4 << 20, 8).unwrap(), Layout::from_size_align(16 << 10, 8).unwrap());
+        let frames = 0..=crate::leak::WATCHED_FRAMES;
+        // SAFETY (both pages): each pointer is freed with the layout it was made with.
+        let tidy = Counting::new(System);
+        let flat: Vec<(u64, u64)> = frames
+            .clone()
+            .map(|frame| unsafe {
+                let scratch = tidy.alloc(big);
+                let scratch = tidy.realloc(scratch, big, 2 * big.size());
+                tidy.dealloc(scratch, Layout::from_size_align(2 * big.size(), 8).unwrap());
+                (frame, tidy.live() as u64)
+            })
+            .collect();
+        assert_eq!(crate::leak::growth_per_frame(&flat), Some(0.0));
+        assert_eq!(tidy.live(), 0, "every byte given back is counted back");
+        let leaky = Counting::new(System);
+        let mut kept = Vec::new();
+        let leaking: Vec<(u64, u64)> = frames
+            .map(|frame| {
+                kept.push(unsafe { leaky.alloc(small) });
+                (frame, leaky.live() as u64)
+            })
+            .collect();
+        let growth = crate::leak::growth_per_frame(&leaking).unwrap();
+        assert_eq!(growth, 16384.0);
+        assert!(growth > crate::leak::LEAK_BOUND);
+        for pointer in kept {
+            unsafe { leaky.dealloc(pointer, small) };
+        }
+        assert_eq!(leaky.live(), 0);
     }
 
     #[test]
