@@ -24,8 +24,8 @@ pub const STRETCHES: usize = 6;
 /// one shows by the second, and the median of three growths ignores a
 /// first cycle that fills a cache. Where that median is over the bound,
 /// [`MORE_CYCLES`] more are run and the median of all decides: a leak grows
-/// every cycle, a chance step (the driver taking 36 MB at a moment of its
-/// own, as chapter 06's window does now and then) only some.
+/// every cycle, a chance step only some (chapter 06's window now and then
+/// takes 36 MB at once, at moments of its own: measured, not explained).
 pub const CYCLES: usize = 3;
 pub const MORE_CYCLES: usize = 2;
 
