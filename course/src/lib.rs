@@ -32,7 +32,7 @@ pub fn chapters() -> Vec<Record> {
         record::<terrain::TerrainChapter>(
             &MARS,
             "default",
-            "improved Perlin noise, fBm, chunked height-map mesh, seamless normals, frustum culling",
+            "improved Perlin noise, fBm, seamless normals, frustum culling, a quadtree of levels of detail that morph into each other (CDLOD)",
         ),
         record::<fog::FogChapter>(
             &MARS,
