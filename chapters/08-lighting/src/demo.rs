@@ -731,11 +731,12 @@ impl Chapter for LightingChapter {
                 Shading::Gouraud => &pipelines.gouraud,
                 Shading::Phong => &pipelines.phong,
             });
-            self.meshes.draw(&mut pass, s.shading == Shading::Flat, s.countryside);
+            let mut drawn = self.meshes.draw(&mut pass, s.shading == Shading::Flat, s.countryside);
             // The sky is a background, not light a surface reflects.
             if !matches!(s.display, Display::Term(_)) {
-                self.sky.draw(&mut pass);
+                drawn += self.sky.draw(&mut pass);
             }
+            frame.drawn.add("scene", drawn);
         }
 
         // Bloom, then tone mapping to the target.
