@@ -313,8 +313,11 @@ pub trait Chapter: Sized + 'static {
     /// before the first frame: whatever the chapter's flags change about
     /// where that frame starts happens here, since a headless picture never
     /// calls [`Chapter::update`]. `--walk` puts the eye on the ground under
-    /// it, as the first walking frame would.
-    fn before_first_frame(&mut self) {}
+    /// it, as the first walking frame would. `camera_placed` says whether
+    /// `--camera` put the camera where it is: a camera that follows
+    /// something (chapter 08's car) then stops following, as it does when
+    /// the learner takes the controls.
+    fn before_first_frame(&mut self, _camera_placed: bool) {}
 
     /// Interactive input, once per frame before `render`; `dt` is the real
     /// frame time in seconds. Never called when rendering headless.
@@ -369,7 +372,7 @@ pub fn start<C: Chapter>(chapter: &mut C, view: usize, camera: Option<CameraPlac
         })?;
         place.put(camera);
     }
-    chapter.before_first_frame();
+    chapter.before_first_frame(camera.is_some());
     Ok(())
 }
 

@@ -124,7 +124,7 @@ impl Chapter for FogChapter {
         Some(&mut self.camera)
     }
 
-    fn before_first_frame(&mut self) {
+    fn before_first_frame(&mut self, _camera_placed: bool) {
         ground::first_frame(&mut self.camera, self.terrain.field(), self.movement);
     }
 

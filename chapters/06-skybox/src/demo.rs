@@ -164,7 +164,7 @@ impl Chapter for SkyboxChapter {
         Some(&mut self.camera)
     }
 
-    fn before_first_frame(&mut self) {
+    fn before_first_frame(&mut self, _camera_placed: bool) {
         ground::first_frame(&mut self.camera, self.plain.terrain.field(), self.movement);
     }
 

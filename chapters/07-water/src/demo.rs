@@ -319,7 +319,7 @@ impl Chapter for WaterChapter {
         Some(&mut self.camera)
     }
 
-    fn before_first_frame(&mut self) {
+    fn before_first_frame(&mut self, _camera_placed: bool) {
         if self.steering == Steering::Fly {
             ground::first_frame(&mut self.camera, self.plain.terrain.field(), self.movement);
         }

@@ -656,6 +656,14 @@ impl Chapter for LightingChapter {
         Some(&mut self.camera)
     }
 
+    fn before_first_frame(&mut self, camera_placed: bool) {
+        // `--camera` on a view that rides a car or a drone: look from
+        // there, as when the learner takes the keys.
+        if camera_placed {
+            self.riding = None;
+        }
+    }
+
     fn update(&mut self, input: &Input, dt: f32) {
         let moving = [KeyCode::KeyW, KeyCode::KeyA, KeyCode::KeyS, KeyCode::KeyD, KeyCode::ArrowUp, KeyCode::ArrowDown];
         if moving.iter().any(|&k| input.held(k)) {
