@@ -1,6 +1,6 @@
 //! The book's bench tables (`book/src/bench/<chapter>.md`, written by
 //! `cargo xtask bench`) must describe the chapter as it is: every view in
-//! them, and no pass a view no longer draws.
+//! them, and no pass a view no longer draws, timed or counted.
 
 use std::path::{Path, PathBuf};
 
@@ -27,6 +27,23 @@ pub fn rows(table: &str) -> Vec<(String, Option<String>)> {
             let gpu = what.strip_prefix("GPU: ").and_then(|p| p.strip_suffix(" pass"));
             let pass = gpu.or_else(|| what.strip_prefix("CPU: ")).map(str::to_string);
             Some((view.to_string(), pass))
+        })
+        .collect()
+}
+
+/// The rows of a bench table's triangles table (`| view | pass | draws |
+/// triangles |`, which `--bench` prints after its notes) as (view, pass).
+pub fn triangle_rows(table: &str) -> Vec<(String, String)> {
+    table
+        .lines()
+        .filter_map(|line| {
+            let cells: Vec<&str> = line.split('|').map(str::trim).collect();
+            // | view | pass | draws | triangles |  → ["", view, pass, draws, triangles, ""]
+            if cells.len() != 6 || cells[1] == "view" || cells[1].starts_with("---") {
+                return None;
+            }
+            cells[3].parse::<u32>().ok()?;
+            Some((cells[1].to_string(), cells[2].to_string()))
         })
         .collect()
 }
@@ -65,6 +82,15 @@ pub fn check_table(path: &str, table: &str, chapter: &str, views: &[View], drawn
                 .push(format!("{path}: `{view}` no longer draws a `{pass}` pass (it draws {passes:?}); {regenerate}"));
         }
     }
+    for (view, pass) in triangle_rows(table) {
+        let Some((_, passes)) = drawn.iter().find(|(v, _)| *v == view) else { continue };
+        if !passes.contains(&pass.as_str()) {
+            problems.push(format!(
+                "{path}: `{view}` counts triangles of a `{pass}` pass it no longer draws (it draws {passes:?}); \
+                 {regenerate}"
+            ));
+        }
+    }
     problems
 }
 
@@ -93,6 +119,22 @@ mod tests {
         let noon: &[View] = &[View::mode("noon", "")];
         let problems = check_table("t.md", TABLE, "sky", noon, &[("noon", vec![])]);
         assert!(problems.iter().any(|p| p.contains("`day` is not a view of sky")), "{problems:?}");
+    }
+
+    /// The table of triangles is read by its own rows, and a pass counted
+    /// there that the view no longer draws fails like a timed one.
+    #[test]
+    fn counted_passes_must_be_drawn_too() {
+        let counted = format!(
+            "{TABLE}\nTriangles drawn in a frame, pass by pass, counted from the draws recorded:\n\n\
+             | view | pass | draws | triangles |\n|---|---|---:|---:|\n| day | plain and sky | 3 | 1,234 |\n"
+        );
+        assert_eq!(triangle_rows(&counted), [("day".to_string(), "plain and sky".to_string())]);
+        assert_eq!(rows(&counted), rows(TABLE), "the timed rows are read as before");
+        assert!(check_table("t.md", &counted, "sky", VIEWS, &[("day", vec!["plain and sky"])]).is_empty());
+        let renamed = counted.replace("| day | plain and sky | 3 |", "| day | plain | 3 |");
+        let problems = check_table("t.md", &renamed, "sky", VIEWS, &[("day", vec!["plain and sky"])]);
+        assert!(problems.len() == 1 && problems[0].contains("counts triangles of a `plain` pass"), "{problems:?}");
     }
 
     #[test]

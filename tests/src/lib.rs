@@ -15,7 +15,7 @@ use std::sync::{Arc, Mutex};
 
 use common::glam::Vec3;
 use common::headless::OFFSCREEN_FORMAT;
-use common::{Camera, Gpu, GpuNeeds, Target, ViewKind, anyhow, image};
+use common::{Camera, Gpu, GpuNeeds, PassCount, Target, View, ViewKind, anyhow, image};
 pub use course::{AnyChapter, Record, chapters, find};
 
 use snapshot::{Comparison, Tolerance};
@@ -140,17 +140,20 @@ impl Snapshots for Record {
         let mut chapter = (self.open)(&gpu, target())?;
         let mut results = Vec::new();
         let mut passes = Vec::new();
+        let mut problems = Vec::new();
         for (i, view) in self.views.iter().enumerate().filter(|(_, v)| v.snapshot) {
             chapter.show(i);
             chapter.reset_camera(i);
-            let outcome =
-                chapter.render(&gpu, i, self.snapshot_time).map_err(|e| format!("{e:#}")).and_then(|(image, drawn)| {
+            let outcome = chapter.render_counted(&gpu, i, self.snapshot_time).map_err(|e| format!("{e:#}")).and_then(
+                |(image, drawn, counted)| {
+                    problems.extend(counted_but_not_drawn(self, view, &drawn, &counted));
                     passes.push((view.name, drawn));
                     compare(self, i, &image)
-                });
+                },
+            );
             results.push(ViewResult { view: view.name, outcome });
         }
-        let mut problems = bench_tables::check(self.name, self.views, &passes);
+        problems.extend(bench_tables::check(self.name, self.views, &passes));
         problems.extend(views_told_apart(self));
         Ok((results, problems))
     }
@@ -251,6 +254,23 @@ impl Snapshots for Record {
         Ok(problems)
     }
     // ANCHOR_END: purity
+}
+
+/// The passes a frame counted triangles for must be passes it drew, by
+/// the names they are timed by: the overlay's and the bench's lines per
+/// pass then sit beside the pass's time. A problem per pass that is not.
+fn counted_but_not_drawn(record: &Record, view: &View, drawn: &[&str], counted: &[PassCount]) -> Vec<String> {
+    counted
+        .iter()
+        .filter(|count| !drawn.contains(&count.pass))
+        .map(|count| {
+            format!(
+                "{}/{}: counts triangles for a `{}` pass, but the passes it began are {drawn:?}: count under \
+                 the name the pass is timed by",
+                record.name, view.name, count.pass
+            )
+        })
+        .collect()
 }
 
 /// Every view exists to show something the others do not, so the snapshot

@@ -178,6 +178,10 @@ impl Chapter for TerrainChapter {
         Some(&mut self.camera)
     }
 
+    fn before_first_frame(&mut self, _camera_placed: bool) {
+        ground::first_frame(&mut self.camera, self.terrain.field(), self.movement);
+    }
+
     fn update(&mut self, input: &Input, dt: f32) {
         let field = self.terrain.field();
         ground::step(&self.controller, &mut self.camera, &mut self.movement, field, input, dt);

@@ -183,6 +183,10 @@ impl Chapter for InstancingChapter {
         Some(&mut self.camera)
     }
 
+    fn before_first_frame(&mut self, _camera_placed: bool) {
+        ground::first_frame(&mut self.camera, self.plain.terrain.field(), self.movement);
+    }
+
     fn update(&mut self, input: &Input, dt: f32) {
         let field = self.plain.terrain.field();
         ground::step(&self.controller, &mut self.camera, &mut self.movement, field, input, dt);

@@ -319,6 +319,12 @@ impl Chapter for WaterChapter {
         Some(&mut self.camera)
     }
 
+    fn before_first_frame(&mut self, _camera_placed: bool) {
+        if self.steering == Steering::Fly {
+            ground::first_frame(&mut self.camera, self.plain.terrain.field(), self.movement);
+        }
+    }
+
     fn update(&mut self, input: &Input, dt: f32) {
         match self.steering {
             Steering::Fly => {
