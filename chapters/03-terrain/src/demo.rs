@@ -202,9 +202,10 @@ impl Chapter for TerrainChapter {
             if settings.from_above { overhead_camera(self.terrain.field(), self.target.aspect()) } else { self.camera };
         let (camera, sun) = (&self.camera, Sun::AFTERNOON);
         self.terrain.aim_seen_from(gpu, &mut self.viewpoint, camera, detail, sun, KEEP_ALL, &seen_from);
+        let drawn = frame.drawn;
         let mut pass = frame.scene_pass("terrain", SKY, &self.depth);
         pass.set_pipeline(&self.pipeline.get());
-        self.terrain.draw(&mut pass, &self.viewpoint);
+        drawn.add("terrain", self.terrain.draw(&mut pass, &self.viewpoint));
     }
     // ANCHOR_END: render
 

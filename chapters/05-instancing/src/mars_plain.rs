@@ -318,7 +318,7 @@ impl MarsPlain {
         let mut calls = DrawCalls::default();
         if setup.terrain {
             pass.set_pipeline(&self.pipelines.get().terrain);
-            calls.terrain = self.terrain.draw(pass, viewpoint) as u32;
+            calls.terrain = self.terrain.draw(pass, viewpoint).draws;
         }
         let drawn = self.rock_runs(viewpoint, setup);
         calls.rocks = self.draw_rocks(pass, setup.mode, &drawn);
