@@ -129,6 +129,10 @@ impl TerrainRenderer {
         &self.data.mesh
     }
 
+    pub fn chunk_bounds(&self) -> &[crate::chunks::Aabb] {
+        &self.data.mesh.bounds
+    }
+
     /// Makes the terrain again from `self.settings` (the number of chunks
     /// stays as it was). Viewpoints keep working.
     pub fn regenerate(&mut self, gpu: &Gpu) {
