@@ -302,6 +302,12 @@ impl Chapter for InstancingChapter {
 }
 
 impl InstancingChapter {
+    /// The viewpoint the chapter's picture is drawn from: its rock lists,
+    /// for the tests.
+    pub fn viewpoint(&self) -> &PlainViewpoint {
+        &self.viewpoint
+    }
+
     /// The overlay's and the bench's line where this view asks the GPU to
     /// cull and the device cannot: which capability it lacks.
     fn fallback_line(&self) -> Option<String> {

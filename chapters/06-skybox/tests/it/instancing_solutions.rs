@@ -137,7 +137,8 @@ fn exercise_2_a_tilted_rock_tilts_its_normal_by_the_same_rotation() {
     assert!((worst_forgotten - 0.4f32.to_degrees()).abs() < 1.5, "{worst_forgotten}");
 
     // The WGSL edit is valid against the real modules.
-    let rocks_wgsl = shader!("instancing/rocks.wgsl", imports: ["terrain/terrain.wgsl", "fog/fog.wgsl"]);
+    let rocks_wgsl =
+        shader!("instancing/rocks.wgsl", imports: ["terrain/terrain.wgsl", "fog/fog.wgsl", "instancing/rock.wgsl"]);
     let mut edited = rocks_wgsl.embedded.to_string();
     for (from, to) in [(ROCK_TRANSFORM, TILTED_TRANSFORM), (ROCK_NORMAL, TILTED_NORMAL)] {
         assert!(edited.contains(from), "rocks.wgsl changed: update the exercise's edit");
@@ -170,7 +171,8 @@ impl RockLab {
             bind_group_layouts: &[Some(&terrain.bind_group_layout), Some(&air.layout)],
             immediate_size: 0,
         });
-        let rocks = shader!("instancing/rocks.wgsl", imports: ["terrain/terrain.wgsl", "fog/fog.wgsl"]);
+        let rocks =
+            shader!("instancing/rocks.wgsl", imports: ["terrain/terrain.wgsl", "fog/fog.wgsl", "instancing/rock.wgsl"]);
         let module = rocks.module(gpu).unwrap();
         let buffers = [Some(Vertex::LAYOUT), Some(RockInstance::LAYOUT)];
         let pipeline = common::pipeline::mesh_pipeline(
@@ -349,8 +351,8 @@ fn exercise_5_every_visible_chunk_in_one_call_draws_the_same_terrain() {
     let target = Target { format: OFFSCREEN_FORMAT, width: 320, height: 180 };
     let camera = terrain::start_camera(terrain.field(), target.aspect());
     let frustum = Frustum::from_view_projection(camera.view_projection());
-    let visible: Vec<u32> = (0..terrain.mesh().bounds.len() as u32)
-        .filter(|&c| frustum.intersects(&terrain.mesh().bounds[c as usize]))
+    let visible: Vec<u32> = (0..terrain.chunk_bounds().len() as u32)
+        .filter(|&c| frustum.intersects(&terrain.chunk_bounds()[c as usize]))
         .collect();
 
     // The storage buffers, their layout, and the pipeline.
