@@ -42,7 +42,8 @@ pub const VIEW_TABLE: [ViewRow<Setup, CameraPreset>; 11] = [
         "cpu-culling",
         "the same plain, the rocks culled by chunk group on the CPU and every one in view drawn at full detail",
         Setup { culling: Culling::Chunks, ..Setup::DEFAULT },
-    ),
+    )
+    .same_picture_as("default"),
     ViewRow::mode(
         "lod-levels",
         "each rock the GPU kept in its level's colour: red the full rock, yellow the octahedron, blue the tetrahedron",

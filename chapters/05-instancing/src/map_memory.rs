@@ -24,8 +24,9 @@ pub struct MapMemory {
     pub heights: u64,
     /// On the GPU: the terrain's vertices and shared indices.
     pub terrain: u64,
-    /// On the GPU: the rock mesh, the instances, the one-per-draw slots and
-    /// the indirect draw list.
+    /// On the GPU: the rock's three meshes, the instances, the one-per-draw
+    /// slots, and the level numbers the GPU's culling shares between
+    /// pictures (each picture's lists come on top: `PlainViewpoint`).
     pub rock_bytes: u64,
     /// Everything the device gained, buffers and textures, by wgpu's count;
     /// `None` where the backend keeps none.
@@ -89,16 +90,17 @@ mod tests {
         assert_eq!(memory.heights, 4 * 1025 * 1025);
         // Worked out here, not read from the buffers: 8 bytes for each of
         // 65 × 65 vertices in 256 chunks, the shared 16-bit indices (64 × 64
-        // quads, and 8 × 8 coarse ones, 6 indices each); 32 bytes a rock,
-        // 60 vertices of 32 bytes and 60 32-bit indices for the mesh, 20
-        // bytes of draw list per group, and 20,000 uniform slots of 32 bytes
-        // or more (each starts at a multiple of the device's alignment for
-        // uniform offsets: 32 bytes on lavapipe, 256 on many GPUs).
+        // quads, and 8 × 8 coarse ones, 6 indices each); 32 bytes a rock;
+        // the three meshes, flat-shaded, of 20, 8 and 4 triangles, three
+        // vertices of 32 bytes and three 32-bit indices a triangle; and
+        // 20,000 uniform slots of 32 bytes and 3 level numbers of 16, each
+        // padded to the device's alignment for uniform offsets (32 bytes on
+        // lavapipe, 256 on many GPUs).
         let terrain = 8 * 65 * 65 * 256 + 2 * 6 * (64 * 64 + 8 * 8);
         assert_eq!(memory.terrain, terrain);
-        let slots = memory.rock_bytes - (32 * 62_500 + 60 * 32 + 60 * 4 + 20 * 256);
+        let slots = memory.rock_bytes - (32 * 62_500 + (20 + 8 + 4) * 3 * (32 + 4));
         assert!(
-            slots.is_multiple_of(20_000) && [32, 64, 128, 256].contains(&(slots / 20_000)),
+            slots.is_multiple_of(20_003) && [32, 64, 128, 256].contains(&(slots / 20_003)),
             "{slots} bytes of slots"
         );
         // wgpu counts every buffer the plain made: ours, and the uniforms
