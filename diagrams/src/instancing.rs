@@ -1,9 +1,13 @@
-//! Chapter 05's figure: the two vertex buffers of an instanced draw, one
-//! stepping per vertex and one per instance.
+//! Chapter 05's figures: the two vertex buffers of an instanced draw, one
+//! stepping per vertex and one per instance; the rocks culled on the GPU,
+//! from the compute pass to the indirect draws; and a tiny triangle in its
+//! quad of pixels.
 
 use common::glam::Vec2;
 
-use crate::kit::{INK, Svg};
+use instancing::WORKGROUP_SIZE as WORKGROUP;
+
+use crate::kit::{ACCENT, BLUE, INK, MUTED, PAPER, Svg};
 
 /// Chapter 05: two vertex buffers, one stepping per vertex, one per
 /// instance, with the vertices of `instancing::rock_mesh` (every seed's
@@ -42,6 +46,143 @@ pub fn instancing_buffers() -> String {
             svg.rect(x, y, 56.0, 22.0, if row % 2 == 0 { "#f3ece2" } else { "#efe2d3" }, "#d9cfc1");
             svg.text(Vec2::new(x + 28.0, y + 15.0), &format!("v{v}, r{row}"), 10.0, "middle", INK);
         }
+    }
+    svg.finish()
+}
+
+/// Chapter 05: the rocks culled on the GPU, from the buffer of every rock
+/// through the compute pass into three lists and three indirect draws,
+/// and across the barrier into the render pass. The counts come from the
+/// chapter: the rocks, the workgroup size, the dispatch, the triangles of
+/// each level, and WebGPU's alignment for storage offsets.
+pub fn culling_flow() -> String {
+    let rocks = instancing::MAX_ROCKS;
+    let bytes = std::mem::size_of::<instancing::RockInstance>();
+    let limits = common::wgpu::Limits::default();
+    let (x, y) = instancing::rock_culling::dispatch_size(rocks, limits.max_compute_workgroups_per_dimension);
+    let triangles = instancing::rock_levels(instancing::SEED).map(|mesh| mesh.indices.len() / 3);
+    let colours = ["#d9735a", "#e3c15a", "#6d8fd6"];
+    let names = ["full rock", "octahedron", "tetrahedron"];
+    let mut svg = Svg::new(700.0, 330.0);
+    let thousands = |n: u32| common::book_figures::thousands(n.into());
+
+    // Every rock, a storage buffer.
+    svg.text(
+        Vec2::new(20.0, 26.0),
+        &format!("rocks: {} × {bytes} bytes (storage, read)", thousands(rocks)),
+        12.0,
+        "start",
+        INK,
+    );
+    for i in 0..12 {
+        svg.rect(20.0 + i as f32 * 22.0, 36.0, 20.0, 18.0, "#e7b48f", INK);
+    }
+    svg.text(Vec2::new(290.0, 50.0), "…", 12.0, "start", INK);
+
+    // The compute pass: workgroups of invocations, one per rock.
+    svg.rect(20.0, 74.0, 300.0, 108.0, "#f3ece2", MUTED);
+    svg.text(Vec2::new(30.0, 92.0), "compute pass: cull_rocks", 12.0, "start", INK);
+    let dispatch =
+        format!("dispatch_workgroups({}, {y}, 1): {} invocations", thousands(x), thousands(x * y * WORKGROUP));
+    svg.text(Vec2::new(30.0, 110.0), &dispatch, 11.0, "start", INK);
+    for group in 0..4 {
+        let gx = 30.0 + group as f32 * 70.0;
+        svg.rect(gx, 120.0, 64.0, 26.0, PAPER, MUTED);
+        for lane in 0..8 {
+            svg.line(
+                Vec2::new(gx + 4.0 + lane as f32 * 7.5, 125.0),
+                Vec2::new(gx + 4.0 + lane as f32 * 7.5, 141.0),
+                BLUE,
+                1.4,
+            );
+        }
+    }
+    let per_group = format!("workgroups of {WORKGROUP}: each invocation tests one rock");
+    svg.text(Vec2::new(30.0, 164.0), &per_group, 11.0, "start", INK);
+    svg.text(Vec2::new(30.0, 177.0), "keeps it? atomicAdd a slot in its level's list", 11.0, "start", ACCENT);
+    svg.arrow(Vec2::new(150.0, 56.0), Vec2::new(150.0, 73.0), INK);
+
+    // The lists (one buffer, three aligned regions) and the draws.
+    let align = limits.min_storage_buffer_offset_alignment;
+    svg.text(
+        Vec2::new(20.0, 206.0),
+        &format!("lists: one buffer, a region per level at a multiple of {align} bytes"),
+        12.0,
+        "start",
+        INK,
+    );
+    for (level, colour) in colours.iter().enumerate() {
+        let left = 20.0 + level as f32 * 102.0;
+        svg.rect(left, 214.0, 98.0, 20.0, PAPER, INK);
+        svg.rect(left, 214.0, [18.0, 40.0, 84.0][level], 20.0, colour, INK);
+    }
+    svg.text(Vec2::new(20.0, 258.0), "draws: per level (index count, instance count, 0, 0, 0)", 12.0, "start", INK);
+    for (level, colour) in colours.iter().enumerate() {
+        let left = 20.0 + level as f32 * 102.0;
+        svg.rect(left, 266.0, 98.0, 20.0, colour, INK);
+        svg.text(
+            Vec2::new(left + 49.0, 280.0),
+            &format!("{}, n{level}, 0, 0, 0", 3 * triangles[level]),
+            10.0,
+            "middle",
+            INK,
+        );
+    }
+    svg.arrow(Vec2::new(170.0, 183.0), Vec2::new(170.0, 212.0), ACCENT);
+
+    // The barrier, then the render pass.
+    svg.dashed(Vec2::new(345.0, 20.0), Vec2::new(345.0, 310.0), ACCENT);
+    svg.text(Vec2::new(352.0, 318.0), "barrier: wgpu waits for the writes", 11.0, "start", ACCENT);
+    svg.rect(370.0, 74.0, 310.0, 212.0, "#f3ece2", MUTED);
+    svg.text(Vec2::new(380.0, 92.0), "render pass: one indirect draw per level", 12.0, "start", INK);
+    for (level, colour) in colours.iter().enumerate() {
+        let top = 108.0 + level as f32 * 58.0;
+        svg.rect(380.0, top, 290.0, 48.0, PAPER, colour);
+        let draw = format!("draw_indexed_indirect(draws, {})", level * 20);
+        svg.text(Vec2::new(390.0, top + 18.0), &draw, 11.0, "start", INK);
+        let what = format!("{}: {} triangles; rocks[list{level}[instance_index]]", names[level], triangles[level]);
+        svg.text(Vec2::new(390.0, top + 36.0), &what, 10.0, "start", INK);
+    }
+    svg.arrow(Vec2::new(322.0, 276.0), Vec2::new(378.0, 250.0), INK);
+    svg.finish()
+}
+
+/// Chapter 05: why a tiny triangle is dear. Pixel shaders run in 2 × 2
+/// quads, so a triangle that covers one pixel's centre runs four
+/// invocations; three are helpers whose colours are thrown away.
+pub fn pixel_quads() -> String {
+    let mut svg = Svg::new(640.0, 230.0);
+    let cell = 40.0;
+    let (left, top) = (30.0, 30.0);
+    for row in 0..4 {
+        for column in 0..4 {
+            let (x, y) = (left + column as f32 * cell, top + row as f32 * cell);
+            svg.rect(x, y, cell, cell, PAPER, MUTED);
+            svg.circle(Vec2::new(x + cell / 2.0, y + cell / 2.0), 2.0, MUTED);
+        }
+    }
+    // The quad the triangle lands in, and the triangle: over one pixel centre.
+    svg.rect(left + cell, top + cell, 2.0 * cell, 2.0 * cell, "none", ACCENT);
+    for (column, row, shaded) in [(1, 1, true), (2, 1, false), (1, 2, false), (2, 2, false)] {
+        let (x, y) = (left + column as f32 * cell, top + row as f32 * cell);
+        svg.rect(x + 3.0, y + 3.0, cell - 6.0, cell - 6.0, if shaded { "#e7b48f" } else { "#efe2d3" }, "none");
+        svg.circle(Vec2::new(x + cell / 2.0, y + cell / 2.0), 2.5, INK);
+    }
+    let corners =
+        [Vec2::new(left + 52.0, top + 50.0), Vec2::new(left + 76.0, top + 56.0), Vec2::new(left + 58.0, top + 74.0)];
+    svg.polygon(&corners, BLUE, INK);
+    let lines = [
+        "A triangle about a pixel big covers one pixel centre.",
+        "The GPU shades pixels in 2 × 2 quads (so that a shader",
+        "can compare neighbours: the slopes that pick a mip level),",
+        "so it runs four fragment invocations: one for the pixel,",
+        "three helpers whose colours it throws away.",
+        "",
+        "A triangle that covers no centre draws nothing, and the",
+        "rasteriser has still spent its time setting it up.",
+    ];
+    for (i, line) in lines.iter().enumerate() {
+        svg.text(Vec2::new(220.0, 44.0 + i as f32 * 18.0), line, 12.0, "start", INK);
     }
     svg.finish()
 }

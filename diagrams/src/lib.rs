@@ -31,6 +31,8 @@ pub fn all() -> Vec<(&'static str, String)> {
         ("frustum-culling.svg", terrain::frustum_culling()),
         ("fog-curve.svg", fog::fog_curve()),
         ("instancing-buffers.svg", instancing::instancing_buffers()),
+        ("pixel-quads.svg", instancing::pixel_quads()),
+        ("rock-culling.svg", instancing::culling_flow()),
         ("sun-path.svg", skybox::sun_path()),
         ("mirrored-camera.svg", water::mirrored_camera()),
         ("projective-texturing.svg", water::projective_texturing()),

@@ -154,6 +154,8 @@ impl Chapter for InstancingChapter {
     const KEYS: &'static [(&'static str, &'static str)] = ground::KEYS;
     const FLAGS: &'static [ChapterFlag] = &[ground::WALK_FLAG];
     const BENCH_FRAMES: u32 = 10;
+    // The rocks' own shader, rather than the culling's (the first the plain builds).
+    const MAIN_SHADER: Option<&'static str> = Some("instancing/rocks.wgsl");
 
     fn gpu_needs() -> common::GpuNeeds {
         crate::mars_plain::gpu_needs()

@@ -447,3 +447,62 @@ fn exercise_5_every_visible_chunk_in_one_call_draws_the_same_terrain() {
     eprintln!("{} of {} pixels differ, by at most {}", steps.len(), 320 * 180, steps.iter().max().unwrap_or(&0));
     assert!(steps.len() <= 10 && steps.iter().all(|&step| step == 1), "{steps:?}");
 }
+
+#[test]
+fn page_05_quotes_the_gpus_culling_from_the_bench_table_and_webgpus_limits() {
+    let page =
+        std::fs::read_to_string(concat!(env!("CARGO_MANIFEST_DIR"), "/../../book/src/05-instancing.md")).unwrap();
+    let section = page.split_once("## Culling rock by rock, on the GPU").unwrap().1;
+    let section = section.split_once("## The views").unwrap().0;
+
+    // The lavapipe table (release build, 1280 × 720): the frames, and the
+    // frame outside the render pass, where the compute pass's work shows.
+    let table =
+        std::fs::read_to_string(concat!(env!("CARGO_MANIFEST_DIR"), "/../../book/src/bench/instancing.md")).unwrap();
+    let read = |view: &str, what: &str| median_ms(&table, view, what).unwrap_or_else(|| panic!("{view} {what}"));
+    let (graded, by_chunk) = (read("default", "frame"), read("cpu-culling", "frame"));
+    let outside = |view: &str| read(view, "frame") - read(view, "GPU: terrain and rocks pass");
+    let culling_pass = read("default", "GPU: rock culling pass");
+    for figure in [
+        format!("frame is {graded:.0} ms against {by_chunk:.0} ms culling by chunk"),
+        format!("compute pass at {culling_pass:.2} ms"),
+        format!("{:.1} ms, against {:.1} ms culling by chunk", outside("default"), outside("cpu-culling")),
+    ] {
+        assert!(section.contains(&figure), "page 05 should say `{figure}` (from the bench table)");
+    }
+    assert!(graded < by_chunk, "culling on the GPU makes the frame shorter, as the page says");
+
+    // WebGPU's least limits, as wgpu writes them, and what the rocks ask.
+    let limits = wgpu::Limits::default();
+    let rocks_bytes = u64::from(MAX_ROCKS) * std::mem::size_of::<RockInstance>() as u64;
+    let workgroups = MAX_ROCKS.div_ceil(instancing::WORKGROUP_SIZE);
+    for row in [
+        format!(
+            "| `maxComputeInvocationsPerWorkgroup` | {} | {} per workgroup |",
+            limits.max_compute_invocations_per_workgroup,
+            instancing::WORKGROUP_SIZE
+        ),
+        format!(
+            "| `maxComputeWorkgroupsPerDimension` | {} | {} workgroups for a million rocks: one row |",
+            thousands(limits.max_compute_workgroups_per_dimension.into()),
+            thousands(workgroups.into())
+        ),
+        format!(
+            "| `maxStorageBufferBindingSize` | {} bytes | the rocks: {} bytes |",
+            thousands(limits.max_storage_buffer_binding_size as f64),
+            thousands(rocks_bytes as f64)
+        ),
+        format!("| `maxStorageBuffersPerShaderStage` | {} |", limits.max_storage_buffers_per_shader_stage),
+        format!("| `minStorageBufferOffsetAlignment` | {} bytes |", limits.min_storage_buffer_offset_alignment),
+    ] {
+        assert!(section.contains(&row), "page 05's table of limits should hold `{row}`");
+    }
+    let most = u64::from(limits.max_compute_workgroups_per_dimension) * u64::from(instancing::WORKGROUP_SIZE);
+    assert!(section.contains(&format!(
+        "{} workgroups, {} rocks\nat 64",
+        thousands(limits.max_compute_workgroups_per_dimension.into()),
+        thousands(most as f64)
+    )));
+    // The haze the camera sees through, as the page says.
+    assert!(section.contains(&format!("the {} m the haze", thousands(FogSettings::HAZE.far_plane().into()))));
+}

@@ -349,18 +349,21 @@ fn the_default_views_of_05_and_06_draw_a_tenth_of_the_rock_triangles_culling_by_
     let gpu = crate::plain_gpu();
     let target = Target { format: OFFSCREEN_FORMAT, width: 1920, height: 1080 };
     let mut chapter: InstancingChapter = common::chapter::create(gpu, target, &Default::default()).unwrap();
-    let mut triangles = |view: &str| {
+    let mut drawn = |view: &str| {
         let view = common::chapter::view_index::<InstancingChapter>(view).unwrap();
         chapter.select_view(view);
         // The rocks alone: the terrain changes no count and costs lavapipe seconds.
         chapter.setup.terrain = false;
         capture(gpu, &mut chapter, target, 0.0, view).unwrap();
-        rock_triangles(&chapter.stats(gpu))
+        let line = chapter.stats(gpu);
+        let drawn = chapter.plain.rocks_drawn_now(gpu, chapter.viewpoint(), chapter.setup);
+        assert_eq!(rock_triangles(&line), drawn.triangles, "the stats line gives the count: `{line}`");
+        drawn
     };
-    let (by_chunk, graded) = (triangles("cpu-culling"), triangles("default"));
-    eprintln!("rock triangles at 1920 × 1080: {by_chunk} by chunk, {graded} graded on the GPU");
-    assert_eq!(by_chunk, 20 * 276_571, "the chunk groups' rocks, 20 triangles each (page 05)");
-    assert!(graded * 10 <= by_chunk, "{graded} of {by_chunk}");
+    let (by_chunk, graded) = (drawn("cpu-culling"), drawn("default"));
+    eprintln!("at 1920 × 1080: by chunk {by_chunk:?}, graded on the GPU {graded:?}");
+    assert_eq!(by_chunk.triangles, 20 * 276_571, "the chunk groups' rocks, 20 triangles each (page 05)");
+    assert!(graded.triangles * 10 <= by_chunk.triangles, "{graded:?} against {by_chunk:?}");
     assert_eq!(Setup::DEFAULT.culling, Culling::PerRock);
 
     // Chapter 06's day: the same plain from the same camera, in its own stats line.
@@ -369,5 +372,19 @@ fn the_default_views_of_05_and_06_draw_a_tenth_of_the_rock_triangles_culling_by_
     assert!(day.pixels().any(|p| p != day.get_pixel(0, 0)));
     let line = sky.stats(gpu);
     eprintln!("chapter 06: {line}");
-    assert!(rock_triangles(&line) * 10 <= by_chunk, "{line}");
+    assert_eq!(rock_triangles(&line), graded.triangles, "{line}");
+
+    // Page 05 quotes the counts.
+    let [full, octahedra, tetrahedra] = graded.levels.expect("graded on the GPU").map(|n| thousands(n.into()));
+    let share = 100.0 * graded.triangles as f64 / by_chunk.triangles as f64;
+    let page =
+        std::fs::read_to_string(concat!(env!("CARGO_MANIFEST_DIR"), "/../../book/src/05-instancing.md")).unwrap();
+    for figure in [
+        format!("**{} rock triangles** a frame", thousands(by_chunk.triangles as f64)),
+        format!("**{} rocks**", thousands(graded.rocks.into())),
+        format!("({full} full, {octahedra} octahedra, {tetrahedra} tetrahedra)"),
+        format!("**{} rock triangles**, {share:.1} %", thousands(graded.triangles as f64)),
+    ] {
+        assert!(page.contains(&figure), "page 05 should say `{figure}`");
+    }
 }
