@@ -63,87 +63,85 @@ pub fn culling_flow() -> String {
     let triangles = instancing::rock_levels(instancing::SEED).map(|mesh| mesh.indices.len() / 3);
     let colours = ["#d9735a", "#e3c15a", "#6d8fd6"];
     let names = ["full rock", "octahedron", "tetrahedron"];
-    let mut svg = Svg::new(700.0, 330.0);
+    let mut svg = Svg::new(740.0, 360.0);
     let thousands = |n: u32| common::book_figures::thousands(n.into());
 
     // Every rock, a storage buffer.
-    svg.text(
-        Vec2::new(20.0, 26.0),
-        &format!("rocks: {} × {bytes} bytes (storage, read)", thousands(rocks)),
-        12.0,
-        "start",
-        INK,
-    );
-    for i in 0..12 {
+    let every = format!("rocks: {} × {bytes} bytes (storage, read)", thousands(rocks));
+    svg.text(Vec2::new(20.0, 26.0), &every, 12.0, "start", INK);
+    for i in 0..14 {
         svg.rect(20.0 + i as f32 * 22.0, 36.0, 20.0, 18.0, "#e7b48f", INK);
     }
-    svg.text(Vec2::new(290.0, 50.0), "…", 12.0, "start", INK);
+    svg.text(Vec2::new(334.0, 50.0), "…", 12.0, "start", INK);
 
     // The compute pass: workgroups of invocations, one per rock.
-    svg.rect(20.0, 74.0, 300.0, 108.0, "#f3ece2", MUTED);
+    svg.rect(20.0, 74.0, 370.0, 126.0, "#f3ece2", MUTED);
     svg.text(Vec2::new(30.0, 92.0), "compute pass: cull_rocks", 12.0, "start", INK);
-    let dispatch =
-        format!("dispatch_workgroups({}, {y}, 1): {} invocations", thousands(x), thousands(x * y * WORKGROUP));
+    let dispatch = format!("dispatch_workgroups({}, {y}, 1)", thousands(x));
     svg.text(Vec2::new(30.0, 110.0), &dispatch, 11.0, "start", INK);
-    for group in 0..4 {
+    let invocations = format!("= {} invocations, {WORKGROUP} to a workgroup", thousands(x * y * WORKGROUP));
+    svg.text(Vec2::new(30.0, 124.0), &invocations, 11.0, "start", INK);
+    for group in 0..5 {
         let gx = 30.0 + group as f32 * 70.0;
-        svg.rect(gx, 120.0, 64.0, 26.0, PAPER, MUTED);
+        svg.rect(gx, 134.0, 64.0, 26.0, PAPER, MUTED);
         for lane in 0..8 {
-            svg.line(
-                Vec2::new(gx + 4.0 + lane as f32 * 7.5, 125.0),
-                Vec2::new(gx + 4.0 + lane as f32 * 7.5, 141.0),
-                BLUE,
-                1.4,
-            );
+            let lx = gx + 4.0 + lane as f32 * 7.5;
+            svg.line(Vec2::new(lx, 139.0), Vec2::new(lx, 155.0), BLUE, 1.4);
         }
     }
-    let per_group = format!("workgroups of {WORKGROUP}: each invocation tests one rock");
-    svg.text(Vec2::new(30.0, 164.0), &per_group, 11.0, "start", INK);
-    svg.text(Vec2::new(30.0, 177.0), "keeps it? atomicAdd a slot in its level's list", 11.0, "start", ACCENT);
+    svg.text(Vec2::new(30.0, 178.0), "each invocation tests one rock; one it keeps", 11.0, "start", INK);
+    svg.text(Vec2::new(30.0, 192.0), "gets a slot in its level's list by atomicAdd", 11.0, "start", ACCENT);
     svg.arrow(Vec2::new(150.0, 56.0), Vec2::new(150.0, 73.0), INK);
 
     // The lists (one buffer, three aligned regions) and the draws.
     let align = limits.min_storage_buffer_offset_alignment;
-    svg.text(
-        Vec2::new(20.0, 206.0),
-        &format!("lists: one buffer, a region per level at a multiple of {align} bytes"),
-        12.0,
-        "start",
-        INK,
-    );
+    svg.text(Vec2::new(20.0, 226.0), "lists: one buffer, a region per level,", 12.0, "start", INK);
+    svg.text(Vec2::new(20.0, 241.0), &format!("each at a multiple of {align} bytes"), 12.0, "start", INK);
     for (level, colour) in colours.iter().enumerate() {
-        let left = 20.0 + level as f32 * 102.0;
-        svg.rect(left, 214.0, 98.0, 20.0, PAPER, INK);
-        svg.rect(left, 214.0, [18.0, 40.0, 84.0][level], 20.0, colour, INK);
+        let left = 20.0 + level as f32 * 122.0;
+        svg.rect(left, 250.0, 118.0, 20.0, PAPER, INK);
+        svg.rect(left, 250.0, [20.0, 46.0, 100.0][level], 20.0, colour, INK);
     }
-    svg.text(Vec2::new(20.0, 258.0), "draws: per level (index count, instance count, 0, 0, 0)", 12.0, "start", INK);
+    svg.text(Vec2::new(20.0, 296.0), "draws: per level (index count, instances, 0, 0, 0)", 12.0, "start", INK);
     for (level, colour) in colours.iter().enumerate() {
-        let left = 20.0 + level as f32 * 102.0;
-        svg.rect(left, 266.0, 98.0, 20.0, colour, INK);
+        let left = 20.0 + level as f32 * 122.0;
+        svg.rect(left, 304.0, 118.0, 20.0, colour, INK);
         svg.text(
-            Vec2::new(left + 49.0, 280.0),
+            Vec2::new(left + 59.0, 318.0),
             &format!("{}, n{level}, 0, 0, 0", 3 * triangles[level]),
             10.0,
             "middle",
             INK,
         );
     }
-    svg.arrow(Vec2::new(170.0, 183.0), Vec2::new(170.0, 212.0), ACCENT);
+    svg.arrow(Vec2::new(370.0, 201.0), Vec2::new(370.0, 248.0), ACCENT);
 
     // The barrier, then the render pass.
-    svg.dashed(Vec2::new(345.0, 20.0), Vec2::new(345.0, 310.0), ACCENT);
-    svg.text(Vec2::new(352.0, 318.0), "barrier: wgpu waits for the writes", 11.0, "start", ACCENT);
-    svg.rect(370.0, 74.0, 310.0, 212.0, "#f3ece2", MUTED);
-    svg.text(Vec2::new(380.0, 92.0), "render pass: one indirect draw per level", 12.0, "start", INK);
+    svg.dashed(Vec2::new(405.0, 20.0), Vec2::new(405.0, 330.0), ACCENT);
+    svg.text(Vec2::new(412.0, 348.0), "barrier: the draws wait for every write", 11.0, "start", ACCENT);
+    svg.rect(420.0, 74.0, 300.0, 250.0, "#f3ece2", MUTED);
+    svg.text(Vec2::new(430.0, 92.0), "render pass: one indirect draw per level", 12.0, "start", INK);
     for (level, colour) in colours.iter().enumerate() {
-        let top = 108.0 + level as f32 * 58.0;
-        svg.rect(380.0, top, 290.0, 48.0, PAPER, colour);
+        let top = 106.0 + level as f32 * 70.0;
+        svg.rect(430.0, top, 280.0, 58.0, PAPER, colour);
         let draw = format!("draw_indexed_indirect(draws, {})", level * 20);
-        svg.text(Vec2::new(390.0, top + 18.0), &draw, 11.0, "start", INK);
-        let what = format!("{}: {} triangles; rocks[list{level}[instance_index]]", names[level], triangles[level]);
-        svg.text(Vec2::new(390.0, top + 36.0), &what, 10.0, "start", INK);
+        svg.text(Vec2::new(440.0, top + 18.0), &draw, 11.0, "start", INK);
+        svg.text(
+            Vec2::new(440.0, top + 34.0),
+            &format!("{}: {} triangles", names[level], triangles[level]),
+            10.0,
+            "start",
+            INK,
+        );
+        svg.text(
+            Vec2::new(440.0, top + 49.0),
+            &format!("rock = rocks[list{level}[instance_index]]"),
+            10.0,
+            "start",
+            INK,
+        );
     }
-    svg.arrow(Vec2::new(322.0, 276.0), Vec2::new(378.0, 250.0), INK);
+    svg.arrow(Vec2::new(386.0, 314.0), Vec2::new(428.0, 300.0), INK);
     svg.finish()
 }
 
