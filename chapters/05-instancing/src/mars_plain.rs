@@ -17,7 +17,7 @@ use crate::rock_culling::{Grading, Picture, RockCulling, RockLists, RockSource, 
 use crate::rock_field::{MAX_ONE_PER_DRAW, RockField};
 use crate::rock_groups::{RockRuns, visible_runs};
 use crate::rock_mesh::LEVELS;
-use crate::rock_scatter::{RockInstance, rocks_on_map};
+use crate::rock_scatter::{MAX_ROCKS, RockInstance, rocks_on_map};
 
 /// How the rocks are drawn and coloured.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -72,7 +72,7 @@ impl Setup {
     /// The plain as the book shows it: the terrain and a million rocks over
     /// the whole map, culled and graded on the GPU.
     pub const DEFAULT: Self =
-        Self { rocks: crate::MAX_ROCKS, mode: Mode::Instanced, terrain: true, culling: Culling::PerRock };
+        Self { rocks: MAX_ROCKS, mode: Mode::Instanced, terrain: true, culling: Culling::PerRock };
 }
 
 /// What a device drawing the plain needs: chapter 03's needs, and indirect

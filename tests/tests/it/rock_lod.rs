@@ -64,8 +64,21 @@ fn the_lake_with_graded_rocks_looks_like_the_lake_with_every_rock_at_full_detail
         chapter.rocks = Setup { culling, ..Setup::DEFAULT };
         capture(&gpu, &mut chapter, target, WaterChapter::SNAPSHOT_TIME, 0).unwrap()
     };
-    let (graded, full) = (picture(Culling::PerRock), picture(Culling::PerRockFullDetail));
+    // Graded last, so that the counts below are the graded frame's.
+    let (full, graded) = (picture(Culling::PerRockFullDetail), picture(Culling::PerRock));
     assert!(busy(&graded));
+    // Each picture culled its own rocks: the refraction, which keeps what
+    // is under the water, and the reflection, which keeps what is above it
+    // but sees it at half the height, fewer than the main picture.
+    let line = chapter.stats(&gpu);
+    let count = |picture: &str| -> u32 {
+        let after = line.split_once(&format!("{picture} ")).unwrap_or_else(|| panic!("no {picture} in `{line}`")).1;
+        after.split(' ').next().unwrap_or_default().replace(',', "").parse().unwrap()
+    };
+    let (reflection, refraction, main) = (count("reflection"), count("refraction"), count("plain and sky"));
+    eprintln!("rocks drawn: reflection {reflection}, refraction {refraction}, main {main}");
+    assert!(0 < refraction && refraction * 5 < main, "{line}");
+    assert!(0 < reflection && reflection < main, "{line}");
     let (comparison, _) = compare(&full, &graded);
     eprintln!("the lake, graded against full detail: {comparison}");
     assert!(comparison.mean <= MOST_MEAN_FLIP, "{comparison}");
