@@ -111,6 +111,19 @@ mod tests {
         }
     }
 
+    #[test]
+    fn a_picture_holds_three_lists_of_four_bytes_a_rock() {
+        let gpu = Gpu::headless(gpu_needs()).unwrap();
+        let settings = TerrainSettings { chunks_per_side: 16, ..Default::default() };
+        let plain = MarsPlain::new(&gpu, OFFSCREEN_FORMAT, TerrainData::get(&gpu, settings)).unwrap();
+        let bytes = plain.viewpoint_bytes(&plain.viewpoint(&gpu.device));
+        // Three lists of 62,500 rocks, 4 bytes each, and on top a few
+        // hundred bytes: the draws and their read-back copies, the uniform,
+        // the alignment of each list, the CPU's draw list (20 bytes a group).
+        let lists = 3 * 62_500 * 4;
+        assert!(bytes >= lists && bytes - lists < 16 * 1024, "{bytes} bytes");
+    }
+
     /// The book's table, by hand (4097² takes a while in a debug build):
     /// `cargo test -p instancing --release -- --ignored memory_table --nocapture`.
     #[test]

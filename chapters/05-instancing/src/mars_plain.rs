@@ -341,6 +341,13 @@ impl MarsPlain {
         }
     }
 
+    /// Bytes of the buffers one picture's viewpoint holds for the rocks:
+    /// the GPU's lists and draws, and the CPU's draw list.
+    pub fn viewpoint_bytes(&self, viewpoint: &PlainViewpoint) -> u64 {
+        let lists = viewpoint.rocks.as_ref().map_or(0, RockLists::gpu_bytes);
+        lists + viewpoint.draw_list.as_ref().map_or(0, wgpu::Buffer::size)
+    }
+
     /// How many rocks there are to draw.
     pub fn rocks_placed(&self) -> u32 {
         self.rocks.placed

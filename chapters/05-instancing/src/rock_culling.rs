@@ -438,6 +438,13 @@ pub fn dispatch_size(rocks: u32, max_per_dimension: u32) -> (u32, u32) {
 // ANCHOR_END: dispatch_size
 
 impl RockLists {
+    /// Bytes of this picture's buffers: the lists, the draws, the uniform
+    /// and the buffers the counts are read back through.
+    pub fn gpu_bytes(&self) -> u64 {
+        let late: u64 = self.late.slots.iter().map(|slot| slot.buffer.size()).sum();
+        self.lists.size() + self.draws.size() + self.uniform.size() + late
+    }
+
     /// Rocks kept at each level, finest first, by the latest count that has
     /// come back from the GPU (a frame or two late), without waiting.
     pub fn late_counts(&self) -> Option<[u32; LEVELS]> {

@@ -503,6 +503,10 @@ fn page_05_quotes_the_gpus_culling_from_the_bench_table_and_webgpus_limits() {
         thousands(limits.max_compute_workgroups_per_dimension.into()),
         thousands(most as f64)
     )));
+    // A picture's lists on the largest map: three of 4 bytes a rock
+    // (`map_memory`'s test checks a picture's buffers against the same sum).
+    let lists_mb = instancing::LEVELS as u64 * u64::from(MAX_ROCKS) * 4 / 1_000_000;
+    assert!(page.contains(&format!("bytes a rock and the counts: {lists_mb} MB a picture")));
     // The haze the camera sees through, as the page says.
     assert!(section.contains(&format!("the {} m the haze", thousands(FogSettings::HAZE.far_plane().into()))));
 }
