@@ -18,7 +18,10 @@ struct DrawArgs {
 };
 
 // Group 0: this picture's own (each picture of a frame has its own lists).
-@group(0) @binding(0) var<uniform> culling: Culling;
+// `culling` is read-only storage, not a uniform, though it would fit one:
+// the shader branches on it, and lavapipe keeps a new compiled copy of a
+// shader that branches on a uniform every time it is bound (chapter 08).
+@group(0) @binding(0) var<storage, read> culling: Culling;
 @group(0) @binding(1) var<storage, read_write> lists: array<u32>;
 @group(0) @binding(2) var<storage, read_write> draws: array<DrawArgs, 3>;
 // Group 1: every rock, the same buffer the instanced draws read.

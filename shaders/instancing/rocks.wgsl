@@ -90,7 +90,7 @@ fn vs_single(@location(0) position: vec3<f32>, @location(1) normal: vec3<f32>) -
 // indirect draw starts at instance 0 (WebGPU need not start one anywhere
 // else), so each level's list has a binding of its own.
 @group(2) @binding(1) var<storage, read> kept: array<u32>;
-@group(2) @binding(2) var<uniform> culling: Culling;
+@group(2) @binding(2) var<storage, read> culling: Culling;
 // x: which level this draw is, for the `lod-levels` view.
 @group(2) @binding(3) var<uniform> level: vec4<u32>;
 @group(3) @binding(0) var<storage, read> rocks: array<Rock>;

@@ -64,9 +64,9 @@ pub fn missing_capability(
     if let Some((_, what)) = needs.iter().find(|(flag, _)| !downlevel.flags.contains(*flag)) {
         return Some(format!("this GPU has no {what}"));
     }
-    if limits.max_storage_buffers_per_shader_stage < 3 {
+    if limits.max_storage_buffers_per_shader_stage < 4 {
         return Some(format!(
-            "this GPU allows {} storage buffers per shader stage, the culling needs 3",
+            "this GPU allows {} storage buffers per shader stage, the culling needs 4",
             limits.max_storage_buffers_per_shader_stage
         ));
     }
@@ -87,7 +87,8 @@ pub fn missing_capability(
 // ANCHOR_END: missing_capability
 
 // ANCHOR: culling_uniform
-/// `Culling` in rock.wgsl: what one picture asks of the rocks.
+/// `Culling` in rock.wgsl: what one picture asks of the rocks, in a small
+/// read-only storage buffer.
 #[repr(C)]
 #[derive(Clone, Copy, Debug, bytemuck::Pod, bytemuck::Zeroable)]
 struct CullingUniform {
@@ -202,13 +203,10 @@ impl RockCulling {
     /// finest first.
     pub fn new(gpu: &Gpu, index_counts: [u32; LEVELS]) -> Result<Self, ShaderError> {
         let device = &gpu.device;
-        let uniform = |binding, visibility| {
-            common::pipeline::uniform_entry(binding, visibility, std::mem::size_of::<CullingUniform>())
-        };
         let picture_layout = device.create_bind_group_layout(&wgpu::BindGroupLayoutDescriptor {
             label: Some("rock culling: one picture"),
             entries: &[
-                uniform(0, wgpu::ShaderStages::COMPUTE),
+                storage(0, wgpu::ShaderStages::COMPUTE, true),
                 storage(1, wgpu::ShaderStages::COMPUTE, false),
                 storage(2, wgpu::ShaderStages::COMPUTE, false),
             ],
@@ -221,7 +219,7 @@ impl RockCulling {
             label: Some("one level's rocks"),
             entries: &[
                 storage(1, wgpu::ShaderStages::VERTEX, true),
-                uniform(2, wgpu::ShaderStages::VERTEX),
+                storage(2, wgpu::ShaderStages::VERTEX, true),
                 common::pipeline::uniform_entry(3, wgpu::ShaderStages::VERTEX, 16),
             ],
         });
@@ -292,7 +290,8 @@ impl RockCulling {
         let uniform = device.create_buffer(&wgpu::BufferDescriptor {
             label: Some("rock culling"),
             size: std::mem::size_of::<CullingUniform>() as u64,
-            usage: wgpu::BufferUsages::UNIFORM | wgpu::BufferUsages::COPY_DST,
+            // Storage, not uniform: the shaders branch on it (see cull.wgsl).
+            usage: wgpu::BufferUsages::STORAGE | wgpu::BufferUsages::COPY_DST,
             mapped_at_creation: false,
         });
         let lists = device.create_buffer(&wgpu::BufferDescriptor {
