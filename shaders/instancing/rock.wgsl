@@ -19,7 +19,7 @@ fn turn(v: vec3<f32>, yaw: f32) -> vec3<f32> {
 // ANCHOR_END: rock
 
 // ANCHOR: culling
-// What one picture asks of the rocks (`CullingUniform` in rock_culling.rs).
+// What one picture asks of the rocks (`CullingInput` in rock_culling.rs).
 struct Culling {
     // World → the camera's own space, where it looks down −z.
     view: mat4x4<f32>,

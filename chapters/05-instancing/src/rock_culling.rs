@@ -86,12 +86,12 @@ pub fn missing_capability(
 }
 // ANCHOR_END: missing_capability
 
-// ANCHOR: culling_uniform
+// ANCHOR: culling_input
 /// `Culling` in rock.wgsl: what one picture asks of the rocks, in a small
 /// read-only storage buffer.
 #[repr(C)]
 #[derive(Clone, Copy, Debug, bytemuck::Pod, bytemuck::Zeroable)]
-struct CullingUniform {
+struct CullingInput {
     view: [[f32; 4]; 4],
     /// tan(half the field of view) across and up, near, far.
     frustum: [f32; 4],
@@ -103,7 +103,7 @@ struct CullingUniform {
     /// Rocks to test, and u32s from one level's list to the next.
     counts: [u32; 4],
 }
-// ANCHOR_END: culling_uniform
+// ANCHOR_END: culling_input
 
 /// Where one picture is taken from, as the culling needs it: the camera,
 /// how many pixels high the picture is, and the plane it is clipped at
@@ -140,11 +140,11 @@ pub struct RockSource<'a> {
 pub struct RockCulling {
     /// Rebuilt when cull.wgsl or rock.wgsl is saved (hot reload).
     pipeline: Reloadable<wgpu::ComputePipeline>,
-    /// Compute group 0: a picture's uniform, lists and draws.
+    /// Compute group 0: a picture's input, lists and draws.
     picture_layout: wgpu::BindGroupLayout,
     /// Compute group 1 and the culled draws' group 3: every rock.
     pub rocks_layout: wgpu::BindGroupLayout,
-    /// The culled draws' group 2: one level's list, the uniform, the level.
+    /// The culled draws' group 2: one level's list, the input, the level.
     pub draw_layout: wgpu::BindGroupLayout,
     /// Each level's number, at the device's alignment for uniform offsets.
     level_numbers: wgpu::Buffer,
@@ -156,12 +156,12 @@ pub struct RockCulling {
 }
 // ANCHOR_END: rock_culling
 
-/// One picture's part of the culling: its uniform, the three lists the
+/// One picture's part of the culling: its input, the three lists the
 /// compute pass fills, the indirect draws it counts into, and their
 /// counts read back late for the overlay. Chapter 07 records three
 /// pictures before one submit, so each needs its own.
 pub struct RockLists {
-    uniform: wgpu::Buffer,
+    input: wgpu::Buffer,
     lists: wgpu::Buffer,
     draws: wgpu::Buffer,
     picture_group: wgpu::BindGroup,
@@ -287,9 +287,9 @@ impl RockCulling {
     pub fn lists(&self, device: &wgpu::Device, capacity: u32) -> RockLists {
         let alignment = u64::from(device.limits().min_storage_buffer_offset_alignment);
         let list_bytes = (u64::from(capacity.max(1)) * 4).next_multiple_of(alignment);
-        let uniform = device.create_buffer(&wgpu::BufferDescriptor {
+        let input = device.create_buffer(&wgpu::BufferDescriptor {
             label: Some("rock culling"),
-            size: std::mem::size_of::<CullingUniform>() as u64,
+            size: std::mem::size_of::<CullingInput>() as u64,
             // Storage, not uniform: the shaders branch on it (see cull.wgsl).
             usage: wgpu::BufferUsages::STORAGE | wgpu::BufferUsages::COPY_DST,
             mapped_at_creation: false,
@@ -326,7 +326,7 @@ impl RockCulling {
             label: Some("rock culling: one picture"),
             layout: &self.picture_layout,
             entries: &[
-                wgpu::BindGroupEntry { binding: 0, resource: uniform.as_entire_binding() },
+                wgpu::BindGroupEntry { binding: 0, resource: input.as_entire_binding() },
                 wgpu::BindGroupEntry { binding: 1, resource: lists.as_entire_binding() },
                 wgpu::BindGroupEntry { binding: 2, resource: draws.as_entire_binding() },
             ],
@@ -337,7 +337,7 @@ impl RockCulling {
                 layout: &self.draw_layout,
                 entries: &[
                     wgpu::BindGroupEntry { binding: 1, resource: slice(&lists, level as u64 * list_bytes, list_bytes) },
-                    wgpu::BindGroupEntry { binding: 2, resource: uniform.as_entire_binding() },
+                    wgpu::BindGroupEntry { binding: 2, resource: input.as_entire_binding() },
                     wgpu::BindGroupEntry {
                         binding: 3,
                         resource: slice(&self.level_numbers, level as u64 * self.level_stride, 16),
@@ -346,7 +346,7 @@ impl RockCulling {
             })
         });
         let late = LateCounts::new(device);
-        RockLists { uniform, lists, draws, picture_group, draw_groups, stride: (list_bytes / 4) as u32, capacity, late }
+        RockLists { input, lists, draws, picture_group, draw_groups, stride: (list_bytes / 4) as u32, capacity, late }
     }
     // ANCHOR_END: lists
 
@@ -356,7 +356,7 @@ impl RockCulling {
         let camera = &picture.camera;
         let tan_y = (camera.fov_y / 2.0).tan();
         let g = grading;
-        let uniform = CullingUniform {
+        let input = CullingInput {
             view: camera.view().to_cols_array_2d(),
             frustum: [tan_y * camera.aspect, tan_y, camera.near, camera.far],
             clip: picture.clip.into(),
@@ -365,7 +365,7 @@ impl RockCulling {
             sizes: [g.full, g.coarse, g.drawn, g.whole],
             counts: [rocks.count.min(lists.capacity), lists.stride, 0, 0],
         };
-        queue.write_buffer(&lists.uniform, 0, bytemuck::bytes_of(&uniform));
+        queue.write_buffer(&lists.input, 0, bytemuck::bytes_of(&input));
     }
 
     // ANCHOR: cull
@@ -437,11 +437,11 @@ pub fn dispatch_size(rocks: u32, max_per_dimension: u32) -> (u32, u32) {
 // ANCHOR_END: dispatch_size
 
 impl RockLists {
-    /// Bytes of this picture's buffers: the lists, the draws, the uniform
+    /// Bytes of this picture's buffers: the lists, the draws, the input
     /// and the buffers the counts are read back through.
     pub fn gpu_bytes(&self) -> u64 {
         let late: u64 = self.late.slots.iter().map(|slot| slot.buffer.size()).sum();
-        self.lists.size() + self.draws.size() + self.uniform.size() + late
+        self.lists.size() + self.draws.size() + self.input.size() + late
     }
 
     /// Rocks kept at each level, finest first, by the latest count that has
