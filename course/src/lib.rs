@@ -42,7 +42,7 @@ pub fn chapters() -> Vec<Record> {
         record::<instancing::InstancingChapter>(
             &MARS,
             "default",
-            "one instanced draw for up to a million rocks, against one draw per rock; the Mars plain so far",
+            "one instanced draw for up to a million rocks, against one draw per rock; the first compute shader culls and grades them, with indirect draws; the Mars plain so far",
         ),
         record::<skybox::SkyboxChapter>(
             &MARS,

@@ -2,16 +2,17 @@
 //! their cameras, the overlay's controls, and `impl Chapter`, which draws
 //! chapter 05's plain lit by the sun and then the sky in the same pass.
 
+use common::book_figures::thousands;
 use common::texture::depth_view;
 use common::{
     Camera, Chapter, ChapterFlag, FlagValues, FlyController, Frame, Gpu, Input, Target, View, ViewRow, anyhow, egui,
     views_of, wgpu,
 };
 use fog::FogSettings;
-use instancing::{DrawCalls, MarsPlain, Setup, plain_camera};
+use instancing::{DrawCalls, MarsPlain, PlainViewpoint, Setup, plain_camera};
 use terrain::ground::{self, Movement};
 use terrain::heightfield::HeightField;
-use terrain::{Detail, KEEP_ALL, Viewpoint};
+use terrain::{Detail, KEEP_ALL};
 
 use crate::sky::{Sky, SkyViewpoint};
 use crate::sun_path::sun_at;
@@ -77,7 +78,7 @@ pub struct SkyboxChapter {
     pub day_seconds: f32,
     /// The time of day of the last frame (0 midnight, 0.5 noon).
     phase: f32,
-    viewpoint: (Viewpoint, SkyViewpoint),
+    viewpoint: (PlainViewpoint, SkyViewpoint),
     depth: wgpu::TextureView,
     target: Target,
     draw_calls: DrawCalls,
@@ -128,7 +129,7 @@ impl Chapter for SkyboxChapter {
             settings: Settings::DEFAULT,
             day_seconds: 240.0,
             phase: Settings::DEFAULT.start_phase,
-            viewpoint: (plain.terrain.viewpoint(&gpu.device), sky.viewpoint(&gpu.device)),
+            viewpoint: (plain.viewpoint(&gpu.device), sky.viewpoint(&gpu.device)),
             depth: depth_view(&gpu.device, target.width, target.height),
             plain,
             sky,
@@ -182,6 +183,7 @@ impl Chapter for SkyboxChapter {
         let (ground, sky) = &mut self.viewpoint;
         self.plain.aim(gpu, ground, &self.camera, Detail::lod(self.target.height), sun_at(self.phase), KEEP_ALL);
         self.sky.aim(&gpu.queue, sky, &self.camera, self.phase);
+        self.plain.cull(gpu, frame.encoder, frame.timer, ground, self.rocks);
         // The clear colour is never seen: the sky covers whatever the plain leaves.
         let mut pass = frame.scene_pass("plain and sky", terrain::SKY, &self.depth);
         self.draw_calls = self.plain.draw(&mut pass, ground, self.rocks);
@@ -197,16 +199,28 @@ impl Chapter for SkyboxChapter {
         ui.add(egui::Slider::new(&mut self.fog.density, 0.0..=0.01).logarithmic(true).text("fog density"));
         let max = self.plain.rocks_placed();
         ui.add(egui::Slider::new(&mut self.rocks.rocks, 0..=max).logarithmic(true).text("rocks"));
+        // Chapter 05's counts, read back from the GPU a frame or two late.
+        if let Some(drawn) = self.draw_calls.rocks_drawn {
+            let (rocks, triangles) = (thousands(drawn.rocks.into()), thousands(drawn.triangles as f64));
+            ui.label(format!("{rocks} rocks drawn, {triangles} rock triangles"));
+        }
+        if let Some(fallback) = self.plain.culling_fallback() {
+            ui.label(fallback);
+        }
         ui.add(egui::Slider::new(&mut self.controller.speed, 2.0..=200.0).logarithmic(true).text("speed (m/s)"));
         ground::movement_switch(ui, &mut self.movement);
     }
 
-    fn stats(&mut self, _gpu: &Gpu) -> String {
+    fn stats(&mut self, gpu: &Gpu) -> String {
         let calls = self.draw_calls;
+        let drawn = self.plain.rocks_drawn_now(gpu, &self.viewpoint.0, self.rocks);
+        let fallback = self.plain.culling_fallback().map_or(String::new(), |line| format!("; {line}"));
         format!(
-            "time of day {:.3}; {} rocks; {} draw calls ({} terrain chunks, {} for the rocks, 1 for the sky)",
+            "time of day {:.3}; {} of {} rocks drawn, {} rock triangles; {} draw calls ({} terrain chunks, {} for the rocks, 1 for the sky){fallback}",
             self.phase,
-            self.rocks.rocks.min(self.plain.rocks_placed()),
+            thousands(drawn.rocks.into()),
+            thousands(self.rocks.rocks.min(self.plain.rocks_placed()).into()),
+            thousands(drawn.triangles as f64),
             calls.total() + 1,
             calls.terrain,
             calls.rocks

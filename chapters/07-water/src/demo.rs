@@ -4,6 +4,7 @@
 //! chapter 06's sky and the water: three pictures of the scene a frame,
 //! then the water reading two of them.
 
+use common::book_figures::thousands;
 use common::chapter::scene_pass;
 use common::glam::{Vec2, Vec3, Vec4};
 use common::texture::depth_view;
@@ -12,11 +13,11 @@ use common::{
     ViewRow, anyhow, egui, views_of, wgpu,
 };
 use fog::FogSettings;
-use instancing::{MarsPlain, Setup, plain_camera};
+use instancing::{MarsPlain, PlainViewpoint, RocksDrawn, Setup, plain_camera};
 use skybox::{Sky, SkyViewpoint, sun_at};
 use terrain::ground::{self, Movement};
 use terrain::heightfield::HeightField;
-use terrain::{Detail, KEEP_ALL, SKY, Viewpoint};
+use terrain::{Detail, KEEP_ALL, SKY};
 
 use crate::lake::{find_lake, lake_camera, mirrored, orbit_point};
 use crate::water_renderer::{Style, WaterRenderer, WaterSettings};
@@ -130,8 +131,11 @@ struct Orbiting {
 /// frame draws three pictures, each from its own camera, so it keeps three
 /// of these, and all three pictures are recorded before one submit.
 struct Eye {
-    ground: Viewpoint,
+    plain: PlainViewpoint,
     sky: SkyViewpoint,
+    /// What the plain drew in this eye's last picture, where it was taken
+    /// in the last frame: counted on the CPU, or read back late from the GPU.
+    drawn: Option<Option<RocksDrawn>>,
 }
 
 /// Which of the frame's pictures an `Eye` draws.
@@ -186,12 +190,17 @@ impl WaterChapter {
         clip: Vec4,
         phase: f32,
     ) {
-        let Eye { ground, sky } = &mut self.eyes[eye];
+        let Eye { plain, sky, drawn } = &mut self.eyes[eye];
+        // The picture's own height: the half-size reflection and refraction
+        // see each rock half as many pixels across, and grade it so.
         let detail = Detail::lod(colour.texture().height());
-        self.plain.aim(gpu, ground, camera, detail, sun_at(phase), clip);
+        self.plain.aim(gpu, plain, camera, detail, sun_at(phase), clip);
         self.sky.aim(&gpu.queue, sky, camera, phase);
+        // The rocks' compute pass, with this picture's clip plane: rocks
+        // wholly on the cut side of the water are never drawn.
+        self.plain.cull(gpu, encoder, timer, plain, self.rocks);
         let mut pass = scene_pass(encoder, timer, label, colour, SKY, depth);
-        self.plain.draw(&mut pass, ground, self.rocks);
+        *drawn = Some(self.plain.draw(&mut pass, plain, self.rocks).rocks_drawn);
         self.sky.draw(&mut pass, sky);
     }
     // ANCHOR_END: picture
@@ -266,7 +275,8 @@ impl Chapter for WaterChapter {
         let (centre, size, level) = find_lake(field, &plain_camera(field, target.aspect()));
         let settings = Settings::DEFAULT;
         let water = WaterRenderer::new(gpu, &plain, centre, size, target, settings.water.resolution)?;
-        let eyes = std::array::from_fn(|_| Eye { ground: plain.terrain.viewpoint(device), sky: sky.viewpoint(device) });
+        let eyes =
+            std::array::from_fn(|_| Eye { plain: plain.viewpoint(device), sky: sky.viewpoint(device), drawn: None });
         let camera = lake_camera(field, centre, size, level, EYE_HEIGHT, target.aspect());
         Ok(Self {
             plain,
@@ -337,6 +347,9 @@ impl Chapter for WaterChapter {
 
     // ANCHOR: render
     fn render(&mut self, gpu: &Gpu, frame: &mut Frame) {
+        for eye in &mut self.eyes {
+            eye.drawn = None;
+        }
         self.water.resize_pictures(&gpu.device, self.target, self.settings.water.resolution);
         let phase = (START_PHASE + frame.time / self.day_seconds).rem_euclid(1.0);
         self.camera.far = self.fog.far_plane();
@@ -407,7 +420,7 @@ impl Chapter for WaterChapter {
             timestamp_writes: frame.timer.pass("water surface"),
             ..Default::default()
         });
-        self.water.draw(&mut pass, &self.plain, &self.eyes[MAIN].ground, style);
+        self.water.draw(&mut pass, &self.plain, &self.eyes[MAIN].plain, style);
     }
     // ANCHOR_END: render
 
@@ -432,6 +445,11 @@ impl Chapter for WaterChapter {
         ui.checkbox(&mut s.fresnel, "Fresnel");
         let (width, height) = self.water.pictures_size();
         ui.label(format!("water level {:.1} m; pictures {width}×{height}", self.level));
+        // Read back from the GPU a frame or two late.
+        ui.label(rocks_per_picture(self.eyes.each_ref().map(|eye| eye.drawn.flatten())));
+        if let Some(fallback) = self.plain.culling_fallback() {
+            ui.label(fallback);
+        }
         ui.separator();
         ui.add(egui::Slider::new(&mut self.day_seconds, 10.0..=1200.0).logarithmic(true).text("day length (s)"));
         ui.add(egui::Slider::new(&mut self.fog.density, 0.0..=0.01).logarithmic(true).text("fog density"));
@@ -448,10 +466,31 @@ impl Chapter for WaterChapter {
         }
     }
 
-    fn stats(&mut self, _gpu: &Gpu) -> String {
+    fn stats(&mut self, gpu: &Gpu) -> String {
         let (width, height) = self.water.pictures_size();
-        format!("pictures {width}×{height}; {} rocks in each picture", self.rocks.rocks.min(self.plain.rocks_placed()))
+        // Waiting for the GPU's counts of the last frame's pictures.
+        let drawn =
+            self.eyes.each_ref().map(|eye| eye.drawn.map(|_| self.plain.rocks_drawn_now(gpu, &eye.plain, self.rocks)));
+        let fallback = self.plain.culling_fallback().map_or(String::new(), |line| format!("; {line}"));
+        format!(
+            "pictures {width}×{height}; {} rocks in the world; {}{fallback}",
+            thousands(self.rocks.rocks.min(self.plain.rocks_placed()).into()),
+            rocks_per_picture(drawn)
+        )
     }
+}
+
+/// "rocks drawn: reflection 1,200 (5,000 triangles), …", for each of the
+/// frame's pictures that was drawn and counted.
+fn rocks_per_picture(drawn: [Option<RocksDrawn>; 3]) -> String {
+    let names = [(REFLECTION, "reflection"), (REFRACTION, "refraction"), (MAIN, "plain and sky")];
+    let pictures: Vec<String> = (names.iter())
+        .filter_map(|&(eye, name)| {
+            let drawn = drawn[eye]?;
+            Some(format!("{name} {} ({} triangles)", thousands(drawn.rocks.into()), thousands(drawn.triangles as f64)))
+        })
+        .collect();
+    format!("rocks drawn: {}", if pictures.is_empty() { "counting…".to_string() } else { pictures.join(", ") })
 }
 
 // ANCHOR: edit_waves

@@ -13,8 +13,8 @@ use common::{
     Camera, Frame, Gpu, Mesh, MeshData, Reloadable, ShaderError, ShaderFile, Target, anyhow, fullscreen, primitives,
     shader, wgpu,
 };
-use instancing::MarsPlain;
-use terrain::{SKY, Viewpoint};
+use instancing::{MarsPlain, PlainViewpoint};
+use terrain::SKY;
 
 use crate::waves::WaveSet;
 
@@ -305,17 +305,17 @@ impl WaterRenderer {
     }
     // ANCHOR_END: aim
 
-    /// Draws the surface in `style` into `pass`, seen from `ground` (a
-    /// viewpoint of `plain`'s terrain, aimed from the same camera as
-    /// `aim`), in `plain`'s fog. `Style::Pictures` reads the reflection
+    /// Draws the surface in `style` into `pass`, seen from `viewpoint` (a
+    /// viewpoint of `plain`, aimed from the same camera as `aim`: the water
+    /// reads its terrain uniforms), in `plain`'s fog. `Style::Pictures` reads the reflection
     /// and refraction pictures, which must have been drawn this frame.
-    pub fn draw(&self, pass: &mut wgpu::RenderPass<'_>, plain: &MarsPlain, ground: &Viewpoint, style: Style) {
+    pub fn draw(&self, pass: &mut wgpu::RenderPass<'_>, plain: &MarsPlain, viewpoint: &PlainViewpoint, style: Style) {
         let pipelines = self.pipelines.get();
         pass.set_pipeline(match style {
             Style::Pictures => &pipelines.pictures,
             Style::Texture => &pipelines.texture,
         });
-        plain.terrain.bind(pass, ground);
+        plain.terrain.bind(pass, &viewpoint.ground);
         pass.set_bind_group(1, &plain.fog.group, &[]);
         pass.set_bind_group(2, &self.water_group, &[]);
         self.grid.draw(pass, 0..1);
