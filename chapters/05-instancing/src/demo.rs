@@ -11,7 +11,7 @@ use common::{
 use fog::FogSettings;
 use terrain::ground::{self, Movement};
 use terrain::heightfield::{HeightField, TerrainSettings};
-use terrain::{Detail, KEEP_ALL, SKY, Sun};
+use terrain::{KEEP_ALL, SKY, Sun};
 
 use crate::cameras::plain_camera;
 use crate::mars_plain::{Culling, DrawCalls, MarsPlain, Mode, PlainViewpoint, RocksDrawn, Setup};
@@ -32,7 +32,7 @@ impl CameraPreset {
 /// Every view, with the rocks it draws and how. The bench views leave the
 /// terrain out and draw every one of their rocks (the first of the buffer,
 /// nearest the start, not culled), so that their numbers are the rocks' alone.
-pub const VIEW_TABLE: [ViewRow<Setup, CameraPreset>; 11] = [
+pub const VIEW_TABLE: [ViewRow<Setup, CameraPreset>; 12] = [
     ViewRow::mode(
         "default",
         "the Mars plain: terrain, fog and a million rocks over the whole map, culled and graded rock by rock on the GPU",
@@ -44,6 +44,11 @@ pub const VIEW_TABLE: [ViewRow<Setup, CameraPreset>; 11] = [
         Setup { culling: Culling::Chunks, ..Setup::DEFAULT },
     )
     .same_picture_as("default"),
+    ViewRow::bench(
+        "full-detail",
+        "bench: the plain as drawn before levels of detail, terrain and rocks at full detail",
+        Setup::DEFAULT.at_full_detail(),
+    ),
     ViewRow::mode(
         "lod-levels",
         "each rock the GPU kept in its level's colour: red the full rock, yellow the octahedron, blue the tetrahedron",
@@ -63,12 +68,12 @@ pub const VIEW_TABLE: [ViewRow<Setup, CameraPreset>; 11] = [
     ViewRow::mode(
         "naive",
         "the plain with the 2,000 rocks nearest the start, one draw call each",
-        Setup { rocks: 2_000, mode: Mode::OnePerDraw, terrain: true, culling: Culling::Off },
+        Setup { rocks: 2_000, mode: Mode::OnePerDraw, terrain: true, culling: Culling::Off, full_detail: false },
     ),
     ViewRow::mode(
         "rocks-10k",
         "bench: 10,000 rocks, instanced, no terrain",
-        Setup { rocks: 10_000, mode: Mode::Instanced, terrain: false, culling: Culling::Off },
+        Setup { rocks: 10_000, mode: Mode::Instanced, terrain: false, culling: Culling::Off, full_detail: false },
     ),
     // Measured, not a snapshot: past its 100,000 rocks (730 m around the
     // start) the haze hides most of what `rocks-1m` adds, so the two
@@ -76,23 +81,23 @@ pub const VIEW_TABLE: [ViewRow<Setup, CameraPreset>; 11] = [
     ViewRow::bench(
         "rocks-100k",
         "bench: 100,000 rocks, instanced, no terrain",
-        Setup { rocks: 100_000, mode: Mode::Instanced, terrain: false, culling: Culling::Off },
+        Setup { rocks: 100_000, mode: Mode::Instanced, terrain: false, culling: Culling::Off, full_detail: false },
     ),
     ViewRow::mode(
         "rocks-1m",
         "bench: 1,000,000 rocks, instanced, no terrain",
-        Setup { rocks: 1_000_000, mode: Mode::Instanced, terrain: false, culling: Culling::Off },
+        Setup { rocks: 1_000_000, mode: Mode::Instanced, terrain: false, culling: Culling::Off, full_detail: false },
     ),
     ViewRow::mode(
         "naive-10k",
         "bench: 10,000 rocks, one draw call each, no terrain",
-        Setup { rocks: 10_000, mode: Mode::OnePerDraw, terrain: false, culling: Culling::Off },
+        Setup { rocks: 10_000, mode: Mode::OnePerDraw, terrain: false, culling: Culling::Off, full_detail: false },
     )
     .same_picture_as("rocks-10k"),
     ViewRow::mode(
         "flat-1m",
         "bench: 1,000,000 rocks, instanced, flat colour: the cost floor",
-        Setup { rocks: 1_000_000, mode: Mode::Flat, terrain: false, culling: Culling::Off },
+        Setup { rocks: 1_000_000, mode: Mode::Flat, terrain: false, culling: Culling::Off, full_detail: false },
     ),
 ];
 
@@ -235,15 +240,17 @@ impl Chapter for InstancingChapter {
             gpu,
             &mut self.viewpoint,
             &self.camera,
-            Detail::lod(self.target.height),
+            self.setup.detail(self.target.height),
             Sun::AFTERNOON,
             KEEP_ALL,
         );
         // The rocks' compute pass (or the CPU's list of draws), before the
         // render pass that draws them.
         self.plain.cull(gpu, frame.encoder, frame.timer, &mut self.viewpoint, self.setup);
+        let drawn = frame.drawn;
         let mut pass = frame.scene_pass("terrain and rocks", SKY, &self.depth);
         self.draw_calls = self.plain.draw(&mut pass, &self.viewpoint, self.setup);
+        drawn.add("terrain and rocks", self.draw_calls.drawn());
     }
     // ANCHOR_END: render
 

@@ -103,11 +103,14 @@ mod tests {
             slots.is_multiple_of(20_003) && [32, 64, 128, 256].contains(&(slots / 20_003)),
             "{slots} bytes of slots"
         );
-        // wgpu counts every buffer and texture the plain made: ours, and
-        // the uniforms on top, a few kilobytes.
+        // wgpu counts every buffer and texture the plain made, as the
+        // driver allocated them: ours, the uniforms on top (a few
+        // kilobytes), and the padding a driver may give each row of a
+        // texture (lavapipe's comes to about 2 % of the terrain's maps).
         if let Some(counted) = memory.counted {
             let ours = memory.terrain + memory.rock_bytes;
-            assert!(counted >= ours && counted - ours < 64 * 1024, "wgpu counts {counted} bytes, we {ours}");
+            let slack = 64 * 1024 + memory.terrain / 32;
+            assert!(counted >= ours && counted - ours < slack, "wgpu counts {counted} bytes, we {ours}");
         }
     }
 

@@ -9,7 +9,7 @@ use std::sync::Arc;
 
 use common::glam::Vec4;
 use common::texture::depth_test;
-use common::{Camera, Gpu, PassTimer, Reloadable, ShaderError, ShaderFile, Vertex, anyhow, shader, wgpu};
+use common::{Camera, Drawn, Gpu, PassTimer, Reloadable, ShaderError, ShaderFile, Vertex, anyhow, shader, wgpu};
 use fog::{FogBinding, FogSettings, fog_shader};
 use terrain::{Detail, Sun, TerrainData, TerrainRenderer, Viewpoint};
 
@@ -66,13 +66,29 @@ pub struct Setup {
     pub mode: Mode,
     pub terrain: bool,
     pub culling: Culling,
+    /// The terrain's every chunk in view at full detail (chapter 03's
+    /// `full-detail`), not at its levels of detail.
+    pub full_detail: bool,
 }
 
 impl Setup {
     /// The plain as the book shows it: the terrain and a million rocks over
     /// the whole map, culled and graded on the GPU.
     pub const DEFAULT: Self =
-        Self { rocks: MAX_ROCKS, mode: Mode::Instanced, terrain: true, culling: Culling::PerRock };
+        Self { rocks: MAX_ROCKS, mode: Mode::Instanced, terrain: true, culling: Culling::PerRock, full_detail: false };
+
+    /// `self` as the plain was drawn before it had levels of detail: the
+    /// terrain's every chunk in view at full detail, the rocks culled by
+    /// chunk and every one in view drawn whole. What the levels save is the
+    /// difference between the two.
+    pub const fn at_full_detail(self) -> Self {
+        Self { culling: Culling::Chunks, full_detail: true, ..self }
+    }
+
+    /// How finely this setup draws the terrain, in a picture `height` pixels high.
+    pub fn detail(&self, height: u32) -> Detail {
+        if self.full_detail { Detail::full(height) } else { Detail::lod(height) }
+    }
 }
 
 /// What a device drawing the plain needs: chapter 03's needs, and indirect
@@ -158,8 +174,10 @@ pub struct RocksDrawn {
 /// Draw calls recorded for one picture of the plain, and the rocks drawn.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
 pub struct DrawCalls {
-    /// One per terrain chunk in view.
+    /// One instanced call for every patch of the terrain in view.
     pub terrain: u32,
+    /// The terrain's triangles: every patch's.
+    pub terrain_triangles: u64,
     /// One per run of rock groups, one in all (indirect), one per rock, or
     /// one per level of detail (culled on the GPU).
     pub rocks: u32,
@@ -174,6 +192,13 @@ pub struct DrawCalls {
 impl DrawCalls {
     pub fn total(&self) -> u32 {
         self.terrain + self.rocks
+    }
+
+    /// The calls and triangles, for the pass's count: the rocks' as far as
+    /// they are known (read back late where the GPU culls).
+    pub fn drawn(&self) -> Drawn {
+        let rocks = self.rocks_drawn.map_or(0, |drawn| drawn.triangles);
+        Drawn::counted(self.total(), self.terrain_triangles + rocks)
     }
 }
 
@@ -495,7 +520,8 @@ impl MarsPlain {
         let mut calls = DrawCalls::default();
         if setup.terrain {
             pass.set_pipeline(&self.pipelines.get().terrain);
-            calls.terrain = self.terrain.draw(pass, &viewpoint.ground).draws;
+            let drawn = self.terrain.draw(pass, &viewpoint.ground);
+            (calls.terrain, calls.terrain_triangles) = (drawn.draws, drawn.triangles);
         }
         if let (true, Some((culling, group)), Some(lists)) = (self.culls_on_gpu(setup), &self.culling, &viewpoint.rocks)
         {

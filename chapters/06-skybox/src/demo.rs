@@ -10,9 +10,9 @@ use common::{
 };
 use fog::FogSettings;
 use instancing::{DrawCalls, MarsPlain, PlainViewpoint, Setup, plain_camera};
+use terrain::KEEP_ALL;
 use terrain::ground::{self, Movement};
 use terrain::heightfield::HeightField;
-use terrain::{Detail, KEEP_ALL};
 
 use crate::sky::{Sky, SkyViewpoint};
 use crate::sun_path::sun_at;
@@ -23,11 +23,13 @@ pub struct Settings {
     /// The time of day at scene time 0: 0 midnight, 0.25 sunrise, 0.5
     /// noon, 0.75 sunset.
     pub start_phase: f32,
+    /// The plain as drawn before levels of detail (`Setup::at_full_detail`).
+    pub full_detail: bool,
 }
 
 impl Settings {
     /// Mid-morning.
-    pub const DEFAULT: Self = Self { start_phase: 0.40 };
+    pub const DEFAULT: Self = Self { start_phase: 0.40, full_detail: false };
 }
 
 /// The places a view can put the camera.
@@ -46,15 +48,24 @@ impl CameraPreset {
 }
 
 /// Every view, with the time of day it starts at and, for a preset, its camera.
-pub const VIEW_TABLE: [ViewRow<Settings, CameraPreset>; 3] = [
+pub const VIEW_TABLE: [ViewRow<Settings, CameraPreset>; 4] = [
     ViewRow::mode("day", "mid-morning: the sun high in the east, the plain in full light", Settings::DEFAULT),
     ViewRow::preset(
         "dusk",
         "facing west as the sun sets in its blue Martian halo",
-        Settings { start_phase: 0.745 },
+        Settings { start_phase: 0.745, ..Settings::DEFAULT },
         CameraPreset::Dusk,
     ),
-    ViewRow::mode("night", "stars over the plain, lit by the sky alone", Settings { start_phase: 0.02 }),
+    ViewRow::mode(
+        "night",
+        "stars over the plain, lit by the sky alone",
+        Settings { start_phase: 0.02, ..Settings::DEFAULT },
+    ),
+    ViewRow::bench(
+        "full-detail",
+        "bench: the day view as drawn before levels of detail, terrain and rocks at full detail",
+        Settings { full_detail: true, ..Settings::DEFAULT },
+    ),
 ];
 
 /// The plain's camera, turned to face the sunset: west (−x), a little
@@ -181,13 +192,15 @@ impl Chapter for SkyboxChapter {
         self.camera.far = self.fog.far_plane();
         self.plain.set_air(&gpu.queue, self.fog, self.sky.fog_colour(self.phase));
         let (ground, sky) = &mut self.viewpoint;
-        self.plain.aim(gpu, ground, &self.camera, Detail::lod(self.target.height), sun_at(self.phase), KEEP_ALL);
+        let rocks = if self.settings.full_detail { self.rocks.at_full_detail() } else { self.rocks };
+        self.plain.aim(gpu, ground, &self.camera, rocks.detail(self.target.height), sun_at(self.phase), KEEP_ALL);
         self.sky.aim(&gpu.queue, sky, &self.camera, self.phase);
-        self.plain.cull(gpu, frame.encoder, frame.timer, ground, self.rocks);
+        self.plain.cull(gpu, frame.encoder, frame.timer, ground, rocks);
         // The clear colour is never seen: the sky covers whatever the plain leaves.
+        let drawn = frame.drawn;
         let mut pass = frame.scene_pass("plain and sky", terrain::SKY, &self.depth);
-        self.draw_calls = self.plain.draw(&mut pass, ground, self.rocks);
-        self.sky.draw(&mut pass, sky);
+        self.draw_calls = self.plain.draw(&mut pass, ground, rocks);
+        drawn.add("plain and sky", self.draw_calls.drawn() + self.sky.draw(&mut pass, sky));
     }
     // ANCHOR_END: render
 

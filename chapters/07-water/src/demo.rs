@@ -9,7 +9,7 @@ use common::chapter::scene_pass;
 use common::glam::{Vec2, Vec3, Vec4};
 use common::texture::depth_view;
 use common::{
-    Camera, Chapter, ChapterFlag, FlagValues, FlyController, Frame, Gpu, Input, Orbit, PassTimer, Target, View,
+    Camera, Chapter, ChapterFlag, Drawn, FlagValues, FlyController, Frame, Gpu, Input, Orbit, PassTimer, Target, View,
     ViewRow, anyhow, egui, views_of, wgpu,
 };
 use fog::FogSettings;
@@ -17,7 +17,7 @@ use instancing::{MarsPlain, PlainViewpoint, RocksDrawn, Setup, plain_camera};
 use skybox::{Sky, SkyViewpoint, sun_at};
 use terrain::ground::{self, Movement};
 use terrain::heightfield::HeightField;
-use terrain::{Detail, KEEP_ALL, SKY};
+use terrain::{KEEP_ALL, SKY};
 
 use crate::lake::{find_lake, lake_camera, mirrored, orbit_point};
 use crate::water_renderer::{Style, WaterRenderer, WaterSettings};
@@ -39,10 +39,13 @@ pub enum Display {
 pub struct Settings {
     pub water: WaterSettings,
     pub display: Display,
+    /// The plain in every picture as drawn before levels of detail
+    /// (`Setup::at_full_detail`).
+    pub full_detail: bool,
 }
 
 impl Settings {
-    pub const DEFAULT: Self = Self { water: WaterSettings::DEFAULT, display: Display::Lake };
+    pub const DEFAULT: Self = Self { water: WaterSettings::DEFAULT, display: Display::Lake, full_detail: false };
 }
 
 /// How high above the water the start camera stands, metres.
@@ -64,7 +67,7 @@ impl CameraPreset {
 }
 
 /// Every view, with the settings it applies and, for a preset, its camera.
-pub const VIEW_TABLE: [ViewRow<Settings, CameraPreset>; 6] = [
+pub const VIEW_TABLE: [ViewRow<Settings, CameraPreset>; 7] = [
     ViewRow::mode(
         "default",
         "the lake: reflection and refraction mixed by Fresnel, ripples and waves",
@@ -99,6 +102,11 @@ pub const VIEW_TABLE: [ViewRow<Settings, CameraPreset>; 6] = [
             ..Settings::DEFAULT
         },
         CameraPreset::CloseToWater,
+    ),
+    ViewRow::bench(
+        "full-detail",
+        "bench: the lake as drawn before levels of detail, terrain and rocks at full detail in all three pictures",
+        Settings { full_detail: true, ..Settings::DEFAULT },
     ),
 ];
 
@@ -189,19 +197,21 @@ impl WaterChapter {
         camera: &Camera,
         clip: Vec4,
         phase: f32,
-    ) {
+    ) -> Drawn {
         let Eye { plain, sky, drawn } = &mut self.eyes[eye];
         // The picture's own height: the half-size reflection and refraction
         // see each rock half as many pixels across, and grade it so.
-        let detail = Detail::lod(colour.texture().height());
+        let rocks = if self.settings.full_detail { self.rocks.at_full_detail() } else { self.rocks };
+        let detail = rocks.detail(colour.texture().height());
         self.plain.aim(gpu, plain, camera, detail, sun_at(phase), clip);
         self.sky.aim(&gpu.queue, sky, camera, phase);
         // The rocks' compute pass, with this picture's clip plane: rocks
         // wholly on the cut side of the water are never drawn.
-        self.plain.cull(gpu, encoder, timer, plain, self.rocks);
+        self.plain.cull(gpu, encoder, timer, plain, rocks);
         let mut pass = scene_pass(encoder, timer, label, colour, SKY, depth);
-        *drawn = Some(self.plain.draw(&mut pass, plain, self.rocks).rocks_drawn);
-        self.sky.draw(&mut pass, sky);
+        let calls = self.plain.draw(&mut pass, plain, rocks);
+        *drawn = Some(calls.rocks_drawn);
+        calls.drawn() + self.sky.draw(&mut pass, sky)
     }
     // ANCHOR_END: picture
 
@@ -365,7 +375,7 @@ impl Chapter for WaterChapter {
             let above = Vec4::new(0.0, 1.0, 0.0, -self.level + bias);
             let targets = (&reflection.colour, &reflection.depth);
             let mirror = mirrored(&camera, self.level);
-            self.take_picture(
+            let picture = self.take_picture(
                 gpu,
                 frame.encoder,
                 frame.timer,
@@ -375,12 +385,13 @@ impl Chapter for WaterChapter {
                 above,
                 phase,
             );
+            frame.drawn.add("reflection", picture);
         }
         // 2. The refraction: from the camera, keeping what is below the water.
         if pictures && display != Display::Reflection {
             let below = Vec4::new(0.0, -1.0, 0.0, self.level + bias);
             let targets = (&refraction.colour, &refraction.depth);
-            self.take_picture(
+            let picture = self.take_picture(
                 gpu,
                 frame.encoder,
                 frame.timer,
@@ -390,17 +401,28 @@ impl Chapter for WaterChapter {
                 below,
                 phase,
             );
+            frame.drawn.add("refraction", picture);
         }
         match display {
-            Display::Reflection => return self.water.show(frame, 0),
-            Display::Refraction => return self.water.show(frame, 1),
+            Display::Reflection => return frame.drawn.add("show picture", self.water.show(frame, 0)),
+            Display::Refraction => return frame.drawn.add("show picture", self.water.show(frame, 1)),
             Display::Lake => {}
         }
 
         // 3. The scene itself, whole.
         let depth = self.depth.clone();
         let targets = (frame.target, &depth);
-        self.take_picture(gpu, frame.encoder, frame.timer, ("plain and sky", MAIN), targets, &camera, KEEP_ALL, phase);
+        let picture = self.take_picture(
+            gpu,
+            frame.encoder,
+            frame.timer,
+            ("plain and sky", MAIN),
+            targets,
+            &camera,
+            KEEP_ALL,
+            phase,
+        );
+        frame.drawn.add("plain and sky", picture);
 
         // 4. The water on top, reading both pictures (or, in seed 003's style, its texture).
         self.water.aim(&gpu.queue, self.level, frame.time, &camera, self.settings.water);
@@ -420,7 +442,7 @@ impl Chapter for WaterChapter {
             timestamp_writes: frame.timer.pass("water surface"),
             ..Default::default()
         });
-        self.water.draw(&mut pass, &self.plain, &self.eyes[MAIN].plain, style);
+        frame.drawn.add("water surface", self.water.draw(&mut pass, &self.plain, &self.eyes[MAIN].plain, style));
     }
     // ANCHOR_END: render
 
