@@ -302,7 +302,7 @@ impl Chapter for InstancingChapter {
         let drawn = self.plain.rocks_drawn_now(gpu, &self.viewpoint, self.setup);
         let fallback = self.fallback_line().map_or(String::new(), |line| format!("; {line}"));
         format!(
-            "{}, {:?}, culling {:?}; {} draw calls ({} terrain chunks + {} for the rocks); {:?} triangles per rock by level, {} bytes per instance{fallback}",
+            "{}, {:?}, culling {:?}; {} draw calls ({} for the terrain + {} for the rocks); {:?} triangles per rock by level, {} bytes per instance{fallback}",
             self.rocks_drawn(Some(drawn)),
             self.setup.mode,
             self.setup.culling,
