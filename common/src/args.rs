@@ -5,7 +5,7 @@ use std::path::{Path, PathBuf};
 
 use clap::{CommandFactory, FromArgMatches, Parser};
 
-use crate::{Chapter, Gpu};
+use crate::{CameraPlace, Chapter, Gpu};
 
 /// Width and height in pixels.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -30,6 +30,10 @@ fn parse_time(text: &str) -> Result<f32, String> {
     }
 }
 
+fn parse_camera(text: &str) -> Result<CameraPlace, String> {
+    text.parse()
+}
+
 /// Flags shared by every chapter (`--help` prints them).
 #[derive(Parser, Debug, Clone)]
 pub struct Args {
@@ -48,6 +52,12 @@ pub struct Args {
     /// The view to show (--list-views lists them with what each shows).
     #[arg(long, value_name = "NAME")]
     pub view: Option<String>,
+
+    /// Look from this place: the position in metres, then yaw and pitch in degrees, as the overlay's
+    /// camera line shows them (its copy button copies this flag). Applied after --view, so it
+    /// replaces a preset's camera; in the window, headless and in --bench alike.
+    #[arg(long, value_name = "X,Y,Z,YAW,PITCH", value_parser = parse_camera, allow_hyphen_values = true)]
+    pub camera: Option<CameraPlace>,
 
     /// Print the chapter's views and exit.
     #[arg(long)]

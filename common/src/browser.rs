@@ -8,7 +8,8 @@
 //! scene time T), with no overlay: the browser test compares it with the
 //! snapshot. `size=WxH` sets that picture's size, `backend=webgl2` skips
 //! WebGPU. `edit=FILE` opens the shader panel on FILE, with the cursor at
-//! the first occurrence of `at=TEXT` if given.
+//! the first occurrence of `at=TEXT` if given. `camera=X,Y,Z,YAW,PITCH`
+//! looks from there, as `--camera` does.
 
 use std::cell::RefCell;
 use std::process::ExitCode;
@@ -21,7 +22,7 @@ use crate::web::{self, canvas, note_backend, prepare, set_state, show_error};
 use crate::{Chapter, Gpu, PassTimer, Target};
 
 /// The URL parameters a chapter page understands.
-const PARAMETERS: &[&str] = &["view", "time", "size", "backend", "edit", "at"];
+const PARAMETERS: &[&str] = &["view", "time", "size", "camera", "backend", "edit", "at"];
 
 thread_local! {
     /// What a still picture keeps alive so that the canvas keeps showing it.
@@ -75,7 +76,7 @@ fn page_args<C: Chapter>() -> Result<(Args, bool), String> {
             // For the browser test: a panic's message must reach the page.
             "panic" => panic!("a panic on purpose: the URL asked for one with panic={value}"),
             "at" => at = Some(value),
-            "view" | "time" | "size" | "edit" => {
+            "view" | "time" | "size" | "camera" | "edit" => {
                 picture |= name == "time";
                 flags.push(format!("--{name}"));
                 flags.push(value);
@@ -135,7 +136,7 @@ async fn still_picture<C: Chapter>(args: &Args) -> anyhow::Result<()> {
     let time = args.time.unwrap_or(C::SNAPSHOT_TIME);
     let target = Target { format: scene_format, width, height };
     let mut chapter = crate::chapter::create_prepared::<C>(&gpu, target, prepared, &args.chapter_flags)?;
-    chapter.select_view(view);
+    crate::chapter::start(&mut chapter, view, args.camera)?;
     let frame = match surface.get_current_texture() {
         wgpu::CurrentSurfaceTexture::Success(frame) | wgpu::CurrentSurfaceTexture::Suboptimal(frame) => frame,
         other => anyhow::bail!("the canvas gave no texture to draw into ({other:?})"),

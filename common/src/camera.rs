@@ -70,6 +70,117 @@ impl Camera {
     // ANCHOR_END: matrices
 }
 
+/// Where a camera stands and which way it looks, as the overlay's camera
+/// line shows it and `--camera X,Y,Z,YAW,PITCH` takes it: the position in
+/// metres, yaw and pitch in degrees. The text is written here once, in one
+/// format, so what a learner copies from the overlay is a flag that puts
+/// any run of the chapter (a window, `--screenshot`, `--bench`) in the same
+/// place. The optics (field of view, near and far planes) are the
+/// chapter's, not part of the place.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct CameraPlace {
+    pub position: Vec3,
+    /// Radians, as [`Camera::yaw`].
+    pub yaw: f32,
+    /// Radians, as [`Camera::pitch`].
+    pub pitch: f32,
+}
+
+impl CameraPlace {
+    /// The steepest pitch a place may have, in degrees: looking straight up
+    /// or down leaves no "up" for the view matrix.
+    pub const MAX_PITCH_DEGREES: f64 = 89.99;
+    /// Decimals the text gives: a centimetre, a hundredth of a degree.
+    pub const DECIMALS: usize = 2;
+    /// What the text looks like, for messages and `--help`.
+    pub const FORMAT: &'static str = "X,Y,Z,YAW,PITCH";
+
+    /// Where `camera` is.
+    pub fn of(camera: &Camera) -> Self {
+        Self { position: camera.position, yaw: camera.yaw, pitch: camera.pitch }
+    }
+
+    /// Puts `camera` here, keeping its optics.
+    pub fn put(self, camera: &mut Camera) {
+        camera.position = self.position;
+        camera.yaw = self.yaw;
+        camera.pitch = self.pitch;
+    }
+}
+
+/// `X,Y,Z,YAW,PITCH` with [`CameraPlace::DECIMALS`] decimals: the yaw
+/// wrapped into [-180°, 180°) (a learner may have turned round many times),
+/// the pitch within ±[`CameraPlace::MAX_PITCH_DEGREES`], so the text always
+/// reads back.
+impl std::fmt::Display for CameraPlace {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        let d = Self::DECIMALS;
+        let p = self.position;
+        let yaw = (f64::from(self.yaw).to_degrees() + 180.0).rem_euclid(360.0) - 180.0;
+        let pitch = f64::from(self.pitch).to_degrees().clamp(-Self::MAX_PITCH_DEGREES, Self::MAX_PITCH_DEGREES);
+        // Rounding must not print -0.00, nor 180.00 for a yaw just under it.
+        let tidy = |v: f64| {
+            let scale = 10f64.powi(d as i32);
+            let rounded = (v * scale).round() / scale;
+            if rounded == 0.0 { 0.0 } else { rounded }
+        };
+        let yaw = if tidy(yaw) >= 180.0 { -180.0 } else { tidy(yaw) };
+        write!(
+            f,
+            "{:.d$},{:.d$},{:.d$},{:.d$},{:.d$}",
+            tidy(p.x.into()),
+            tidy(p.y.into()),
+            tidy(p.z.into()),
+            yaw,
+            tidy(pitch)
+        )
+    }
+}
+
+/// Reads `X,Y,Z,YAW,PITCH` (any number of decimals, spaces allowed); the
+/// error says what was wrong and what is expected, for a one-line message.
+/// Degrees become radians in double precision, so a camera written with
+/// enough digits reads back to the very same `f32`s.
+impl std::str::FromStr for CameraPlace {
+    type Err = String;
+
+    fn from_str(text: &str) -> Result<Self, String> {
+        let expected = format!(
+            "expected {}: five numbers separated by commas, the position in metres then yaw and pitch in \
+             degrees, like 10,2.5,-30,45,-10",
+            Self::FORMAT
+        );
+        let parts: Vec<&str> = text.split(',').map(str::trim).collect();
+        let [x, y, z, yaw, pitch] = parts[..] else {
+            return Err(format!("{} value{} given; {expected}", parts.len(), if parts.len() == 1 { "" } else { "s" }));
+        };
+        let number = |name: &str, part: &str| match part.parse::<f64>() {
+            Ok(v) if v.is_finite() => Ok(v),
+            Ok(_) => Err(format!("{name} is {part}, not a finite number; {expected}")),
+            Err(_) => Err(format!("{name} '{part}' is not a number; {expected}")),
+        };
+        let [x, y, z, yaw, pitch] =
+            [("X", x), ("Y", y), ("Z", z), ("YAW", yaw), ("PITCH", pitch)].map(|(name, part)| number(name, part));
+        let (x, y, z, yaw, pitch) = (x?, y?, z?, yaw?, pitch?);
+        if pitch.abs() > Self::MAX_PITCH_DEGREES {
+            return Err(format!(
+                "PITCH {pitch}° is steeper than ±{}° (straight up or down leaves the view no up)",
+                Self::MAX_PITCH_DEGREES
+            ));
+        }
+        // A number past f32's range (1e39) would become infinite.
+        let single = |name: &str, given: f64, value: f64| {
+            let narrow = value as f32;
+            if narrow.is_finite() { Ok(narrow) } else { Err(format!("{name} {given} is too large; {expected}")) }
+        };
+        Ok(Self {
+            position: Vec3::new(single("X", x, x)?, single("Y", y, y)?, single("Z", z, z)?),
+            yaw: single("YAW", yaw, yaw.to_radians())?,
+            pitch: single("PITCH", pitch, pitch.to_radians())?,
+        })
+    }
+}
+
 /// Moves a [`Camera`] like a drone: WASD or arrows to move, Space/E to
 /// rise, Shift+Space/Q to fall, mouse to look, scroll to dolly, Ctrl to go
 /// fast. Speeds are per second, so motion does not depend on frame rate.
@@ -170,6 +281,108 @@ mod tests {
         }
         assert!(slow.position.distance(fast.position) < 1e-4);
         assert!((slow.position.z + controller.speed / 10.0).abs() < 1e-4);
+    }
+
+    /// Cameras a learner could fly to: odd positions, yaw turned past a
+    /// whole turn either way, pitch up to the limit.
+    fn cameras() -> Vec<Camera> {
+        let base = Camera::looking_at(Vec3::ZERO, -Vec3::Z, 1.5);
+        let mut cameras = Vec::new();
+        for i in 0..200 {
+            let t = i as f32;
+            cameras.push(Camera {
+                position: Vec3::new(t * 37.123 - 3000.0, (t * 0.731).sin() * 400.0, -t * 11.0077),
+                yaw: (t - 100.0) * 0.173,
+                pitch: ((t * 0.37).sin() * 89.99f32).to_radians(),
+                ..base
+            });
+        }
+        cameras
+    }
+
+    /// What the overlay prints reads back as the same camera, within the
+    /// decimals printed (half a unit of the last one), and the view looks
+    /// the same way: compared by direction, so a yaw wrapped into
+    /// [-180°, 180°) is the same yaw.
+    #[test]
+    fn the_printed_place_reads_back_within_its_precision() {
+        let half = 0.5 * 10f32.powi(-(CameraPlace::DECIMALS as i32));
+        for camera in cameras() {
+            let text = CameraPlace::of(&camera).to_string();
+            let place: CameraPlace = text.parse().unwrap_or_else(|e| panic!("{text}: {e}"));
+            let mut back = camera;
+            place.put(&mut back);
+            let slack = half + camera.position.abs().max_element() * f32::EPSILON;
+            assert!((back.position - camera.position).abs().max_element() <= slack, "{text}: {back:?}");
+            let turned = (back.yaw - camera.yaw).to_degrees().rem_euclid(360.0);
+            assert!(turned.min(360.0 - turned) <= half + 1e-3, "{text}: yaw {} vs {}", back.yaw, camera.yaw);
+            assert!((back.pitch - camera.pitch).to_degrees().abs() <= half + 1e-3, "{text}");
+            // The chord between the two directions is the angle between
+            // them, in radians, this close (acos of a dot near 1 is not
+            // precise in f32).
+            let chord = (back.forward() - camera.forward()).length();
+            assert!(chord < (2.0 * half).to_radians() + 1e-6, "{text}: {}° apart", chord.to_degrees());
+            assert_eq!((back.fov_y, back.near, back.far, back.aspect), (camera.fov_y, camera.near, camera.far, 1.5));
+        }
+    }
+
+    #[test]
+    fn the_text_is_five_numbers_yaw_wrapped_and_pitch_kept_readable() {
+        let camera = Camera {
+            position: Vec3::new(1.0, -2.5, 1000.125),
+            yaw: 370f32.to_radians(),
+            pitch: 0.0,
+            ..Camera::looking_at(Vec3::ZERO, -Vec3::Z, 1.0)
+        };
+        assert_eq!(CameraPlace::of(&camera).to_string(), "1.00,-2.50,1000.13,10.00,0.00");
+        let down = Camera { pitch: -89.999f32.to_radians(), yaw: (-180.001f32).to_radians(), ..camera };
+        let text = CameraPlace::of(&down).to_string();
+        assert!(text.ends_with(",180.00,-89.99") || text.ends_with(",-180.00,-89.99"), "{text}");
+        assert!(text.parse::<CameraPlace>().is_ok(), "{text}");
+        let tiny = Camera { position: Vec3::new(-0.001, 0.0, 0.0), yaw: -0.00001, ..camera };
+        assert_eq!(CameraPlace::of(&tiny).to_string(), "0.00,0.00,0.00,0.00,0.00", "no -0.00");
+    }
+
+    /// Written with every digit, a camera reads back to the same `f32`s,
+    /// so a headless picture from it is the same picture.
+    #[test]
+    fn every_digit_reads_back_exactly() {
+        for camera in cameras() {
+            let p = camera.position;
+            let text = format!(
+                "{},{},{},{},{}",
+                p.x,
+                p.y,
+                p.z,
+                f64::from(camera.yaw).to_degrees(),
+                f64::from(camera.pitch).to_degrees()
+            );
+            let place: CameraPlace = text.parse().unwrap();
+            assert_eq!(place, CameraPlace::of(&camera), "{text}");
+        }
+    }
+
+    #[test]
+    fn bad_places_say_what_is_expected() {
+        let cases = [
+            ("1,2,3,4", "4 values given; expected X,Y,Z,YAW,PITCH"),
+            ("1,2,3,4,5,6", "6 values given"),
+            ("", "1 value given"),
+            ("1,2,three,4,5", "Z 'three' is not a number"),
+            ("1,2,3,NaN,5", "YAW is NaN, not a finite number"),
+            ("1,inf,3,4,5", "Y is inf, not a finite number"),
+            ("1,2,3,4,90", "PITCH 90° is steeper than ±89.99°"),
+            ("1,2,3,4,-89.995", "PITCH -89.995° is steeper"),
+            ("1e39,2,3,4,5", "X 1000000000000000000000000000000000000000 is too large"),
+        ];
+        for (text, start) in cases {
+            let error = text.parse::<CameraPlace>().unwrap_err();
+            assert!(error.contains(start), "{text}: {error}");
+            assert!(!error.contains('\n'), "one line: {error}");
+        }
+        let place: CameraPlace = " 10, 2.5 ,-30,45,-89.99".parse().unwrap();
+        assert_eq!(place.position, Vec3::new(10.0, 2.5, -30.0));
+        assert!((place.yaw.to_degrees() - 45.0).abs() < 1e-4 && (place.pitch.to_degrees() + 89.99).abs() < 1e-4);
     }
 
     #[test]

@@ -1,7 +1,8 @@
 //! The contract every chapter fulfils, so that one runner can open it in a
 //! window, render it headless to a PNG, benchmark it and snapshot-test it.
 
-use crate::{Camera, Gpu, GpuNeeds, Input, PassTimer, Preparation};
+use crate::args::UsageError;
+use crate::{Camera, CameraPlace, DrawCounts, Gpu, GpuNeeds, Input, PassTimer, Preparation};
 
 // For existing imports (`use common::chapter::{uniform_entry, …}`): the
 // helpers live in `crate::pipeline` now.
@@ -164,6 +165,11 @@ pub struct Frame<'a> {
     /// Hands out GPU timestamp slots for render passes (a no-op when the
     /// adapter has no timestamp queries or nobody is measuring).
     pub timer: &'a PassTimer,
+    /// What each pass draws, counted as the chapter records its draws:
+    /// `frame.drawn.add("scene", drawn)`, under the name the pass is timed
+    /// by. The overlay shows it and `--bench` prints it. A chapter that
+    /// counts nothing shows no counts.
+    pub drawn: &'a DrawCounts,
 }
 
 impl Frame<'_> {
@@ -296,10 +302,22 @@ pub trait Chapter: Sized + 'static {
     fn reset_camera(&mut self, _view: usize) {}
 
     /// The camera the learner flies, for chapters that have one: the
-    /// overlay shows where it is, and tests move it.
+    /// overlay shows where it is, `--camera` puts it somewhere, and tests
+    /// move it.
     fn camera_mut(&mut self) -> Option<&mut Camera> {
         None
     }
+
+    /// Called once by every runner (window, `--screenshot`, `--bench`, a
+    /// page), after the view is chosen and `--camera` has placed the camera,
+    /// before the first frame: whatever the chapter's flags change about
+    /// where that frame starts happens here, since a headless picture never
+    /// calls [`Chapter::update`]. `--walk` puts the eye on the ground under
+    /// it, as the first walking frame would. `camera_placed` says whether
+    /// `--camera` put the camera where it is: a camera that follows
+    /// something (chapter 08's car) then stops following, as it does when
+    /// the learner takes the controls.
+    fn before_first_frame(&mut self, _camera_placed: bool) {}
 
     /// Interactive input, once per frame before `render`; `dt` is the real
     /// frame time in seconds. Never called when rendering headless.
@@ -337,6 +355,25 @@ pub fn create_prepared<C: Chapter>(
     let mut chapter = C::new(gpu, target, prepared)?;
     chapter.apply_flags(gpu, flags)?;
     Ok(chapter)
+}
+
+/// Puts a chapter where its first frame starts, the same way in every
+/// runner: `view` (its settings, and a preset's camera), then `camera`
+/// (`--camera`) over it, then [`Chapter::before_first_frame`]. A chapter
+/// with no camera refuses `--camera`.
+pub fn start<C: Chapter>(chapter: &mut C, view: usize, camera: Option<CameraPlace>) -> Result<(), UsageError> {
+    chapter.select_view(view);
+    if let Some(place) = camera {
+        let camera = chapter.camera_mut().ok_or_else(|| {
+            UsageError(format!(
+                "--camera {place}: the {} chapter has no camera to place (it draws from a fixed or following viewpoint)",
+                C::NAME
+            ))
+        })?;
+        place.put(camera);
+    }
+    chapter.before_first_frame(camera.is_some());
+    Ok(())
 }
 
 /// Looks a view up by name.

@@ -69,7 +69,8 @@ fn run_headless<C: Chapter>(args: &Args) -> anyhow::Result<()> {
     let gpu = Gpu::headless(needs)?;
     check_size(&gpu, args.size)?;
     let time = args.time.unwrap_or(C::SNAPSHOT_TIME);
-    let request = |view| RenderRequest { width: args.size.width, height: args.size.height, time, view };
+    let request =
+        |view| RenderRequest { width: args.size.width, height: args.size.height, time, view, camera: args.camera };
 
     if let Some(path) = &args.screenshot {
         let image = headless::render_image_with::<C>(&gpu, &request(args.view_index::<C>()), &args.chapter_flags)?;
@@ -96,6 +97,7 @@ fn run_headless<C: Chapter>(args: &Args) -> anyhow::Result<()> {
         };
         let mut notes = Vec::new();
         let mut medians = Vec::new();
+        let mut triangles = Vec::new();
         for view in views {
             let report = headless::bench::<C>(&gpu, &request(view), frames, &args.chapter_flags)?;
             medians.push((report.view, report.frame.median));
@@ -109,6 +111,7 @@ fn run_headless<C: Chapter>(args: &Args) -> anyhow::Result<()> {
             let extra = if report.stats.is_empty() { String::new() } else { format!("; {}", report.stats) };
             notes.push(format!("- {}: setup (`Chapter::new`) {:.0} ms{extra}", report.view, report.setup_ms));
             notes.push(format!("- {}: {}", report.view, report.memory.summary()));
+            triangles.extend(report.drawn.iter().map(|count| (report.view, *count)));
         }
         if args.view.is_none() {
             let (file, edit) = headless::edit_to_frame::<C>(&gpu, &request(0), 5, &args.chapter_flags)?;
@@ -119,6 +122,9 @@ fn run_headless<C: Chapter>(args: &Args) -> anyhow::Result<()> {
             ));
         }
         println!("\n{}", notes.join("\n"));
+        if !triangles.is_empty() {
+            print_triangles(&triangles);
+        }
         let baseline = C::BENCH_BASELINE.and_then(|name| medians.iter().find(|(view, _)| *view == name));
         if let Some(&(name, base)) = baseline {
             println!("\nEach view's median frame against `{name}`'s:\n");
@@ -130,4 +136,18 @@ fn run_headless<C: Chapter>(args: &Args) -> anyhow::Result<()> {
         }
     }
     Ok(())
+}
+
+/// The bench's table of what each view drew, pass by pass, in the last
+/// measured frame: draw calls and triangles, as the chapter counted them
+/// while recording (`Frame::drawn`).
+#[cfg(not(target_arch = "wasm32"))]
+fn print_triangles(counts: &[(&str, crate::PassCount)]) {
+    use crate::draw_counts::thousands;
+    println!("\nTriangles drawn in a frame, pass by pass, counted from the draws recorded:\n");
+    println!("| view | pass | draws | triangles |");
+    println!("|---|---|---:|---:|");
+    for (view, count) in counts {
+        println!("| {view} | {} | {} | {} |", count.pass, count.drawn.draws, thousands(count.drawn.triangles));
+    }
 }

@@ -8,18 +8,20 @@ use anyhow::{Context as _, bail};
 
 use crate::chapter::FlagValues;
 use crate::memory::{Growth, MemoryUse};
-use crate::{Chapter, Frame, Gpu, PassTimer, Stats, Target};
+use crate::{CameraPlace, Chapter, DrawCounts, Frame, Gpu, PassCount, PassTimer, Stats, Target};
 
 /// Offscreen pictures are 8-bit RGBA with sRGB encoding, like a PNG.
 pub const OFFSCREEN_FORMAT: wgpu::TextureFormat = wgpu::TextureFormat::Rgba8UnormSrgb;
 
-/// What to render: size, scene time and view.
+/// What to render: size, scene time, view, and where to look from.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct RenderRequest {
     pub width: u32,
     pub height: u32,
     pub time: f32,
     pub view: usize,
+    /// `--camera`: a place that replaces the view's camera; `None` keeps it.
+    pub camera: Option<CameraPlace>,
 }
 
 /// A texture to render into instead of a window.
@@ -160,7 +162,8 @@ pub fn read_texture(gpu: &Gpu, texture: &wgpu::Texture) -> anyhow::Result<image:
 }
 // ANCHOR_END: readback
 
-/// Records and submits one frame of `chapter` into `target`.
+/// Records and submits one frame of `chapter` into `target`; returns what
+/// each pass drew, as the chapter counted it.
 pub fn draw_frame<C: Chapter>(
     gpu: &Gpu,
     chapter: &mut C,
@@ -168,11 +171,13 @@ pub fn draw_frame<C: Chapter>(
     time: f32,
     view: usize,
     timer: &PassTimer,
-) {
+) -> Vec<PassCount> {
     let mut encoder = gpu.device.create_command_encoder(&wgpu::CommandEncoderDescriptor { label: Some(C::NAME) });
-    chapter.render(gpu, &mut Frame { encoder: &mut encoder, target, time, view, timer });
+    let drawn = DrawCounts::new();
+    chapter.render(gpu, &mut Frame { encoder: &mut encoder, target, time, view, timer, drawn: &drawn });
     timer.resolve(&mut encoder);
     gpu.queue.submit([encoder.finish()]);
+    drawn.take()
 }
 
 /// Renders one picture of an existing chapter instance at its target size.
@@ -188,6 +193,15 @@ pub fn capture<C: Chapter>(
     read_texture(gpu, &offscreen.texture)
 }
 
+/// Makes chapter `C` for `request`'s size with `flags`, and starts it as
+/// every runner does ([`crate::chapter::start`]: the view, the camera).
+pub fn started<C: Chapter>(gpu: &Gpu, request: &RenderRequest, flags: &FlagValues) -> anyhow::Result<C> {
+    let target = Target { format: OFFSCREEN_FORMAT, width: request.width, height: request.height };
+    let mut chapter = crate::chapter::create::<C>(gpu, target, flags)?;
+    crate::chapter::start(&mut chapter, request.view, request.camera)?;
+    Ok(chapter)
+}
+
 /// Creates the chapter offscreen and renders one picture.
 pub fn render_image<C: Chapter>(gpu: &Gpu, request: &RenderRequest) -> anyhow::Result<image::RgbaImage> {
     render_image_with::<C>(gpu, request, &FlagValues::default())
@@ -200,8 +214,7 @@ pub fn render_image_with<C: Chapter>(
     flags: &FlagValues,
 ) -> anyhow::Result<image::RgbaImage> {
     let target = Target { format: OFFSCREEN_FORMAT, width: request.width, height: request.height };
-    let mut chapter = crate::chapter::create::<C>(gpu, target, flags)?;
-    chapter.select_view(request.view);
+    let mut chapter = started::<C>(gpu, request, flags)?;
     capture(gpu, &mut chapter, target, request.time, request.view)
 }
 
@@ -221,6 +234,9 @@ pub struct BenchReport {
     pub setup_ms: f64,
     /// The chapter's own figures ([`Chapter::stats`]).
     pub stats: String,
+    /// What each pass drew in the last measured frame, as the chapter
+    /// counted it (empty for a chapter that counts nothing).
+    pub drawn: Vec<PassCount>,
     /// Memory at the end of the first and second thirds of the measured
     /// frames and after the last.
     pub memory: Growth,
@@ -238,7 +254,7 @@ pub fn bench<C: Chapter>(
     let setup = Instant::now();
     let mut chapter = crate::chapter::create::<C>(gpu, target, flags)?;
     let setup_ms = setup.elapsed().as_secs_f64() * 1e3;
-    chapter.select_view(request.view);
+    crate::chapter::start(&mut chapter, request.view, request.camera)?;
     let offscreen = Offscreen::new(&gpu.device, target);
     let timer = PassTimer::new(&gpu.device, 16);
 
@@ -251,12 +267,13 @@ pub fn bench<C: Chapter>(
     let third = frames / 3;
     let reading_at = [3 + third, 3 + 2 * third, 3 + 3 * third];
     let mut memory = [MemoryUse::default(); 3];
+    let mut drawn = Vec::new();
     for i in 0..frames + 3 {
         if let Some(k) = reading_at.iter().position(|&at| at == i) {
             memory[k] = MemoryUse::now(&gpu.device);
         }
         let start = Instant::now();
-        draw_frame(gpu, &mut chapter, &offscreen.view, request.time, request.view, &timer);
+        drawn = draw_frame(gpu, &mut chapter, &offscreen.view, request.time, request.view, &timer);
         gpu.device.poll(wgpu::PollType::wait_indefinitely()).context("waiting for the frame")?;
         let elapsed = start.elapsed().as_secs_f64() * 1e3;
         let timed = timer.read(gpu);
@@ -290,6 +307,7 @@ pub fn bench<C: Chapter>(
         cpu: summarise(cpu),
         setup_ms,
         stats: chapter.stats(gpu),
+        drawn,
         memory,
     })
 }
@@ -308,8 +326,7 @@ pub fn edit_to_frame<C: Chapter>(
     flags: &FlagValues,
 ) -> anyhow::Result<(&'static str, Stats)> {
     let target = Target { format: OFFSCREEN_FORMAT, width: request.width, height: request.height };
-    let mut chapter = crate::chapter::create::<C>(gpu, target, flags)?;
-    chapter.select_view(request.view);
+    let mut chapter = started::<C>(gpu, request, flags)?;
     let offscreen = Offscreen::new(&gpu.device, target);
     let file = crate::editor::main_file::<C>(gpu).context("the chapter builds no pipeline from WGSL")?;
     let mut editor = crate::editor::ShaderEditor::new();

@@ -65,10 +65,12 @@ impl MeshData {
 }
 
 impl Mesh {
-    /// Binds the buffers and draws every triangle, `instances` times.
-    pub fn draw(&self, pass: &mut wgpu::RenderPass<'_>, instances: std::ops::Range<u32>) {
+    /// Binds the buffers and draws every triangle, `instances` times;
+    /// returns what that drew, for the frame's counts.
+    pub fn draw(&self, pass: &mut wgpu::RenderPass<'_>, instances: std::ops::Range<u32>) -> crate::Drawn {
         pass.set_vertex_buffer(0, self.vertex_buffer.slice(..));
         pass.set_index_buffer(self.index_buffer.slice(..), wgpu::IndexFormat::Uint32);
-        pass.draw_indexed(0..self.index_count, 0, instances);
+        pass.draw_indexed(0..self.index_count, 0, instances.clone());
+        crate::Drawn::triangle_list(0..self.index_count, instances)
     }
 }

@@ -6,8 +6,9 @@ use std::collections::VecDeque;
 
 use winit::window::Window;
 
+use crate::draw_counts::{thousands, total};
 use crate::memory::MemoryUse;
-use crate::{Chapter, Gpu};
+use crate::{CameraPlace, Chapter, Gpu, PassCount};
 
 /// Keys the window runner handles for every chapter (its `window_event`),
 /// as the key help lists them after the chapter's own.
@@ -147,6 +148,33 @@ impl FrameHistory {
     }
 }
 
+/// Puts `text` on the clipboard: the system's on the desktop (egui-winit
+/// hands it over), and in a page the browser's too (egui-winit keeps it
+/// to itself there).
+fn copy(ctx: &egui::Context, text: String) {
+    #[cfg(target_arch = "wasm32")]
+    crate::web::copy_text(&text);
+    ctx.copy_text(text);
+}
+
+/// One line per pass: the triangles and draw calls of the last frame, and
+/// their sum when there are several passes.
+fn triangle_lines(ui: &mut egui::Ui, drawn: &[PassCount]) {
+    if drawn.is_empty() {
+        return;
+    }
+    let line = |what: &str, count: crate::Drawn| {
+        let calls = if count.draws == 1 { "draw" } else { "draws" };
+        format!("{what}: {} triangles, {} {calls}", thousands(count.triangles), count.draws)
+    };
+    let mut text: Vec<String> = drawn.iter().map(|p| line(p.pass, p.drawn)).collect();
+    if drawn.len() > 1 {
+        text.push(line("all passes", total(drawn)));
+    }
+    ui.small(text.join("\n"))
+        .on_hover_text("counted from the draws each pass recorded in the last frame (--bench prints the same)");
+}
+
 /// The overlay's panel: what it shows and edits, borrowed for one frame.
 pub struct Panel<'a, C: Chapter> {
     pub chapter: &'a mut C,
@@ -161,6 +189,8 @@ pub struct Panel<'a, C: Chapter> {
     pub status: &'a str,
     pub adapter: String,
     pub memory: MemoryUse,
+    /// What each pass of the last frame drew, as the chapter counted it.
+    pub drawn: &'a [PassCount],
 }
 
 impl<C: Chapter> Panel<'_, C> {
@@ -192,16 +222,19 @@ impl<C: Chapter> Panel<'_, C> {
                 self.chapter.select_view(*self.view);
             }
             ui.small(C::VIEWS[*self.view].about);
-            if let Some(c) = self.chapter.camera_mut() {
+            triangle_lines(ui, self.drawn);
+            if let Some(camera) = self.chapter.camera_mut() {
+                // The text `--camera` takes, so what is shown can be typed
+                // or pasted back: the same place in any run of the chapter.
+                let flag = format!("--camera {}", CameraPlace::of(camera));
                 ui.horizontal(|ui| {
-                    ui.monospace(format!(
-                        "eye {:.1} {:.1} {:.1}  yaw {:.0}° pitch {:.0}°",
-                        c.position.x,
-                        c.position.y,
-                        c.position.z,
-                        c.yaw.to_degrees(),
-                        c.pitch.to_degrees()
-                    ));
+                    ui.monospace(&flag).on_hover_text(
+                        "where the eye is (x, y, z in metres) and where it looks (yaw, pitch in degrees), \
+                         as the --camera flag takes it",
+                    );
+                    if ui.small_button("copy").on_hover_text("copy this flag, to look from here again").clicked() {
+                        copy(ui.ctx(), flag);
+                    }
                 });
                 if ui.button("reset camera").on_hover_text("back to where this view starts").clicked() {
                     self.chapter.reset_camera(*self.view);

@@ -80,6 +80,17 @@ impl PassTimer {
         })
     }
 
+    /// Timestamp writes for the next compute pass, labelled for the report
+    /// like a render pass (chapter 05's rock culling).
+    pub fn compute_pass(&self, label: &'static str) -> Option<wgpu::ComputePassTimestampWrites<'_>> {
+        let writes = self.pass(label)?;
+        Some(wgpu::ComputePassTimestampWrites {
+            query_set: writes.query_set,
+            beginning_of_pass_write_index: writes.beginning_of_pass_write_index,
+            end_of_pass_write_index: writes.end_of_pass_write_index,
+        })
+    }
+
     /// Timestamp writes for pass `index` of a chain of `count` passes that
     /// is reported as one, `label`: the first pass writes the beginning and
     /// the last the end, so the report shows the whole chain (a bloom's

@@ -251,3 +251,26 @@ pub fn show_editor_state(editor: &crate::editor::ShaderEditor) {
         state("editToFrameMs", format!("{:.1}", took.as_secs_f64() * 1000.0));
     }
 }
+
+/// Puts `text` on the browser's clipboard (`navigator.clipboard.writeText`),
+/// where the page may: a browser without it, or one that refuses (no
+/// secure context, no recent click), leaves the clipboard as it was and
+/// says so on the console, never more.
+pub fn copy_text(text: &str) {
+    let Some(window) = web_sys::window() else { return };
+    let get = |target: &wasm_bindgen::JsValue, key: &str| js_sys::Reflect::get(target, &key.into()).ok();
+    let clipboard = get(&window, "navigator").and_then(|n| get(&n, "clipboard")).filter(|c| !c.is_undefined());
+    let Some(clipboard) = clipboard else {
+        log::warn!("this browser gives the page no clipboard: copy the text from the overlay");
+        return;
+    };
+    let write = get(&clipboard, "writeText").and_then(|f| f.dyn_into::<js_sys::Function>().ok());
+    let written = write.and_then(|write| write.call1(&clipboard, &text.into()).ok());
+    if let Some(promise) = written.and_then(|p| p.dyn_into::<js_sys::Promise>().ok()) {
+        wasm_bindgen_futures::spawn_local(async move {
+            if wasm_bindgen_futures::JsFuture::from(promise).await.is_err() {
+                log::warn!("the browser refused to copy to the clipboard: copy the text from the overlay");
+            }
+        });
+    }
+}

@@ -28,7 +28,7 @@ use crate::overlay::{FrameHistory, Overlay, Panel};
 use crate::probe::{self, Probe};
 use crate::shader;
 use crate::surface::surface_config;
-use crate::{Chapter, Frame, Gpu, Input, PassTimer, Target};
+use crate::{Chapter, DrawCounts, Frame, Gpu, Input, PassCount, PassTimer, Target};
 
 /// Opens a window and runs chapter `C` until it is closed.
 #[cfg(not(target_arch = "wasm32"))]
@@ -119,6 +119,8 @@ struct Running<C: Chapter> {
     /// Frames drawn, and frames skipped because the window had no area.
     drawn: u64,
     skipped: u64,
+    /// What each pass of the last frame drew, for the overlay.
+    last_counts: Vec<PassCount>,
     probe: Probe,
     /// Whether the GPU has finished the last frame submitted (browser only).
     last_frame_done: Arc<AtomicBool>,
@@ -341,7 +343,7 @@ impl Opening {
             }
             made => made?,
         };
-        chapter.select_view(view);
+        crate::chapter::start(&mut chapter, view, args.camera)?;
         let overlay = Overlay::new(&window, &gpu, overlay_format);
         let mut editor = ShaderEditor::new();
         let main_shader = crate::editor::main_file::<C>(&gpu);
@@ -387,6 +389,7 @@ impl Opening {
             status,
             drawn: 0,
             skipped: 0,
+            last_counts: Vec::new(),
             probe: Probe::new(args.probe.clone()),
             last_frame_done: Arc::new(AtomicBool::new(true)),
             memory: MemoryUse::default(),
@@ -579,10 +582,19 @@ impl<C: Chapter> Running<C> {
             .create_view(&wgpu::TextureViewDescriptor { format: Some(self.overlay_format), ..Default::default() });
         let mut encoder = self.gpu.device.create_command_encoder(&Default::default());
         let timer = PassTimer::off();
+        let counts = DrawCounts::new();
         self.chapter.render(
             &self.gpu,
-            &mut Frame { encoder: &mut encoder, target: &scene_view, time: self.time, view: self.view, timer: &timer },
+            &mut Frame {
+                encoder: &mut encoder,
+                target: &scene_view,
+                time: self.time,
+                view: self.view,
+                timer: &timer,
+                drawn: &counts,
+            },
         );
+        self.last_counts = counts.take();
         let size = [self.config.width, self.config.height];
         let can_save = self.watcher.is_some();
         let can_share = cfg!(target_arch = "wasm32");
@@ -602,6 +614,7 @@ impl<C: Chapter> Running<C> {
                 status: &self.status,
                 adapter: gpu.adapter.get_info().name,
                 memory: self.memory,
+                drawn: &self.last_counts,
             };
             let hidden = self.overlay_hidden;
             overlay.draw(gpu, &mut encoder, &overlay_view, size, window, |ctx| {

@@ -12,7 +12,7 @@
 use std::process::ExitCode;
 
 use common::headless::{Offscreen, draw_frame, read_texture};
-use common::{Camera, Chapter, Gpu, GpuNeeds, PassTimer, Target, Tolerance, View, anyhow, image};
+use common::{Camera, Chapter, Gpu, GpuNeeds, PassCount, PassTimer, Target, Tolerance, View, anyhow, image};
 
 /// Every chapter, in book order: its type, the part of the book it is in,
 /// the view the README shows, and what it teaches in a line (the README's
@@ -32,7 +32,7 @@ pub fn chapters() -> Vec<Record> {
         record::<terrain::TerrainChapter>(
             &MARS,
             "default",
-            "improved Perlin noise, fBm, chunked height-map mesh, seamless normals, frustum culling",
+            "improved Perlin noise, fBm, seamless normals, frustum culling, a quadtree of levels of detail that morph into each other (CDLOD)",
         ),
         record::<fog::FogChapter>(
             &MARS,
@@ -42,7 +42,7 @@ pub fn chapters() -> Vec<Record> {
         record::<instancing::InstancingChapter>(
             &MARS,
             "default",
-            "one instanced draw for up to a million rocks, against one draw per rock; the Mars plain so far",
+            "one instanced draw for up to a million rocks, against one draw per rock; the first compute shader culls and grades them, with indirect draws; the Mars plain so far",
         ),
         record::<skybox::SkyboxChapter>(
             &MARS,
@@ -215,7 +215,17 @@ pub trait AnyChapter {
     fn set_camera(&mut self, camera: Camera);
     /// Renders `view` at `time` offscreen; returns the picture and the
     /// passes it drew (timed on the GPU, then on the CPU).
-    fn render(&mut self, gpu: &Gpu, view: usize, time: f32) -> anyhow::Result<(image::RgbaImage, Vec<&'static str>)>;
+    fn render(&mut self, gpu: &Gpu, view: usize, time: f32) -> anyhow::Result<(image::RgbaImage, Vec<&'static str>)> {
+        self.render_counted(gpu, view, time).map(|(image, passes, _)| (image, passes))
+    }
+    /// [`AnyChapter::render`], and what each pass drew as the chapter
+    /// counted it (`Frame::drawn`).
+    fn render_counted(
+        &mut self,
+        gpu: &Gpu,
+        view: usize,
+        time: f32,
+    ) -> anyhow::Result<(image::RgbaImage, Vec<&'static str>, Vec<PassCount>)>;
 }
 
 struct Instance<C: Chapter> {
@@ -242,13 +252,18 @@ impl<C: Chapter> AnyChapter for Instance<C> {
         }
     }
 
-    fn render(&mut self, gpu: &Gpu, view: usize, time: f32) -> anyhow::Result<(image::RgbaImage, Vec<&'static str>)> {
+    fn render_counted(
+        &mut self,
+        gpu: &Gpu,
+        view: usize,
+        time: f32,
+    ) -> anyhow::Result<(image::RgbaImage, Vec<&'static str>, Vec<PassCount>)> {
         debug_assert!(view < C::VIEWS.len());
         let offscreen = Offscreen::new(&gpu.device, self.target);
         let timer = PassTimer::off();
-        draw_frame(gpu, &mut self.chapter, &offscreen.view, time, view, &timer);
+        let counted = draw_frame(gpu, &mut self.chapter, &offscreen.view, time, view, &timer);
         let mut passes = timer.take_labels();
         passes.extend(timer.take_cpu().into_iter().map(|(label, _)| label));
-        Ok((read_texture(gpu, &offscreen.texture)?, passes))
+        Ok((read_texture(gpu, &offscreen.texture)?, passes, counted))
     }
 }

@@ -33,6 +33,8 @@ pub fn all() -> Vec<(&'static str, String)> {
         ("lod-morph.svg", terrain::lod_morph()),
         ("fog-curve.svg", fog::fog_curve()),
         ("instancing-buffers.svg", instancing::instancing_buffers()),
+        ("pixel-quads.svg", instancing::pixel_quads()),
+        ("rock-culling.svg", instancing::culling_flow()),
         ("sun-path.svg", skybox::sun_path()),
         ("mirrored-camera.svg", water::mirrored_camera()),
         ("projective-texturing.svg", water::projective_texturing()),

@@ -1,6 +1,6 @@
 //! The book's bench tables (`book/src/bench/<chapter>.md`, written by
 //! `cargo xtask bench`) must describe the chapter as it is: every view in
-//! them, and no pass a view no longer draws.
+//! them, and no pass a view no longer draws, timed or counted.
 
 use std::path::{Path, PathBuf};
 
@@ -27,6 +27,23 @@ pub fn rows(table: &str) -> Vec<(String, Option<String>)> {
             let gpu = what.strip_prefix("GPU: ").and_then(|p| p.strip_suffix(" pass"));
             let pass = gpu.or_else(|| what.strip_prefix("CPU: ")).map(str::to_string);
             Some((view.to_string(), pass))
+        })
+        .collect()
+}
+
+/// The rows of a bench table's triangles table (`| view | pass | draws |
+/// triangles |`, which `--bench` prints after its notes) as (view, pass).
+pub fn triangle_rows(table: &str) -> Vec<(String, String)> {
+    table
+        .lines()
+        .filter_map(|line| {
+            let cells: Vec<&str> = line.split('|').map(str::trim).collect();
+            // | view | pass | draws | triangles |  → ["", view, pass, draws, triangles, ""]
+            if cells.len() != 6 || cells[1] == "view" || cells[1].starts_with("---") {
+                return None;
+            }
+            cells[3].parse::<u32>().ok()?;
+            Some((cells[1].to_string(), cells[2].to_string()))
         })
         .collect()
 }
@@ -63,6 +80,15 @@ pub fn check_table(path: &str, table: &str, chapter: &str, views: &[View], drawn
         {
             problems
                 .push(format!("{path}: `{view}` no longer draws a `{pass}` pass (it draws {passes:?}); {regenerate}"));
+        }
+    }
+    for (view, pass) in triangle_rows(table) {
+        let Some((_, passes)) = drawn.iter().find(|(v, _)| *v == view) else { continue };
+        if !passes.contains(&pass.as_str()) {
+            problems.push(format!(
+                "{path}: `{view}` counts triangles of a `{pass}` pass it no longer draws (it draws {passes:?}); \
+                 {regenerate}"
+            ));
         }
     }
     problems

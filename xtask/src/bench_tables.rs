@@ -48,9 +48,15 @@ pub fn parse_size_runs(saved: &str, file: &Path) -> anyhow::Result<Vec<SizeRun>>
     Ok(runs)
 }
 
+/// The size whose triangle count the sizes table gives: the one the
+/// course's frame budget is set at (1920 × 1080).
+const TRIANGLES_AT: (u32, u32) = (1920, 1080);
+
 /// The table of frame rates at [`SEED_SIZES`]: one row per chapter (in the
 /// order of `runs`), one column per size, each cell the median frame as the
-/// bench printed it and the frames per second it makes. Returns the
+/// bench printed it and the frames per second it makes, and a last column
+/// with the triangles a frame drew at [`TRIANGLES_AT`] (all passes, as the
+/// bench counted them; "—" for a run from before it counted). Returns the
 /// adapter the runs name ("NVIDIA H200 (Vulkan, DiscreteGpu)") and the
 /// markdown table.
 pub fn sizes_table(runs: &[SizeRun]) -> anyhow::Result<(String, String)> {
@@ -60,12 +66,14 @@ pub fn sizes_table(runs: &[SizeRun]) -> anyhow::Result<(String, String)> {
             chapters.push(&run.chapter);
         }
     }
-    let heading: Vec<String> = SEED_SIZES.iter().map(|(w, h)| format!("{w} × {h}")).collect();
-    let mut table = format!("| chapter | {} |\n|---|{}\n", heading.join(" | "), "---:|".repeat(SEED_SIZES.len()));
+    let mut heading: Vec<String> = SEED_SIZES.iter().map(|(w, h)| format!("{w} × {h}")).collect();
+    heading.push(format!("triangles at {} × {}", TRIANGLES_AT.0, TRIANGLES_AT.1));
+    let mut table = format!("| chapter | {} |\n|---|{}\n", heading.join(" | "), "---:|".repeat(heading.len()));
     let mut adapter = None;
     for chapter in chapters {
         let mut cells = Vec::new();
         let mut view = "";
+        let mut triangles = None;
         for (width, height) in SEED_SIZES {
             let size = format!("{width}x{height}");
             let run = runs
@@ -90,7 +98,11 @@ pub fn sizes_table(runs: &[SizeRun]) -> anyhow::Result<(String, String)> {
             let ms: f64 = median.parse().with_context(|| format!("{what}: median `{median}` is not a number"))?;
             ensure!(ms > 0.0, "{what}: median frame {median} ms");
             cells.push(format!("{median} ms, {:.1} FPS", 1000.0 / ms));
+            if (width, height) == TRIANGLES_AT {
+                triangles = frame_triangles(&run.printed, view).with_context(|| what.clone())?;
+            }
         }
+        cells.push(triangles.map_or_else(|| "—".to_string(), thousands));
         table.push_str(&format!("| {chapter} (`{view}`) | {} |\n", cells.join(" | ")));
     }
     Ok((adapter.context("no runs")?, table))
@@ -105,6 +117,44 @@ fn frame_median<'a>(printed: &'a str, view: &str) -> anyhow::Result<&'a str> {
         .find(|cells| cells.len() == 7 && cells[1] == view && cells[2] == "frame (CPU+GPU)")
         .map(|cells| cells[4])
         .context("no `frame (CPU+GPU)` row for the view: did the run fail?")
+}
+
+/// The line the bench prints above its table of triangles, pass by pass
+/// (`common`'s `cli.rs`): `| view | pass | draws | triangles |`.
+const TRIANGLES_HEADING: &str = "Triangles drawn in a frame";
+
+/// The triangles `view` drew in a frame, all its passes together, from the
+/// bench's table of them; `None` when the output has no rows for it (a run
+/// from before the bench counted, or a chapter that counts nothing).
+fn frame_triangles(printed: &str, view: &str) -> anyhow::Result<Option<u64>> {
+    let Some((_, table)) = printed.split_once(TRIANGLES_HEADING) else { return Ok(None) };
+    let mut total = None;
+    for line in table.lines().skip(1).skip_while(|l| l.trim().is_empty()).take_while(|l| l.starts_with('|')) {
+        let cells: Vec<&str> = line.split('|').map(str::trim).collect();
+        // | view | pass | draws | triangles |  → ["", view, pass, draws, triangles, ""]
+        if cells.len() != 6 || cells[1] != view {
+            continue;
+        }
+        let count: u64 = cells[4]
+            .replace(',', "")
+            .parse()
+            .with_context(|| format!("`{}` in the table of triangles is not a count", cells[4]))?;
+        *total.get_or_insert(0) += count;
+    }
+    Ok(total)
+}
+
+/// `n` with a comma between thousands, as the bench prints counts.
+fn thousands(n: u64) -> String {
+    let digits = n.to_string();
+    let mut text = String::new();
+    for (i, digit) in digits.chars().enumerate() {
+        if i > 0 && (digits.len() - i).is_multiple_of(3) {
+            text.push(',');
+        }
+        text.push(digit);
+    }
+    text
 }
 
 /// The machine a saved run was made on, from the `gpu.txt` that
@@ -166,6 +216,12 @@ mod tests {
     /// Two chapters at the three sizes, as the script saves them (a
     /// second view's row in the first run, which must not be read).
     fn sample() -> String {
+        sample_with_triangles(false)
+    }
+
+    /// [`sample`], the fog's runs with the bench's table of triangles
+    /// (two passes) after the notes, as it prints it, and a table after it.
+    fn sample_with_triangles(counted: bool) -> String {
         let mut saved = String::new();
         for (chapter, view, medians) in
             [("triangle", "default", ["0.50", "1.00", "2.00"]), ("fog", "day", ["8", "10", "40"])]
@@ -178,6 +234,16 @@ mod tests {
                      | {view} | frame (CPU+GPU) | 0.10 | {median} | 99.00 |\n\
                      | {view} | GPU: scene pass | 0.01 | 0.02 | 0.03 |\n\n- {view}: setup (`Chapter::new`) 10 ms\n"
                 ));
+                if counted && chapter == "fog" {
+                    let scene = if *w == 1920 { "1,234,567" } else { "7" };
+                    saved.push_str(&format!(
+                        "\nTriangles drawn in a frame, pass by pass, counted from the draws recorded:\n\n\
+                         | view | pass | draws | triangles |\n|---|---|---:|---:|\n\
+                         | {view} | scene | 12 | {scene} |\n| {view} | tone map | 1 | 1 |\n\n\
+                         Each view's median frame against `x`'s:\n\n| view | median frame ms | × `x` |\n\
+                         |---|---:|---:|\n| {view} | 2.00 | 1.00 |\n"
+                    ));
+                }
             }
         }
         saved
@@ -190,14 +256,34 @@ mod tests {
         let (adapter, table) = sizes_table(&runs).unwrap();
         assert_eq!(adapter, "Some GPU (Vulkan, DiscreteGpu)");
         let lines: Vec<&str> = table.lines().collect();
-        assert_eq!(lines[0], "| chapter | 1280 × 720 | 1920 × 1080 | 2560 × 1440 |");
-        assert_eq!(lines[1], "|---|---:|---:|---:|");
+        assert_eq!(lines[0], "| chapter | 1280 × 720 | 1920 × 1080 | 2560 × 1440 | triangles at 1920 × 1080 |");
+        assert_eq!(lines[1], "|---|---:|---:|---:|---:|");
         assert_eq!(
             lines[2],
-            "| triangle (`default`) | 0.50 ms, 2000.0 FPS | 1.00 ms, 1000.0 FPS | 2.00 ms, 500.0 FPS |"
+            "| triangle (`default`) | 0.50 ms, 2000.0 FPS | 1.00 ms, 1000.0 FPS | 2.00 ms, 500.0 FPS | — |"
         );
-        assert_eq!(lines[3], "| fog (`day`) | 8 ms, 125.0 FPS | 10 ms, 100.0 FPS | 40 ms, 25.0 FPS |");
+        assert_eq!(lines[3], "| fog (`day`) | 8 ms, 125.0 FPS | 10 ms, 100.0 FPS | 40 ms, 25.0 FPS | — |");
         assert_eq!(lines.len(), 4);
+    }
+
+    /// The last column adds up the passes of the run at 1920 × 1080 (the
+    /// sample's 1,234,567 + 1, worked by hand), not another size's, and
+    /// reads no row of the tables around it.
+    #[test]
+    fn the_sizes_table_gives_the_triangles_at_the_budget_size() {
+        let runs = parse_size_runs(&sample_with_triangles(true), Path::new("sample.txt")).unwrap();
+        let (_, table) = sizes_table(&runs).unwrap();
+        let lines: Vec<&str> = table.lines().collect();
+        assert!(lines[2].ends_with("| — |"), "the triangle chapter counted nothing: {}", lines[2]);
+        assert_eq!(lines[3], "| fog (`day`) | 8 ms, 125.0 FPS | 10 ms, 100.0 FPS | 40 ms, 25.0 FPS | 1,234,568 |");
+        let broken = sample_with_triangles(true).replace("| 1,234,567 |", "| many |");
+        let runs = parse_size_runs(&broken, Path::new("sample.txt")).unwrap();
+        let error = format!("{:#}", sizes_table(&runs).err().unwrap());
+        assert!(error.contains("fog --view day --size 1920x1080") && error.contains("`many`"), "{error}");
+        assert_eq!(
+            (thousands(0), thousands(999), thousands(1000), thousands(12345678)),
+            ("0".into(), "999".into(), "1,000".into(), "12,345,678".into())
+        );
     }
 
     #[test]

@@ -4,8 +4,8 @@
 
 use common::wgpu::util::DeviceExt as _;
 use common::{
-    Chapter, Frame, Gpu, Preparation, Reloadable, ShaderError, Target, View, ViewRow, anyhow, egui, shader, views_of,
-    wgpu,
+    Chapter, Drawn, Frame, Gpu, Preparation, Reloadable, ShaderError, Target, View, ViewRow, anyhow, egui, shader,
+    views_of, wgpu,
 };
 
 use crate::pipeline::build_pipeline;
@@ -110,6 +110,8 @@ impl Chapter for Triangle {
         pass.set_pipeline(if self.settings.interpolate { &smooth } else { &flat });
         pass.set_vertex_buffer(0, self.vertices.slice(..));
         pass.draw(0..3, 0..1);
+        // Three vertices, one instance: one triangle, for the overlay's count.
+        frame.drawn.add("triangle", Drawn::triangle_list(0..3, 0..1));
     }
     // ANCHOR_END: render
 

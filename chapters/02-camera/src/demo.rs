@@ -6,7 +6,7 @@ use common::glam::{Mat4, Vec3};
 use common::texture::depth_view;
 use common::wgpu::util::DeviceExt as _;
 use common::{
-    Camera, Chapter, FlyController, Frame, Gpu, Input, Mesh, Preparation, Reloadable, ShaderError, Target, View,
+    Camera, Chapter, Drawn, FlyController, Frame, Gpu, Input, Mesh, Preparation, Reloadable, ShaderError, Target, View,
     ViewRow, anyhow, egui, fullscreen, primitives, shader, views_of, wgpu,
 };
 
@@ -321,18 +321,21 @@ impl Chapter for CameraChapter {
             pass.set_pipeline(pipeline);
             pass.set_bind_group(0, &self.camera_group, &[]);
             pass.set_bind_group(1, &self.object_group, &[0]);
-            self.ground_mesh.draw(&mut pass, 0..1);
+            // Each draw says what it drew: the overlay and the bench count triangles per pass.
+            let mut drawn = self.ground_mesh.draw(&mut pass, 0..1);
             for (i, object) in self.objects.iter().enumerate() {
                 let offset = (i as u32 + 1) * self.object_stride;
                 pass.set_bind_group(1, &self.object_group, &[offset]);
-                self.meshes[object.shape as usize].draw(&mut pass, 0..1);
+                drawn += self.meshes[object.shape as usize].draw(&mut pass, 0..1);
             }
+            frame.drawn.add("scene", drawn);
         }
         if matches!(display, Display::Depth | Display::DepthRaw) {
             let mut pass = fullscreen::pass(frame.encoder, frame.timer, "depth view", frame.target, None);
             pass.set_pipeline(&pipelines.depth_view);
             pass.set_bind_group(0, &self.depth_group, &[]);
             pass.draw(0..3, 0..1);
+            frame.drawn.add("depth view", Drawn::FULL_SCREEN);
         }
     }
     // ANCHOR_END: render

@@ -178,6 +178,10 @@ impl Chapter for TerrainChapter {
         Some(&mut self.camera)
     }
 
+    fn before_first_frame(&mut self, _camera_placed: bool) {
+        ground::first_frame(&mut self.camera, self.terrain.field(), self.movement);
+    }
+
     fn update(&mut self, input: &Input, dt: f32) {
         let field = self.terrain.field();
         ground::step(&self.controller, &mut self.camera, &mut self.movement, field, input, dt);
@@ -198,9 +202,10 @@ impl Chapter for TerrainChapter {
             if settings.from_above { overhead_camera(self.terrain.field(), self.target.aspect()) } else { self.camera };
         let (camera, sun) = (&self.camera, Sun::AFTERNOON);
         self.terrain.aim_seen_from(gpu, &mut self.viewpoint, camera, detail, sun, KEEP_ALL, &seen_from);
+        let drawn = frame.drawn;
         let mut pass = frame.scene_pass("terrain", SKY, &self.depth);
         pass.set_pipeline(&self.pipeline.get());
-        self.terrain.draw(&mut pass, &self.viewpoint);
+        drawn.add("terrain", self.terrain.draw(&mut pass, &self.viewpoint));
     }
     // ANCHOR_END: render
 

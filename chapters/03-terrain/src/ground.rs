@@ -72,6 +72,18 @@ pub fn keep_on_ground(camera: &mut Camera, field: &HeightField, movement: Moveme
 }
 // ANCHOR_END: keep_on_ground
 
+/// Where a terrain chapter's first frame starts, in every runner
+/// (`Chapter::before_first_frame`): walking (`--walk`), the eye stands on
+/// the ground under the place the view or `--camera` gave it, as the first
+/// walking frame would put it; flying, the camera stays exactly where it
+/// was placed, so that a picture may look from anywhere (under the ground
+/// too, which the window's first flying frame would lift).
+pub fn first_frame(camera: &mut Camera, field: &HeightField, movement: Movement) {
+    if movement == Movement::Walk {
+        keep_on_ground(camera, field, movement);
+    }
+}
+
 /// One frame of a terrain chapter's camera: [`WALK_KEY`] switches how the
 /// learner moves, the fly controller moves the camera, and the ground
 /// puts it back where it may be.

@@ -8,7 +8,7 @@ use std::sync::Arc;
 use common::chapter::uniform_entry;
 use common::glam::{Vec3, Vec4};
 use common::texture::depth_test;
-use common::{Camera, Gpu, ShaderError, ShaderFile, egui, wgpu};
+use common::{Camera, Drawn, Gpu, ShaderError, ShaderFile, egui, wgpu};
 
 use crate::chunks::Aabb;
 use crate::culling::Frustum;
@@ -311,18 +311,18 @@ impl TerrainRenderer {
 
     // ANCHOR: draw
     /// Binds group 0 and draws every patch the viewpoint's camera chose,
-    /// in one instanced call; returns how many patches.
-    pub fn draw(&self, pass: &mut wgpu::RenderPass<'_>, viewpoint: &Viewpoint) -> usize {
+    /// in one instanced call; returns what it drew.
+    pub fn draw(&self, pass: &mut wgpu::RenderPass<'_>, viewpoint: &Viewpoint) -> Drawn {
         let count = viewpoint.patches.len();
         if count == 0 {
-            return 0;
+            return Drawn::NOTHING;
         }
         self.bind(pass, viewpoint);
         let maps = &viewpoint.terrain.maps;
         pass.set_vertex_buffer(0, viewpoint.patch_buffer.slice(..(count * std::mem::size_of::<Patch>()) as u64));
         pass.set_index_buffer(maps.patch_indices.slice(..), wgpu::IndexFormat::Uint16);
         pass.draw_indexed(0..maps.patch_index_count, 0, 0..count as u32);
-        count
+        Drawn::counted(1, viewpoint.triangles())
     }
     // ANCHOR_END: draw
 

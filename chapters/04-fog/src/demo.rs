@@ -151,6 +151,10 @@ impl Chapter for FogChapter {
         Some(&mut self.camera)
     }
 
+    fn before_first_frame(&mut self, _camera_placed: bool) {
+        ground::first_frame(&mut self.camera, self.terrain.field(), self.movement);
+    }
+
     fn update(&mut self, input: &Input, dt: f32) {
         let field = self.terrain.field();
         ground::step(&self.controller, &mut self.camera, &mut self.movement, field, input, dt);
@@ -170,10 +174,11 @@ impl Chapter for FogChapter {
 
         // Clear to the fog colour: where there is no ground, the fog's
         // "infinitely far" is what shows.
+        let drawn = frame.drawn;
         let mut pass = frame.scene_pass("terrain", SKY, &self.depth);
         pass.set_pipeline(&self.pipeline.get());
         pass.set_bind_group(1, &self.fog_binding.group, &[]);
-        self.terrain.draw(&mut pass, &self.viewpoint);
+        drawn.add("terrain", self.terrain.draw(&mut pass, &self.viewpoint));
     }
     // ANCHOR_END: render
 

@@ -11,11 +11,12 @@ use common::{
 use fog::FogSettings;
 use terrain::ground::{self, Movement};
 use terrain::heightfield::{HeightField, TerrainSettings};
-use terrain::{Detail, KEEP_ALL, SKY, Sun, Viewpoint};
+use terrain::{KEEP_ALL, SKY, Sun};
 
-use crate::mars_plain::{DrawCalls, MarsPlain, Mode, Setup, plain_camera};
-use crate::rock_field::{MAX_ONE_PER_DRAW, RockInstance, SEED, rocks_on_map};
-use crate::rock_mesh::rock_mesh;
+use crate::cameras::plain_camera;
+use crate::mars_plain::{Culling, DrawCalls, MarsPlain, Mode, PlainViewpoint, RocksDrawn, Setup};
+use crate::rock_field::MAX_ONE_PER_DRAW;
+use crate::rock_scatter::{RockInstance, rocks_on_map};
 
 /// No view of this chapter places the camera (every one is a mode): this
 /// enum has no values.
@@ -31,32 +32,48 @@ impl CameraPreset {
 /// Every view, with the rocks it draws and how. The bench views leave the
 /// terrain out and draw every one of their rocks (the first of the buffer,
 /// nearest the start, not culled), so that their numbers are the rocks' alone.
-pub const VIEW_TABLE: [ViewRow<Setup, CameraPreset>; 9] = [
+pub const VIEW_TABLE: [ViewRow<Setup, CameraPreset>; 12] = [
     ViewRow::mode(
         "default",
-        "the Mars plain: terrain, fog and a million rocks over the whole map, the chunk groups in view drawn",
+        "the Mars plain: terrain, fog and a million rocks over the whole map, culled and graded rock by rock on the GPU",
         Setup::DEFAULT,
     ),
     ViewRow::mode(
-        "multi-draw",
-        "the same rocks, every visible group's draw in one indirect call",
-        Setup { mode: Mode::Indirect, ..Setup::DEFAULT },
+        "cpu-culling",
+        "the same plain, the rocks culled by chunk group on the CPU and every one in view drawn at full detail",
+        Setup { culling: Culling::Chunks, ..Setup::DEFAULT },
     )
     .same_picture_as("default"),
+    ViewRow::bench(
+        "full-detail",
+        "bench: the plain as drawn before levels of detail, terrain and rocks at full detail",
+        Setup::DEFAULT.at_full_detail(),
+    ),
+    ViewRow::mode(
+        "lod-levels",
+        "each rock the GPU kept in its level's colour: red the full rock, yellow the octahedron, blue the tetrahedron",
+        Setup { mode: Mode::Levels, ..Setup::DEFAULT },
+    ),
+    ViewRow::mode(
+        "multi-draw",
+        "the chunk groups in view, every group's draw in one indirect call",
+        Setup { mode: Mode::Indirect, culling: Culling::Chunks, ..Setup::DEFAULT },
+    )
+    .same_picture_as("cpu-culling"),
     ViewRow::mode(
         "rock-chunks",
         "each rock drawn in the colour of its chunk group",
-        Setup { mode: Mode::Groups, ..Setup::DEFAULT },
+        Setup { mode: Mode::Groups, culling: Culling::Chunks, ..Setup::DEFAULT },
     ),
     ViewRow::mode(
         "naive",
         "the plain with the 2,000 rocks nearest the start, one draw call each",
-        Setup { rocks: 2_000, mode: Mode::OnePerDraw, terrain: true, cull: false },
+        Setup { rocks: 2_000, mode: Mode::OnePerDraw, terrain: true, culling: Culling::Off, full_detail: false },
     ),
     ViewRow::mode(
         "rocks-10k",
         "bench: 10,000 rocks, instanced, no terrain",
-        Setup { rocks: 10_000, mode: Mode::Instanced, terrain: false, cull: false },
+        Setup { rocks: 10_000, mode: Mode::Instanced, terrain: false, culling: Culling::Off, full_detail: false },
     ),
     // Measured, not a snapshot: past its 100,000 rocks (730 m around the
     // start) the haze hides most of what `rocks-1m` adds, so the two
@@ -64,39 +81,55 @@ pub const VIEW_TABLE: [ViewRow<Setup, CameraPreset>; 9] = [
     ViewRow::bench(
         "rocks-100k",
         "bench: 100,000 rocks, instanced, no terrain",
-        Setup { rocks: 100_000, mode: Mode::Instanced, terrain: false, cull: false },
+        Setup { rocks: 100_000, mode: Mode::Instanced, terrain: false, culling: Culling::Off, full_detail: false },
     ),
     ViewRow::mode(
         "rocks-1m",
         "bench: 1,000,000 rocks, instanced, no terrain",
-        Setup { rocks: 1_000_000, mode: Mode::Instanced, terrain: false, cull: false },
+        Setup { rocks: 1_000_000, mode: Mode::Instanced, terrain: false, culling: Culling::Off, full_detail: false },
     ),
     ViewRow::mode(
         "naive-10k",
         "bench: 10,000 rocks, one draw call each, no terrain",
-        Setup { rocks: 10_000, mode: Mode::OnePerDraw, terrain: false, cull: false },
+        Setup { rocks: 10_000, mode: Mode::OnePerDraw, terrain: false, culling: Culling::Off, full_detail: false },
     )
     .same_picture_as("rocks-10k"),
     ViewRow::mode(
         "flat-1m",
         "bench: 1,000,000 rocks, instanced, flat colour: the cost floor",
-        Setup { rocks: 1_000_000, mode: Mode::Flat, terrain: false, cull: false },
+        Setup { rocks: 1_000_000, mode: Mode::Flat, terrain: false, culling: Culling::Off, full_detail: false },
     ),
 ];
 
 impl InstancingChapter {
     // ANCHOR: rocks_drawn
-    /// "276,000 of 1,000,000 rocks drawn (1,100 of 4,096 groups)": the last
-    /// frame's rocks against the rocks in this view's world.
-    pub fn rocks_drawn(&self) -> String {
+    /// "276,571 of 1,000,000 rocks drawn (1,135 of 4,096 groups), 5,531,420
+    /// triangles", or where the GPU graded them, "… (820 full, 3,000
+    /// octahedra, 26,000 tetrahedra), …": `drawn` against the rocks in this
+    /// view's world.
+    pub fn rocks_drawn(&self, drawn: Option<RocksDrawn>) -> String {
         let world = self.setup.rocks.min(self.plain.rocks_placed());
-        let calls = self.draw_calls;
+        let Some(drawn) = drawn else {
+            return format!("rocks drawn of {}: counting on the GPU…", thousands(world.into()));
+        };
+        let how = match drawn.levels {
+            Some([full, octahedra, tetrahedra]) => format!(
+                "{} full, {} octahedra, {} tetrahedra",
+                thousands(full.into()),
+                thousands(octahedra.into()),
+                thousands(tetrahedra.into())
+            ),
+            None => format!(
+                "{} of {} groups",
+                thousands(self.draw_calls.rock_groups.into()),
+                thousands(self.plain.rock_groups(world).into())
+            ),
+        };
         format!(
-            "{} of {} rocks drawn ({} of {} groups)",
-            thousands(calls.rocks_drawn.into()),
+            "{} of {} rocks drawn ({how}), {} rock triangles",
+            thousands(drawn.rocks.into()),
             thousands(world.into()),
-            thousands(calls.rock_groups.into()),
-            thousands(self.plain.rock_groups(world).into())
+            thousands(drawn.triangles as f64)
         )
     }
     // ANCHOR_END: rocks_drawn
@@ -110,7 +143,7 @@ pub struct InstancingChapter {
     pub controller: FlyController,
     /// Flying (the default) or walking on the ground (G, `--walk`).
     pub movement: Movement,
-    viewpoint: Viewpoint,
+    viewpoint: PlainViewpoint,
     depth: wgpu::TextureView,
     target: Target,
     /// Draw calls in the last frame.
@@ -126,6 +159,8 @@ impl Chapter for InstancingChapter {
     const KEYS: &'static [(&'static str, &'static str)] = ground::KEYS;
     const FLAGS: &'static [ChapterFlag] = &[ground::WALK_FLAG];
     const BENCH_FRAMES: u32 = 10;
+    // The rocks' own shader, rather than the culling's (the first the plain builds).
+    const MAIN_SHADER: Option<&'static str> = Some("instancing/rocks.wgsl");
 
     fn gpu_needs() -> common::GpuNeeds {
         crate::mars_plain::gpu_needs()
@@ -147,7 +182,7 @@ impl Chapter for InstancingChapter {
             movement: Movement::Fly,
             fog: FogSettings::HAZE,
             setup: Setup::DEFAULT,
-            viewpoint: plain.terrain.viewpoint(&gpu.device),
+            viewpoint: plain.viewpoint(&gpu.device),
             plain,
             depth: depth_view(&gpu.device, target.width, target.height),
             target,
@@ -183,6 +218,10 @@ impl Chapter for InstancingChapter {
         Some(&mut self.camera)
     }
 
+    fn before_first_frame(&mut self, _camera_placed: bool) {
+        ground::first_frame(&mut self.camera, self.plain.terrain.field(), self.movement);
+    }
+
     fn update(&mut self, input: &Input, dt: f32) {
         let field = self.plain.terrain.field();
         ground::step(&self.controller, &mut self.camera, &mut self.movement, field, input, dt);
@@ -201,39 +240,51 @@ impl Chapter for InstancingChapter {
             gpu,
             &mut self.viewpoint,
             &self.camera,
-            Detail::lod(self.target.height),
+            self.setup.detail(self.target.height),
             Sun::AFTERNOON,
             KEEP_ALL,
         );
-        if self.setup.mode == Mode::Indirect {
-            self.plain.write_draw_list(&gpu.queue, &self.viewpoint, self.setup);
-        }
+        // The rocks' compute pass (or the CPU's list of draws), before the
+        // render pass that draws them.
+        self.plain.cull(gpu, frame.encoder, frame.timer, &mut self.viewpoint, self.setup);
+        let drawn = frame.drawn;
         let mut pass = frame.scene_pass("terrain and rocks", SKY, &self.depth);
         self.draw_calls = self.plain.draw(&mut pass, &self.viewpoint, self.setup);
+        drawn.add("terrain and rocks", self.draw_calls.drawn());
     }
     // ANCHOR_END: render
 
     fn ui(&mut self, ui: &mut egui::Ui) {
         let s = &mut self.setup;
         ui.horizontal_wrapped(|ui| {
+            ui.label("culling:");
+            ui.radio_value(&mut s.culling, Culling::PerRock, "per rock on the GPU, graded by size");
+            ui.radio_value(&mut s.culling, Culling::PerRockFullDetail, "per rock on the GPU, full detail");
+            ui.radio_value(&mut s.culling, Culling::Chunks, "by chunk on the CPU");
+            ui.radio_value(&mut s.culling, Culling::Off, "none");
+        });
+        ui.horizontal_wrapped(|ui| {
             ui.radio_value(&mut s.mode, Mode::Instanced, "instanced");
             ui.radio_value(&mut s.mode, Mode::Indirect, "one indirect call");
             ui.radio_value(&mut s.mode, Mode::OnePerDraw, "one draw per rock");
             ui.radio_value(&mut s.mode, Mode::Flat, "flat");
             ui.radio_value(&mut s.mode, Mode::Groups, "groups");
+            ui.radio_value(&mut s.mode, Mode::Levels, "levels");
         });
         let max = if s.mode == Mode::OnePerDraw { MAX_ONE_PER_DRAW } else { self.plain.rocks_placed() };
         s.rocks = s.rocks.min(max);
         ui.add(egui::Slider::new(&mut s.rocks, 0..=max).logarithmic(true).text("rocks"));
         ui.checkbox(&mut s.terrain, "terrain");
-        ui.checkbox(&mut s.cull, "draw only the rock groups in view");
+        if let Some(fallback) = self.fallback_line() {
+            ui.label(fallback);
+        }
         let calls = self.draw_calls;
         ui.label(format!(
             "draw calls last frame: {} ({} terrain chunks, {} for the rocks); {}",
             calls.total(),
             calls.terrain,
             calls.rocks,
-            self.rocks_drawn()
+            self.rocks_drawn(calls.rocks_drawn)
         ));
         if (self.plain.rocks_placed() as usize) < rocks_on_map(&self.plain.terrain.field().settings) {
             ui.label(format!("this terrain is steep: only {} rocks found room", self.plain.rocks_placed()));
@@ -246,17 +297,35 @@ impl Chapter for InstancingChapter {
         ground::movement_switch(ui, &mut self.movement);
     }
 
-    fn stats(&mut self, _gpu: &Gpu) -> String {
+    fn stats(&mut self, gpu: &Gpu) -> String {
         let calls = self.draw_calls;
+        let drawn = self.plain.rocks_drawn_now(gpu, &self.viewpoint, self.setup);
+        let fallback = self.fallback_line().map_or(String::new(), |line| format!("; {line}"));
         format!(
-            "{}, {:?}; {} draw calls ({} terrain chunks + {} for the rocks); {} vertices per rock, {} bytes per instance",
-            self.rocks_drawn(),
+            "{}, {:?}, culling {:?}; {} draw calls ({} for the terrain + {} for the rocks); {:?} triangles per rock by level, {} bytes per instance{fallback}",
+            self.rocks_drawn(Some(drawn)),
             self.setup.mode,
+            self.setup.culling,
             calls.total(),
             calls.terrain,
             calls.rocks,
-            rock_mesh(SEED).vertices.len(),
+            self.plain.rock_triangles(),
             std::mem::size_of::<RockInstance>()
         )
+    }
+}
+
+impl InstancingChapter {
+    /// The viewpoint the chapter's picture is drawn from: its rock lists,
+    /// for the tests.
+    pub fn viewpoint(&self) -> &PlainViewpoint {
+        &self.viewpoint
+    }
+
+    /// The overlay's and the bench's line where this view asks the GPU to
+    /// cull and the device cannot: which capability it lacks.
+    fn fallback_line(&self) -> Option<String> {
+        let per_rock = matches!(self.setup.culling, Culling::PerRock | Culling::PerRockFullDetail);
+        self.plain.culling_fallback().filter(|_| per_rock)
     }
 }

@@ -1,40 +1,33 @@
 //! The Mars plain so far: chapter 03's terrain in chapter 04's fog, strewn
-//! with this chapter's rocks, culled by chunk and drawn instanced (a call
-//! per run of visible groups, or all of them in one indirect call), one call
-//! per rock, or flat. Chapters 05, 06 and 07 each own one and draw it
-//! through explicit inputs.
+//! with this chapter's rocks, culled per rock and graded by size on the GPU,
+//! or culled by chunk on the CPU and drawn instanced (a call per run of
+//! visible groups, or all of them in one indirect call), one call per rock,
+//! or flat. Chapters 05, 06 and 07 each own one and draw it through
+//! explicit inputs, one `PlainViewpoint` per picture.
 
 use std::sync::Arc;
 
-use common::glam::{Vec3, Vec4};
+use common::glam::Vec4;
 use common::texture::depth_test;
-use common::{Camera, Gpu, Reloadable, ShaderError, ShaderFile, Vertex, anyhow, shader, wgpu};
+use common::{Camera, Drawn, Gpu, PassTimer, Reloadable, ShaderError, ShaderFile, Vertex, anyhow, shader, wgpu};
 use fog::{FogBinding, FogSettings, fog_shader};
-use terrain::heightfield::HeightField;
 use terrain::{Detail, Sun, TerrainData, TerrainRenderer, Viewpoint};
 
-use crate::rock_field::{MAX_ONE_PER_DRAW, MAX_ROCKS, RockField, RockInstance};
+use crate::rock_culling::{Grading, Picture, RockCulling, RockLists, RockSource, missing_capability};
+use crate::rock_field::{MAX_ONE_PER_DRAW, RockField};
 use crate::rock_groups::{RockRuns, visible_runs};
+use crate::rock_mesh::LEVELS;
+use crate::rock_scatter::{MAX_ROCKS, RockInstance, rocks_on_map};
 
-/// Standing on the plain, eyes 3.5 m up, looking across the rocks at the cliff.
-pub fn plain_camera(field: &HeightField, aspect: f32) -> Camera {
-    let s = field.settings;
-    let x = s.extent() * 0.47 + 60.0;
-    let z = s.cliff_line(x) + 230.0;
-    let eye = Vec3::new(x, field.height_at(x, z) + 3.5, z);
-    let ahead = Vec3::new(x + 40.0, 0.0, z - 200.0);
-    let target = Vec3::new(ahead.x, field.height_at(ahead.x, ahead.z) + 2.0, ahead.z);
-    Camera { far: fog::MAX_FAR, near: 0.1, ..Camera::looking_at(eye, target, aspect) }
-}
-
-/// How the rocks are drawn.
+/// How the rocks are drawn and coloured.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum Mode {
-    /// One instanced draw call per run of rocks to draw (all of them, or
-    /// the visible groups, neighbours in the buffer joined).
+    /// Instanced: per level of detail when the GPU culls them, else one
+    /// call per run of rocks to draw (all of them, or the visible groups,
+    /// neighbours in the buffer joined).
     Instanced,
-    /// The same runs in one `multi_draw_indexed_indirect` call, from a list
-    /// of draws written to a buffer each frame (`MarsPlain::write_draw_list`).
+    /// The chunk groups' runs in one `multi_draw_indexed_indirect` call,
+    /// from a list of draws the CPU writes each frame (`MarsPlain::cull`).
     Indirect,
     /// One draw call per rock, each with its own uniform offset.
     OnePerDraw,
@@ -42,47 +35,97 @@ pub enum Mode {
     Flat,
     /// Instanced, each rock in its chunk group's colour.
     Groups,
+    /// Instanced, each rock in its level of detail's colour.
+    Levels,
+}
+
+/// Which rocks a picture leaves out before drawing.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Culling {
+    /// None: every rock of the world is drawn.
+    Off,
+    /// On the CPU, by chunk: the groups whose box the frustum keeps.
+    Chunks,
+    /// On the GPU, rock by rock: the frustum, the clip plane and the size
+    /// on screen, each rock drawn at the level of detail its size asks.
+    /// `Mode::Indirect` and `Mode::OnePerDraw` cull by chunk instead, and
+    /// so does a device without what the compute pass needs.
+    PerRock,
+    /// As `PerRock`, with the frustum and the clip plane alone: every rock
+    /// in view at full detail, however small (`Grading::FULL_DETAIL`).
+    PerRockFullDetail,
 }
 
 /// What a view shows: how many rocks are in the world (the first of the
-/// buffer, nearest the start), how they are drawn, whether only the groups
-/// in view are drawn, and whether the terrain is drawn too (the bench views
-/// leave it out so that the numbers are the rocks' alone).
+/// buffer, nearest the start), how they are drawn, which are culled, and
+/// whether the terrain is drawn too (the bench views leave it out so that
+/// the numbers are the rocks' alone).
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Setup {
     pub rocks: u32,
     pub mode: Mode,
     pub terrain: bool,
-    /// Draw only the rock groups whose box the camera's frustum keeps.
-    pub cull: bool,
+    pub culling: Culling,
+    /// The terrain's every chunk in view at full detail (chapter 03's
+    /// `full-detail`), not at its levels of detail.
+    pub full_detail: bool,
 }
 
 impl Setup {
     /// The plain as the book shows it: the terrain and a million rocks over
-    /// the whole map, the groups in view drawn instanced.
-    pub const DEFAULT: Self = Self { rocks: MAX_ROCKS, mode: Mode::Instanced, terrain: true, cull: true };
+    /// the whole map, culled and graded on the GPU.
+    pub const DEFAULT: Self =
+        Self { rocks: MAX_ROCKS, mode: Mode::Instanced, terrain: true, culling: Culling::PerRock, full_detail: false };
+
+    /// `self` as the plain was drawn before it had levels of detail: the
+    /// terrain's every chunk in view at full detail, the rocks culled by
+    /// chunk and every one in view drawn whole. What the levels save is the
+    /// difference between the two.
+    pub const fn at_full_detail(self) -> Self {
+        Self { culling: Culling::Chunks, full_detail: true, ..self }
+    }
+
+    /// How finely this setup draws the terrain, in a picture `height` pixels high.
+    pub fn detail(&self, height: u32) -> Detail {
+        if self.full_detail { Detail::full(height) } else { Detail::lod(height) }
+    }
 }
 
 /// What a device drawing the plain needs: chapter 03's needs, and indirect
 /// draws that may start past instance 0, for `Mode::Indirect` (without
-/// them, that mode draws as `Instanced` does).
+/// them, that mode draws as `Instanced` does). The GPU's culling needs no
+/// feature: its indirect draws all start at instance 0.
 pub fn gpu_needs() -> common::GpuNeeds {
     let terrain = terrain::gpu_needs();
     common::GpuNeeds { optional: terrain.optional | wgpu::Features::INDIRECT_FIRST_INSTANCE, ..terrain }
 }
 
 fn rocks_shader() -> ShaderFile {
-    shader!("instancing/rocks.wgsl", imports: ["terrain/terrain.wgsl", "fog/fog.wgsl"])
+    shader!("instancing/rocks.wgsl", imports: ["terrain/terrain.wgsl", "fog/fog.wgsl", "instancing/rock.wgsl"])
 }
 
-/// The plain's pipelines: the terrain in fog, and the rocks drawn three ways.
+/// The fragment functions of rocks.wgsl, one per way of colouring a rock.
+const COLOURINGS: [&str; 4] = ["fs_main", "fs_flat", "fs_groups", "fs_levels"];
+
+/// Which of `COLOURINGS` a mode draws with.
+fn colouring(mode: Mode) -> usize {
+    match mode {
+        Mode::Instanced | Mode::Indirect | Mode::OnePerDraw => 0,
+        Mode::Flat => 1,
+        Mode::Groups => 2,
+        Mode::Levels => 3,
+    }
+}
+
+/// The plain's pipelines: the terrain in fog, and the rocks drawn from the
+/// instance buffer, one per call, or from the GPU's lists, in each colouring.
 #[derive(Clone)]
 struct Pipelines {
     terrain: wgpu::RenderPipeline,
-    instanced: wgpu::RenderPipeline,
+    instanced: [wgpu::RenderPipeline; 4],
     one_per_draw: wgpu::RenderPipeline,
-    flat: wgpu::RenderPipeline,
-    groups: wgpu::RenderPipeline,
+    /// None where the device cannot cull on the GPU.
+    culled: Option<[wgpu::RenderPipeline; 4]>,
 }
 
 fn rock_pipeline(
@@ -118,16 +161,31 @@ fn rock_pipeline(
     })
 }
 
+/// What one picture drew of the rocks.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct RocksDrawn {
+    pub rocks: u32,
+    pub triangles: u64,
+    /// Rocks at each level of detail, finest first, where the GPU graded
+    /// them; `None` where every rock drawn was the full rock.
+    pub levels: Option<[u32; LEVELS]>,
+}
+
 /// Draw calls recorded for one picture of the plain, and the rocks drawn.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
 pub struct DrawCalls {
-    /// One per terrain chunk in view.
+    /// One instanced call for every patch of the terrain in view.
     pub terrain: u32,
-    /// One per run of rock groups, one in all (indirect), or one per rock.
+    /// The terrain's triangles: every patch's.
+    pub terrain_triangles: u64,
+    /// One per run of rock groups, one in all (indirect), one per rock, or
+    /// one per level of detail (culled on the GPU).
     pub rocks: u32,
-    /// Rocks drawn: the world's (`Setup::rocks`), less the culled groups'.
-    pub rocks_drawn: u32,
-    /// Rock groups (chunks with rocks) drawn.
+    /// What the rocks' calls drew: counted as they were recorded where the
+    /// CPU culls, read back a frame or two late where the GPU does (`None`
+    /// until the first count comes back).
+    pub rocks_drawn: Option<RocksDrawn>,
+    /// Rock groups (chunks with rocks) drawn, where the CPU culls by chunk.
     pub rock_groups: u32,
 }
 
@@ -135,7 +193,34 @@ impl DrawCalls {
     pub fn total(&self) -> u32 {
         self.terrain + self.rocks
     }
+
+    /// The calls and triangles, for the pass's count: the rocks' as far as
+    /// they are known (read back late where the GPU culls).
+    pub fn drawn(&self) -> Drawn {
+        let rocks = self.rocks_drawn.map_or(0, |drawn| drawn.triangles);
+        Drawn::counted(self.total(), self.terrain_triangles + rocks)
+    }
 }
+
+// ANCHOR: plain_viewpoint
+/// Everything one picture of the plain needs of its own: the terrain's
+/// uniforms, and where the GPU culls the rocks, the lists and draws that
+/// the compute pass fills. A frame that draws the plain several times
+/// (chapter 07's reflection, refraction and main picture) has one of these
+/// per picture, records all of them into one encoder and submits once.
+pub struct PlainViewpoint {
+    /// Group 0 of terrain.wgsl for this picture, which the fog, the rocks
+    /// and the water read too.
+    pub ground: Viewpoint,
+    /// Where the GPU culls: this picture's lists and indirect draws.
+    rocks: Option<RockLists>,
+    /// For `Mode::Indirect`: this picture's draws of the chunk groups,
+    /// written by the CPU. `None` without indirect draws.
+    draw_list: Option<wgpu::Buffer>,
+    /// Where the picture was last aimed from.
+    picture: Option<Picture>,
+}
+// ANCHOR_END: plain_viewpoint
 
 // ANCHOR: mars_plain
 /// The Mars plain: chapter 03's terrain in chapter 04's fog, strewn with this
@@ -148,14 +233,17 @@ pub struct MarsPlain {
     /// The fog's uniform (group 1), the same for every picture of a frame.
     pub fog: FogBinding,
     singles_group: wgpu::BindGroup,
-    /// The draws of `Mode::Indirect`, written each frame: one
-    /// `DrawIndexedIndirectArgs` per run, at most one per group.
-    draw_list: wgpu::Buffer,
+    /// The compute pass that culls the rocks, and every rock bound for it;
+    /// `None` where the device lacks what it needs.
+    culling: Option<(RockCulling, wgpu::BindGroup)>,
+    /// Why the rocks are culled by chunk on the CPU where a view asks for
+    /// the GPU: which capability the device lacks.
+    culling_missing: Option<String>,
     /// Whether indirect draws may start at an instance other than 0 (the
     /// `INDIRECT_FIRST_INSTANCE` feature); without it `Mode::Indirect` draws
     /// as `Mode::Instanced` does.
     indirect_ok: bool,
-    /// Rebuilt when fog.wgsl, rocks.wgsl or terrain.wgsl is saved (hot reload).
+    /// Rebuilt when fog.wgsl, rocks.wgsl, rock.wgsl or terrain.wgsl is saved (hot reload).
     pipelines: Reloadable<Pipelines>,
 }
 // ANCHOR_END: mars_plain
@@ -164,16 +252,22 @@ impl MarsPlain {
     /// The plain of `terrain` (what `TerrainData::prepare` made), for
     /// targets of `format`.
     pub fn new(gpu: &Gpu, format: wgpu::TextureFormat, terrain: Arc<TerrainData>) -> anyhow::Result<Self> {
+        Self::with_capabilities(gpu, format, terrain, &gpu.adapter.get_downlevel_capabilities())
+    }
+
+    /// `new`, as if the device had only `downlevel`'s capabilities: a test
+    /// takes away what the GPU's culling needs to see the plain fall back.
+    pub fn with_capabilities(
+        gpu: &Gpu,
+        format: wgpu::TextureFormat,
+        terrain: Arc<TerrainData>,
+        downlevel: &wgpu::DownlevelCapabilities,
+    ) -> anyhow::Result<Self> {
         let device = &gpu.device;
         let terrain = TerrainRenderer::new(gpu, terrain);
         let rocks = RockField::get(gpu, terrain.field(), terrain.chunk_bounds());
-        let draw_list = device.create_buffer(&wgpu::BufferDescriptor {
-            label: Some("rock draw list"),
-            size: (rocks.groups.len().max(1) * std::mem::size_of::<wgpu::util::DrawIndexedIndirectArgs>()) as u64,
-            usage: wgpu::BufferUsages::INDIRECT | wgpu::BufferUsages::COPY_DST,
-            mapped_at_creation: false,
-        });
-        let indirect_ok = device.features().contains(wgpu::Features::INDIRECT_FIRST_INSTANCE);
+        let indirect_ok = device.features().contains(wgpu::Features::INDIRECT_FIRST_INSTANCE)
+            && downlevel.flags.contains(wgpu::DownlevelFlags::INDIRECT_EXECUTION);
         let fog = FogBinding::new(device);
         let single_layout = device.create_bind_group_layout(&wgpu::BindGroupLayoutDescriptor {
             label: Some("one rock"),
@@ -188,6 +282,16 @@ impl MarsPlain {
                 count: None,
             }],
         });
+        let rock_bytes = rocks.instances.size();
+        let culling_missing = missing_capability(downlevel, &device.limits(), rock_bytes);
+        let culling = match culling_missing {
+            None => {
+                let culling = RockCulling::new(gpu, rocks.levels.each_ref().map(|mesh| mesh.index_count))?;
+                let group = culling.rocks_group(device, &rocks.instances);
+                Some((culling, group))
+            }
+            Some(_) => None,
+        };
         let layout = |label, groups: &[Option<&wgpu::BindGroupLayout>]| {
             device.create_pipeline_layout(&wgpu::PipelineLayoutDescriptor {
                 label: Some(label),
@@ -198,24 +302,29 @@ impl MarsPlain {
         let shared = [Some(&terrain.bind_group_layout), Some(&fog.layout)];
         let layouts =
             [layout("rocks", &shared), layout("one rock per draw", &[shared[0], shared[1], Some(&single_layout)])];
-        let pipelines = Reloadable::new(gpu, move |gpu| Self::pipelines(gpu, &layouts, format))?;
+        let culled_layout = culling.as_ref().map(|(culling, _)| {
+            layout("culled rocks", &[shared[0], shared[1], Some(&culling.draw_layout), Some(&culling.rocks_layout)])
+        });
+        let pipelines =
+            Reloadable::new(gpu, move |gpu| Self::pipelines(gpu, &layouts, culled_layout.as_ref(), format))?;
         let singles_group = Self::singles_group(device, &single_layout, &rocks);
-        Ok(Self { terrain, rocks, fog, singles_group, draw_list, indirect_ok, pipelines })
+        Ok(Self { terrain, rocks, fog, singles_group, culling, culling_missing, indirect_ok, pipelines })
     }
 
     fn pipelines(
         gpu: &Gpu,
         layouts: &[wgpu::PipelineLayout; 2],
+        culled_layout: Option<&wgpu::PipelineLayout>,
         format: wgpu::TextureFormat,
     ) -> Result<Pipelines, ShaderError> {
         let terrain = TerrainRenderer::pipeline(gpu, &fog_shader(), &layouts[0], format)?;
         let module = rocks_shader().module(gpu)?;
         gpu.catch_validation(|| Pipelines {
             terrain,
-            instanced: rock_pipeline(gpu, &module, &layouts[0], format, "vs_instanced", "fs_main"),
+            instanced: COLOURINGS.map(|fs| rock_pipeline(gpu, &module, &layouts[0], format, "vs_instanced", fs)),
             one_per_draw: rock_pipeline(gpu, &module, &layouts[1], format, "vs_single", "fs_main"),
-            flat: rock_pipeline(gpu, &module, &layouts[0], format, "vs_instanced", "fs_flat"),
-            groups: rock_pipeline(gpu, &module, &layouts[0], format, "vs_instanced", "fs_groups"),
+            culled: culled_layout
+                .map(|layout| COLOURINGS.map(|fs| rock_pipeline(gpu, &module, layout, format, "vs_culled", fs))),
         })
         .map_err(ShaderError)
     }
@@ -235,6 +344,35 @@ impl MarsPlain {
         })
     }
 
+    /// A new set of everything one more picture of the plain needs.
+    pub fn viewpoint(&self, device: &wgpu::Device) -> PlainViewpoint {
+        // As many rocks as the map can hold, so that regenerating the
+        // terrain (which keeps the number of chunks) never outgrows the lists.
+        let capacity = rocks_on_map(&self.terrain.field().settings) as u32;
+        let draw_list = self.indirect_ok.then(|| {
+            device.create_buffer(&wgpu::BufferDescriptor {
+                label: Some("rock draw list"),
+                size: (self.rocks.groups.len().max(1) * std::mem::size_of::<wgpu::util::DrawIndexedIndirectArgs>())
+                    as u64,
+                usage: wgpu::BufferUsages::INDIRECT | wgpu::BufferUsages::COPY_DST,
+                mapped_at_creation: false,
+            })
+        });
+        PlainViewpoint {
+            ground: self.terrain.viewpoint(device),
+            rocks: self.culling.as_ref().map(|(culling, _)| culling.lists(device, capacity)),
+            draw_list,
+            picture: None,
+        }
+    }
+
+    /// Bytes of the buffers one picture's viewpoint holds for the rocks:
+    /// the GPU's lists and draws, and the CPU's draw list.
+    pub fn viewpoint_bytes(&self, viewpoint: &PlainViewpoint) -> u64 {
+        let lists = viewpoint.rocks.as_ref().map_or(0, RockLists::gpu_bytes);
+        lists + viewpoint.draw_list.as_ref().map_or(0, wgpu::Buffer::size)
+    }
+
     /// How many rocks there are to draw.
     pub fn rocks_placed(&self) -> u32 {
         self.rocks.placed
@@ -250,11 +388,24 @@ impl MarsPlain {
         &self.rocks
     }
 
+    /// Triangles of the rock at each level of detail, finest first.
+    pub fn rock_triangles(&self) -> [u32; LEVELS] {
+        self.rocks.levels.each_ref().map(|mesh| mesh.index_count / 3)
+    }
+
+    /// Why this plain culls its rocks by chunk on the CPU where a view asks
+    /// for the GPU, in one line; `None` where the GPU can cull them.
+    pub fn culling_fallback(&self) -> Option<String> {
+        self.culling_missing.as_ref().map(|missing| format!("rocks culled by chunk on the CPU: {missing}"))
+    }
+
     /// Bytes of the buffers this plain made on the GPU, by our own count:
-    /// (the terrain's maps and patch grid, rocks and their draw list).
-    /// Uniforms and each viewpoint's patch list come on top; they are kilobytes.
+    /// (the terrain's maps and patch grid, rocks and what the culling
+    /// shares). Uniforms, each viewpoint's patch list and each viewpoint's
+    /// rock lists come on top.
     pub fn gpu_bytes(&self) -> (u64, u64) {
-        (self.terrain.data().maps.gpu_bytes(), self.rocks.gpu_bytes() + self.draw_list.size())
+        let culling = self.culling.as_ref().map_or(0, |(culling, _)| culling.gpu_bytes());
+        (self.terrain.data().maps.gpu_bytes(), self.rocks.gpu_bytes() + culling)
     }
 
     /// Makes the terrain again from `self.terrain.settings`, and the rocks on it.
@@ -263,6 +414,9 @@ impl MarsPlain {
         self.rocks = RockField::get(gpu, self.terrain.field(), self.terrain.chunk_bounds());
         let layout = self.pipelines.get().one_per_draw.get_bind_group_layout(2);
         self.singles_group = Self::singles_group(&gpu.device, &layout, &self.rocks);
+        if let Some((culling, group)) = &mut self.culling {
+            *group = culling.rocks_group(&gpu.device, &self.rocks.instances);
+        }
     }
 
     /// Sets the air every picture of this frame is seen through: `fog`, in
@@ -272,30 +426,78 @@ impl MarsPlain {
     }
 
     /// Aims `viewpoint` from `camera`, for a picture drawn as finely as
-    /// `detail` asks, lit by `sun`, keeping what `clip` keeps.
-    pub fn aim(&self, gpu: &Gpu, viewpoint: &mut Viewpoint, camera: &Camera, detail: Detail, sun: Sun, clip: Vec4) {
-        self.terrain.aim(gpu, viewpoint, camera, detail, sun, clip);
+    /// `detail` asks (its height in pixels decides the rocks' sizes on
+    /// screen), lit by `sun`, keeping what `clip` keeps.
+    pub fn aim(
+        &self,
+        gpu: &Gpu,
+        viewpoint: &mut PlainViewpoint,
+        camera: &Camera,
+        detail: Detail,
+        sun: Sun,
+        clip: Vec4,
+    ) {
+        self.terrain.aim(gpu, &mut viewpoint.ground, camera, detail, sun, clip);
+        viewpoint.picture = Some(Picture { camera: *camera, height: detail.picture_height, clip });
     }
 
-    /// The rocks `setup` draws from `viewpoint`: the first `setup.rocks`
-    /// (at most `MAX_ONE_PER_DRAW` one call per rock), less the groups the
-    /// viewpoint's frustum culls when `setup.cull`.
-    pub fn rock_runs(&self, viewpoint: &Viewpoint, setup: Setup) -> RockRuns {
-        let most = if setup.mode == Mode::OnePerDraw { MAX_ONE_PER_DRAW } else { u32::MAX };
-        let count = setup.rocks.min(self.rocks.placed).min(most);
-        visible_runs(&self.rocks.groups, count, setup.cull.then(|| viewpoint.frustum()))
+    /// Whether `setup` draws its rocks from the GPU's lists.
+    fn culls_on_gpu(&self, setup: Setup) -> bool {
+        matches!(setup.culling, Culling::PerRock | Culling::PerRockFullDetail)
+            && self.culling.is_some()
+            && !matches!(setup.mode, Mode::Indirect | Mode::OnePerDraw)
     }
+
+    /// The first `setup.rocks` rocks, at most as many as there are.
+    fn rocks_in_world(&self, setup: Setup) -> u32 {
+        setup.rocks.min(self.rocks.placed)
+    }
+
+    /// The rocks `setup` draws from `viewpoint` where the CPU culls: the
+    /// first `setup.rocks` (at most `MAX_ONE_PER_DRAW` one call per rock),
+    /// less the groups the viewpoint's frustum culls unless culling is off.
+    pub fn rock_runs(&self, viewpoint: &PlainViewpoint, setup: Setup) -> RockRuns {
+        let most = if setup.mode == Mode::OnePerDraw { MAX_ONE_PER_DRAW } else { u32::MAX };
+        let count = self.rocks_in_world(setup).min(most);
+        let frustum = (setup.culling != Culling::Off).then(|| viewpoint.ground.frustum());
+        visible_runs(&self.rocks.groups, count, frustum)
+    }
+
+    // ANCHOR: cull
+    /// Prepares this picture's rocks, after `aim` and before the render
+    /// pass that draws them: where the GPU culls, records the compute pass
+    /// into `encoder`; for `Mode::Indirect`, writes the picture's list of
+    /// draws.
+    pub fn cull(
+        &self,
+        gpu: &Gpu,
+        encoder: &mut wgpu::CommandEncoder,
+        timer: &PassTimer,
+        viewpoint: &mut PlainViewpoint,
+        setup: Setup,
+    ) {
+        if let (true, Some((culling, group)), Some(lists), Some(picture)) =
+            (self.culls_on_gpu(setup), &self.culling, &mut viewpoint.rocks, &viewpoint.picture)
+        {
+            let grading = if setup.culling == Culling::PerRock { Grading::LOD } else { Grading::FULL_DETAIL };
+            let rocks = RockSource { group, sphere: self.rocks.sphere, count: self.rocks_in_world(setup) };
+            culling.aim(&gpu.queue, lists, picture, &rocks, grading);
+            culling.cull(gpu, encoder, timer, lists, &rocks);
+        } else if setup.mode == Mode::Indirect {
+            self.write_draw_list(&gpu.queue, viewpoint, setup);
+        }
+    }
+    // ANCHOR_END: cull
 
     // ANCHOR: write_draw_list
-    /// For `Mode::Indirect`: writes this frame's draws from `viewpoint`, one
-    /// record of five numbers per run, which `draw` then hands the GPU in
-    /// one call. Call it after `aim`, for the one viewpoint drawn in that
-    /// mode (the list is the plain's, not the viewpoint's).
-    pub fn write_draw_list(&self, queue: &wgpu::Queue, viewpoint: &Viewpoint, setup: Setup) {
+    /// For `Mode::Indirect`: writes this picture's draws, one record of five
+    /// numbers per run, which `draw` then hands the GPU in one call.
+    fn write_draw_list(&self, queue: &wgpu::Queue, viewpoint: &PlainViewpoint, setup: Setup) {
+        let Some(draw_list) = &viewpoint.draw_list else { return };
         let draws: Vec<u8> = (self.rock_runs(viewpoint, setup).runs.iter())
             .flat_map(|run| {
                 let draw = wgpu::util::DrawIndexedIndirectArgs {
-                    index_count: self.rocks.mesh.index_count,
+                    index_count: self.rocks.mesh().index_count,
                     instance_count: run.len() as u32,
                     first_index: 0,
                     base_vertex: 0,
@@ -304,58 +506,94 @@ impl MarsPlain {
                 draw.as_bytes().to_vec()
             })
             .collect();
-        queue.write_buffer(&self.draw_list, 0, &draws);
+        queue.write_buffer(draw_list, 0, &draws);
     }
     // ANCHOR_END: write_draw_list
 
     // ANCHOR: draw
     /// Records the terrain (unless `setup` leaves it out) and `setup.rocks`
     /// rocks into `pass`, as seen from `viewpoint`.
-    pub fn draw(&self, pass: &mut wgpu::RenderPass<'_>, viewpoint: &Viewpoint, setup: Setup) -> DrawCalls {
+    pub fn draw(&self, pass: &mut wgpu::RenderPass<'_>, viewpoint: &PlainViewpoint, setup: Setup) -> DrawCalls {
         // Group 0 (camera, sun) and group 1 (fog) serve the terrain and the rocks alike.
         pass.set_bind_group(1, &self.fog.group, &[]);
-        self.terrain.bind(pass, viewpoint);
+        self.terrain.bind(pass, &viewpoint.ground);
         let mut calls = DrawCalls::default();
         if setup.terrain {
             pass.set_pipeline(&self.pipelines.get().terrain);
-            calls.terrain = self.terrain.draw(pass, viewpoint) as u32;
+            let drawn = self.terrain.draw(pass, &viewpoint.ground);
+            (calls.terrain, calls.terrain_triangles) = (drawn.draws, drawn.triangles);
         }
-        let drawn = self.rock_runs(viewpoint, setup);
-        calls.rocks = self.draw_rocks(pass, setup.mode, &drawn);
-        (calls.rocks_drawn, calls.rock_groups) = (drawn.rocks, drawn.groups);
+        if let (true, Some((culling, group)), Some(lists)) = (self.culls_on_gpu(setup), &self.culling, &viewpoint.rocks)
+        {
+            let pipelines = self.pipelines.get();
+            let Some(culled) = &pipelines.culled else { return calls };
+            pass.set_pipeline(&culled[colouring(setup.mode)]);
+            let rocks = RockSource { group, sphere: self.rocks.sphere, count: self.rocks_in_world(setup) };
+            culling.draw(pass, lists, &rocks, &self.rocks.levels);
+            calls.rocks = LEVELS as u32;
+            calls.rocks_drawn = lists.late_counts().map(|levels| self.graded(levels));
+        } else {
+            let drawn = self.rock_runs(viewpoint, setup);
+            calls.rocks = self.draw_rocks(pass, viewpoint, setup.mode, &drawn);
+            calls.rocks_drawn = Some(self.full_detail(drawn.rocks));
+            calls.rock_groups = drawn.groups;
+        }
         calls
     }
     // ANCHOR_END: draw
 
+    /// What `setup` drew of the rocks in `viewpoint`'s last picture: where
+    /// the GPU culls, waiting for it to finish and reading its counts back
+    /// (for `--bench`'s figures and the tests; the overlay reads them late).
+    pub fn rocks_drawn_now(&self, gpu: &Gpu, viewpoint: &PlainViewpoint, setup: Setup) -> RocksDrawn {
+        match (&viewpoint.rocks, self.culls_on_gpu(setup)) {
+            (Some(lists), true) => self.graded(lists.counts_now(gpu)),
+            _ => self.full_detail(self.rock_runs(viewpoint, setup).rocks),
+        }
+    }
+
+    /// The lists and draws the GPU culled `viewpoint`'s rocks into, where
+    /// it does: for the tests.
+    pub fn rock_lists<'v>(&self, viewpoint: &'v PlainViewpoint) -> Option<&'v RockLists> {
+        viewpoint.rocks.as_ref()
+    }
+
+    fn graded(&self, levels: [u32; LEVELS]) -> RocksDrawn {
+        let triangles = self.rock_triangles();
+        RocksDrawn {
+            rocks: levels.iter().sum(),
+            triangles: (0..LEVELS).map(|l| u64::from(levels[l]) * u64::from(triangles[l])).sum(),
+            levels: Some(levels),
+        }
+    }
+
+    fn full_detail(&self, rocks: u32) -> RocksDrawn {
+        RocksDrawn { rocks, triangles: u64::from(rocks) * u64::from(self.rock_triangles()[0]), levels: None }
+    }
+
     // ANCHOR: draw_rocks
-    /// Draws the rocks of `drawn`'s runs; returns the number of draw calls.
-    fn draw_rocks(&self, pass: &mut wgpu::RenderPass<'_>, mode: Mode, drawn: &RockRuns) -> u32 {
-        let mesh = &self.rocks.mesh;
+    /// Draws the rocks of `drawn`'s runs, where the CPU culls; returns the
+    /// number of draw calls.
+    fn draw_rocks(
+        &self,
+        pass: &mut wgpu::RenderPass<'_>,
+        viewpoint: &PlainViewpoint,
+        mode: Mode,
+        drawn: &RockRuns,
+    ) -> u32 {
+        let mesh = self.rocks.mesh();
         let pipelines = self.pipelines.get();
         pass.set_vertex_buffer(0, mesh.vertex_buffer.slice(..));
         pass.set_index_buffer(mesh.index_buffer.slice(..), wgpu::IndexFormat::Uint32);
-        match mode {
-            Mode::Indirect if self.indirect_ok => {
-                pass.set_pipeline(&pipelines.instanced);
+        match (mode, &viewpoint.draw_list) {
+            (Mode::Indirect, Some(draw_list)) if self.indirect_ok => {
+                pass.set_pipeline(&pipelines.instanced[colouring(mode)]);
                 pass.set_vertex_buffer(1, self.rocks.instances.slice(..));
                 // One call: the GPU reads each run's draw from the list.
-                pass.multi_draw_indexed_indirect(&self.draw_list, 0, drawn.runs.len() as u32);
+                pass.multi_draw_indexed_indirect(draw_list, 0, drawn.runs.len() as u32);
                 1
             }
-            Mode::Instanced | Mode::Indirect | Mode::Flat | Mode::Groups => {
-                pass.set_pipeline(match mode {
-                    Mode::Flat => &pipelines.flat,
-                    Mode::Groups => &pipelines.groups,
-                    _ => &pipelines.instanced,
-                });
-                pass.set_vertex_buffer(1, self.rocks.instances.slice(..));
-                // One call per run of rocks; the GPU loops over its instances itself.
-                for run in &drawn.runs {
-                    pass.draw_indexed(0..mesh.index_count, 0, run.clone());
-                }
-                drawn.runs.len() as u32
-            }
-            Mode::OnePerDraw => {
+            (Mode::OnePerDraw, _) => {
                 pass.set_pipeline(&pipelines.one_per_draw);
                 for i in drawn.runs.iter().flat_map(|run| run.clone()) {
                     // A bind group change and a draw per rock, validated and
@@ -364,6 +602,15 @@ impl MarsPlain {
                     pass.draw_indexed(0..mesh.index_count, 0, 0..1);
                 }
                 drawn.rocks
+            }
+            _ => {
+                pass.set_pipeline(&pipelines.instanced[colouring(mode)]);
+                pass.set_vertex_buffer(1, self.rocks.instances.slice(..));
+                // One call per run of rocks; the GPU loops over its instances itself.
+                for run in &drawn.runs {
+                    pass.draw_indexed(0..mesh.index_count, 0, run.clone());
+                }
+                drawn.runs.len() as u32
             }
         }
     }

@@ -10,7 +10,7 @@ use terrain::chunks::Aabb;
 use terrain::culling::Frustum;
 use terrain::heightfield::{CHUNK_QUADS, TerrainSettings};
 
-use crate::rock_field::RockInstance;
+use crate::rock_scatter::RockInstance;
 
 /// One terrain chunk's rocks: where they lie in the instance buffer, and
 /// the chunk's box grown so that it holds every one of them.

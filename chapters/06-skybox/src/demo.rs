@@ -2,16 +2,17 @@
 //! their cameras, the overlay's controls, and `impl Chapter`, which draws
 //! chapter 05's plain lit by the sun and then the sky in the same pass.
 
+use common::book_figures::thousands;
 use common::texture::depth_view;
 use common::{
     Camera, Chapter, ChapterFlag, FlagValues, FlyController, Frame, Gpu, Input, Target, View, ViewRow, anyhow, egui,
     views_of, wgpu,
 };
 use fog::FogSettings;
-use instancing::{DrawCalls, MarsPlain, Setup, plain_camera};
+use instancing::{DrawCalls, MarsPlain, PlainViewpoint, Setup, plain_camera};
+use terrain::KEEP_ALL;
 use terrain::ground::{self, Movement};
 use terrain::heightfield::HeightField;
-use terrain::{Detail, KEEP_ALL, Viewpoint};
 
 use crate::sky::{Sky, SkyViewpoint};
 use crate::sun_path::sun_at;
@@ -22,11 +23,13 @@ pub struct Settings {
     /// The time of day at scene time 0: 0 midnight, 0.25 sunrise, 0.5
     /// noon, 0.75 sunset.
     pub start_phase: f32,
+    /// The plain as drawn before levels of detail (`Setup::at_full_detail`).
+    pub full_detail: bool,
 }
 
 impl Settings {
     /// Mid-morning.
-    pub const DEFAULT: Self = Self { start_phase: 0.40 };
+    pub const DEFAULT: Self = Self { start_phase: 0.40, full_detail: false };
 }
 
 /// The places a view can put the camera.
@@ -45,15 +48,24 @@ impl CameraPreset {
 }
 
 /// Every view, with the time of day it starts at and, for a preset, its camera.
-pub const VIEW_TABLE: [ViewRow<Settings, CameraPreset>; 3] = [
+pub const VIEW_TABLE: [ViewRow<Settings, CameraPreset>; 4] = [
     ViewRow::mode("day", "mid-morning: the sun high in the east, the plain in full light", Settings::DEFAULT),
     ViewRow::preset(
         "dusk",
         "facing west as the sun sets in its blue Martian halo",
-        Settings { start_phase: 0.745 },
+        Settings { start_phase: 0.745, ..Settings::DEFAULT },
         CameraPreset::Dusk,
     ),
-    ViewRow::mode("night", "stars over the plain, lit by the sky alone", Settings { start_phase: 0.02 }),
+    ViewRow::mode(
+        "night",
+        "stars over the plain, lit by the sky alone",
+        Settings { start_phase: 0.02, ..Settings::DEFAULT },
+    ),
+    ViewRow::bench(
+        "full-detail",
+        "bench: the day view as drawn before levels of detail, terrain and rocks at full detail",
+        Settings { full_detail: true, ..Settings::DEFAULT },
+    ),
 ];
 
 /// The plain's camera, turned to face the sunset: west (−x), a little
@@ -77,7 +89,7 @@ pub struct SkyboxChapter {
     pub day_seconds: f32,
     /// The time of day of the last frame (0 midnight, 0.5 noon).
     phase: f32,
-    viewpoint: (Viewpoint, SkyViewpoint),
+    viewpoint: (PlainViewpoint, SkyViewpoint),
     depth: wgpu::TextureView,
     target: Target,
     draw_calls: DrawCalls,
@@ -128,7 +140,7 @@ impl Chapter for SkyboxChapter {
             settings: Settings::DEFAULT,
             day_seconds: 240.0,
             phase: Settings::DEFAULT.start_phase,
-            viewpoint: (plain.terrain.viewpoint(&gpu.device), sky.viewpoint(&gpu.device)),
+            viewpoint: (plain.viewpoint(&gpu.device), sky.viewpoint(&gpu.device)),
             depth: depth_view(&gpu.device, target.width, target.height),
             plain,
             sky,
@@ -164,6 +176,10 @@ impl Chapter for SkyboxChapter {
         Some(&mut self.camera)
     }
 
+    fn before_first_frame(&mut self, _camera_placed: bool) {
+        ground::first_frame(&mut self.camera, self.plain.terrain.field(), self.movement);
+    }
+
     fn update(&mut self, input: &Input, dt: f32) {
         let field = self.plain.terrain.field();
         ground::step(&self.controller, &mut self.camera, &mut self.movement, field, input, dt);
@@ -176,12 +192,15 @@ impl Chapter for SkyboxChapter {
         self.camera.far = self.fog.far_plane();
         self.plain.set_air(&gpu.queue, self.fog, self.sky.fog_colour(self.phase));
         let (ground, sky) = &mut self.viewpoint;
-        self.plain.aim(gpu, ground, &self.camera, Detail::lod(self.target.height), sun_at(self.phase), KEEP_ALL);
+        let rocks = if self.settings.full_detail { self.rocks.at_full_detail() } else { self.rocks };
+        self.plain.aim(gpu, ground, &self.camera, rocks.detail(self.target.height), sun_at(self.phase), KEEP_ALL);
         self.sky.aim(&gpu.queue, sky, &self.camera, self.phase);
+        self.plain.cull(gpu, frame.encoder, frame.timer, ground, rocks);
         // The clear colour is never seen: the sky covers whatever the plain leaves.
+        let drawn = frame.drawn;
         let mut pass = frame.scene_pass("plain and sky", terrain::SKY, &self.depth);
-        self.draw_calls = self.plain.draw(&mut pass, ground, self.rocks);
-        self.sky.draw(&mut pass, sky);
+        self.draw_calls = self.plain.draw(&mut pass, ground, rocks);
+        drawn.add("plain and sky", self.draw_calls.drawn() + self.sky.draw(&mut pass, sky));
     }
     // ANCHOR_END: render
 
@@ -193,16 +212,28 @@ impl Chapter for SkyboxChapter {
         ui.add(egui::Slider::new(&mut self.fog.density, 0.0..=0.01).logarithmic(true).text("fog density"));
         let max = self.plain.rocks_placed();
         ui.add(egui::Slider::new(&mut self.rocks.rocks, 0..=max).logarithmic(true).text("rocks"));
+        // Chapter 05's counts, read back from the GPU a frame or two late.
+        if let Some(drawn) = self.draw_calls.rocks_drawn {
+            let (rocks, triangles) = (thousands(drawn.rocks.into()), thousands(drawn.triangles as f64));
+            ui.label(format!("{rocks} rocks drawn, {triangles} rock triangles"));
+        }
+        if let Some(fallback) = self.plain.culling_fallback() {
+            ui.label(fallback);
+        }
         ui.add(egui::Slider::new(&mut self.controller.speed, 2.0..=200.0).logarithmic(true).text("speed (m/s)"));
         ground::movement_switch(ui, &mut self.movement);
     }
 
-    fn stats(&mut self, _gpu: &Gpu) -> String {
+    fn stats(&mut self, gpu: &Gpu) -> String {
         let calls = self.draw_calls;
+        let drawn = self.plain.rocks_drawn_now(gpu, &self.viewpoint.0, self.rocks);
+        let fallback = self.plain.culling_fallback().map_or(String::new(), |line| format!("; {line}"));
         format!(
-            "time of day {:.3}; {} rocks; {} draw calls ({} terrain chunks, {} for the rocks, 1 for the sky)",
+            "time of day {:.3}; {} of {} rocks drawn, {} rock triangles; {} draw calls ({} terrain chunks, {} for the rocks, 1 for the sky){fallback}",
             self.phase,
-            self.rocks.rocks.min(self.plain.rocks_placed()),
+            thousands(drawn.rocks.into()),
+            thousands(self.rocks.rocks.min(self.plain.rocks_placed()).into()),
+            thousands(drawn.triangles as f64),
             calls.total() + 1,
             calls.terrain,
             calls.rocks

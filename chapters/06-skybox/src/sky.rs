@@ -9,7 +9,7 @@ use common::chapter::uniform_entry;
 use common::glam::{Mat4, Quat, Vec3};
 use common::texture::{ColorSpace, Texture, cubemap_from_images, decode_faces};
 use common::wgpu::util::DeviceExt as _;
-use common::{Camera, Gpu, Reloadable, ShaderError, ShaderFile, anyhow, fullscreen, image, shader, wgpu};
+use common::{Camera, Drawn, Gpu, Reloadable, ShaderError, ShaderFile, anyhow, fullscreen, image, shader, wgpu};
 
 use crate::sun_path::{celestial_turn, day_blend, sun_at};
 
@@ -220,10 +220,11 @@ impl Sky {
 
     /// Draws the sky wherever the depth buffer still holds 1: call it after
     /// everything else in the pass.
-    pub fn draw(&self, pass: &mut wgpu::RenderPass<'_>, viewpoint: &SkyViewpoint) {
+    pub fn draw(&self, pass: &mut wgpu::RenderPass<'_>, viewpoint: &SkyViewpoint) -> Drawn {
         pass.set_pipeline(&self.pipeline.get());
         pass.set_bind_group(0, &viewpoint.bind_group, &[]);
         pass.draw(0..3, 0..1);
+        Drawn::FULL_SCREEN
     }
 }
 

@@ -4,19 +4,20 @@
 //! chapter 06's sky and the water: three pictures of the scene a frame,
 //! then the water reading two of them.
 
+use common::book_figures::thousands;
 use common::chapter::scene_pass;
 use common::glam::{Vec2, Vec3, Vec4};
 use common::texture::depth_view;
 use common::{
-    Camera, Chapter, ChapterFlag, FlagValues, FlyController, Frame, Gpu, Input, Orbit, PassTimer, Target, View,
+    Camera, Chapter, ChapterFlag, Drawn, FlagValues, FlyController, Frame, Gpu, Input, Orbit, PassTimer, Target, View,
     ViewRow, anyhow, egui, views_of, wgpu,
 };
 use fog::FogSettings;
-use instancing::{MarsPlain, Setup, plain_camera};
+use instancing::{MarsPlain, PlainViewpoint, RocksDrawn, Setup, plain_camera};
 use skybox::{Sky, SkyViewpoint, sun_at};
 use terrain::ground::{self, Movement};
 use terrain::heightfield::HeightField;
-use terrain::{Detail, KEEP_ALL, SKY, Viewpoint};
+use terrain::{KEEP_ALL, SKY};
 
 use crate::lake::{find_lake, lake_camera, mirrored, orbit_point};
 use crate::water_renderer::{Style, WaterRenderer, WaterSettings};
@@ -38,10 +39,13 @@ pub enum Display {
 pub struct Settings {
     pub water: WaterSettings,
     pub display: Display,
+    /// The plain in every picture as drawn before levels of detail
+    /// (`Setup::at_full_detail`).
+    pub full_detail: bool,
 }
 
 impl Settings {
-    pub const DEFAULT: Self = Self { water: WaterSettings::DEFAULT, display: Display::Lake };
+    pub const DEFAULT: Self = Self { water: WaterSettings::DEFAULT, display: Display::Lake, full_detail: false };
 }
 
 /// How high above the water the start camera stands, metres.
@@ -63,7 +67,7 @@ impl CameraPreset {
 }
 
 /// Every view, with the settings it applies and, for a preset, its camera.
-pub const VIEW_TABLE: [ViewRow<Settings, CameraPreset>; 6] = [
+pub const VIEW_TABLE: [ViewRow<Settings, CameraPreset>; 7] = [
     ViewRow::mode(
         "default",
         "the lake: reflection and refraction mixed by Fresnel, ripples and waves",
@@ -99,6 +103,11 @@ pub const VIEW_TABLE: [ViewRow<Settings, CameraPreset>; 6] = [
         },
         CameraPreset::CloseToWater,
     ),
+    ViewRow::bench(
+        "full-detail",
+        "bench: the lake as drawn before levels of detail, terrain and rocks at full detail in all three pictures",
+        Settings { full_detail: true, ..Settings::DEFAULT },
+    ),
 ];
 
 // ANCHOR: steering
@@ -130,8 +139,11 @@ struct Orbiting {
 /// frame draws three pictures, each from its own camera, so it keeps three
 /// of these, and all three pictures are recorded before one submit.
 struct Eye {
-    ground: Viewpoint,
+    plain: PlainViewpoint,
     sky: SkyViewpoint,
+    /// What the plain drew in this eye's last picture, where it was taken
+    /// in the last frame: counted on the CPU, or read back late from the GPU.
+    drawn: Option<Option<RocksDrawn>>,
 }
 
 /// Which of the frame's pictures an `Eye` draws.
@@ -185,14 +197,21 @@ impl WaterChapter {
         camera: &Camera,
         clip: Vec4,
         phase: f32,
-    ) {
-        let Eye { ground, sky } = &mut self.eyes[eye];
-        let detail = Detail::lod(colour.texture().height());
-        self.plain.aim(gpu, ground, camera, detail, sun_at(phase), clip);
+    ) -> Drawn {
+        let Eye { plain, sky, drawn } = &mut self.eyes[eye];
+        // The picture's own height: the half-size reflection and refraction
+        // see each rock half as many pixels across, and grade it so.
+        let rocks = if self.settings.full_detail { self.rocks.at_full_detail() } else { self.rocks };
+        let detail = rocks.detail(colour.texture().height());
+        self.plain.aim(gpu, plain, camera, detail, sun_at(phase), clip);
         self.sky.aim(&gpu.queue, sky, camera, phase);
+        // The rocks' compute pass, with this picture's clip plane: rocks
+        // wholly on the cut side of the water are never drawn.
+        self.plain.cull(gpu, encoder, timer, plain, rocks);
         let mut pass = scene_pass(encoder, timer, label, colour, SKY, depth);
-        self.plain.draw(&mut pass, ground, self.rocks);
-        self.sky.draw(&mut pass, sky);
+        let calls = self.plain.draw(&mut pass, plain, rocks);
+        *drawn = Some(calls.rocks_drawn);
+        calls.drawn() + self.sky.draw(&mut pass, sky)
     }
     // ANCHOR_END: picture
 
@@ -266,7 +285,8 @@ impl Chapter for WaterChapter {
         let (centre, size, level) = find_lake(field, &plain_camera(field, target.aspect()));
         let settings = Settings::DEFAULT;
         let water = WaterRenderer::new(gpu, &plain, centre, size, target, settings.water.resolution)?;
-        let eyes = std::array::from_fn(|_| Eye { ground: plain.terrain.viewpoint(device), sky: sky.viewpoint(device) });
+        let eyes =
+            std::array::from_fn(|_| Eye { plain: plain.viewpoint(device), sky: sky.viewpoint(device), drawn: None });
         let camera = lake_camera(field, centre, size, level, EYE_HEIGHT, target.aspect());
         Ok(Self {
             plain,
@@ -319,6 +339,12 @@ impl Chapter for WaterChapter {
         Some(&mut self.camera)
     }
 
+    fn before_first_frame(&mut self, _camera_placed: bool) {
+        if self.steering == Steering::Fly {
+            ground::first_frame(&mut self.camera, self.plain.terrain.field(), self.movement);
+        }
+    }
+
     fn update(&mut self, input: &Input, dt: f32) {
         match self.steering {
             Steering::Fly => {
@@ -331,6 +357,9 @@ impl Chapter for WaterChapter {
 
     // ANCHOR: render
     fn render(&mut self, gpu: &Gpu, frame: &mut Frame) {
+        for eye in &mut self.eyes {
+            eye.drawn = None;
+        }
         self.water.resize_pictures(&gpu.device, self.target, self.settings.water.resolution);
         let phase = (START_PHASE + frame.time / self.day_seconds).rem_euclid(1.0);
         self.camera.far = self.fog.far_plane();
@@ -346,7 +375,7 @@ impl Chapter for WaterChapter {
             let above = Vec4::new(0.0, 1.0, 0.0, -self.level + bias);
             let targets = (&reflection.colour, &reflection.depth);
             let mirror = mirrored(&camera, self.level);
-            self.take_picture(
+            let picture = self.take_picture(
                 gpu,
                 frame.encoder,
                 frame.timer,
@@ -356,12 +385,13 @@ impl Chapter for WaterChapter {
                 above,
                 phase,
             );
+            frame.drawn.add("reflection", picture);
         }
         // 2. The refraction: from the camera, keeping what is below the water.
         if pictures && display != Display::Reflection {
             let below = Vec4::new(0.0, -1.0, 0.0, self.level + bias);
             let targets = (&refraction.colour, &refraction.depth);
-            self.take_picture(
+            let picture = self.take_picture(
                 gpu,
                 frame.encoder,
                 frame.timer,
@@ -371,17 +401,28 @@ impl Chapter for WaterChapter {
                 below,
                 phase,
             );
+            frame.drawn.add("refraction", picture);
         }
         match display {
-            Display::Reflection => return self.water.show(frame, 0),
-            Display::Refraction => return self.water.show(frame, 1),
+            Display::Reflection => return frame.drawn.add("show picture", self.water.show(frame, 0)),
+            Display::Refraction => return frame.drawn.add("show picture", self.water.show(frame, 1)),
             Display::Lake => {}
         }
 
         // 3. The scene itself, whole.
         let depth = self.depth.clone();
         let targets = (frame.target, &depth);
-        self.take_picture(gpu, frame.encoder, frame.timer, ("plain and sky", MAIN), targets, &camera, KEEP_ALL, phase);
+        let picture = self.take_picture(
+            gpu,
+            frame.encoder,
+            frame.timer,
+            ("plain and sky", MAIN),
+            targets,
+            &camera,
+            KEEP_ALL,
+            phase,
+        );
+        frame.drawn.add("plain and sky", picture);
 
         // 4. The water on top, reading both pictures (or, in seed 003's style, its texture).
         self.water.aim(&gpu.queue, self.level, frame.time, &camera, self.settings.water);
@@ -401,7 +442,7 @@ impl Chapter for WaterChapter {
             timestamp_writes: frame.timer.pass("water surface"),
             ..Default::default()
         });
-        self.water.draw(&mut pass, &self.plain, &self.eyes[MAIN].ground, style);
+        frame.drawn.add("water surface", self.water.draw(&mut pass, &self.plain, &self.eyes[MAIN].plain, style));
     }
     // ANCHOR_END: render
 
@@ -426,6 +467,11 @@ impl Chapter for WaterChapter {
         ui.checkbox(&mut s.fresnel, "Fresnel");
         let (width, height) = self.water.pictures_size();
         ui.label(format!("water level {:.1} m; pictures {width}×{height}", self.level));
+        // Read back from the GPU a frame or two late.
+        ui.label(rocks_per_picture(self.eyes.each_ref().map(|eye| eye.drawn.flatten())));
+        if let Some(fallback) = self.plain.culling_fallback() {
+            ui.label(fallback);
+        }
         ui.separator();
         ui.add(egui::Slider::new(&mut self.day_seconds, 10.0..=1200.0).logarithmic(true).text("day length (s)"));
         ui.add(egui::Slider::new(&mut self.fog.density, 0.0..=0.01).logarithmic(true).text("fog density"));
@@ -442,10 +488,31 @@ impl Chapter for WaterChapter {
         }
     }
 
-    fn stats(&mut self, _gpu: &Gpu) -> String {
+    fn stats(&mut self, gpu: &Gpu) -> String {
         let (width, height) = self.water.pictures_size();
-        format!("pictures {width}×{height}; {} rocks in each picture", self.rocks.rocks.min(self.plain.rocks_placed()))
+        // Waiting for the GPU's counts of the last frame's pictures.
+        let drawn =
+            self.eyes.each_ref().map(|eye| eye.drawn.map(|_| self.plain.rocks_drawn_now(gpu, &eye.plain, self.rocks)));
+        let fallback = self.plain.culling_fallback().map_or(String::new(), |line| format!("; {line}"));
+        format!(
+            "pictures {width}×{height}; {} rocks in the world; {}{fallback}",
+            thousands(self.rocks.rocks.min(self.plain.rocks_placed()).into()),
+            rocks_per_picture(drawn)
+        )
     }
+}
+
+/// "rocks drawn: reflection 1,200 (5,000 triangles), …", for each of the
+/// frame's pictures that was drawn and counted.
+fn rocks_per_picture(drawn: [Option<RocksDrawn>; 3]) -> String {
+    let names = [(REFLECTION, "reflection"), (REFRACTION, "refraction"), (MAIN, "plain and sky")];
+    let pictures: Vec<String> = (names.iter())
+        .filter_map(|&(eye, name)| {
+            let drawn = drawn[eye]?;
+            Some(format!("{name} {} ({} triangles)", thousands(drawn.rocks.into()), thousands(drawn.triangles as f64)))
+        })
+        .collect();
+    format!("rocks drawn: {}", if pictures.is_empty() { "counting…".to_string() } else { pictures.join(", ") })
 }
 
 // ANCHOR: edit_waves

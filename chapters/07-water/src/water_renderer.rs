@@ -10,11 +10,11 @@ use common::glam::Vec2;
 use common::texture::{ColorSpace, Texture, depth_test, depth_view};
 use common::wgpu::util::DeviceExt as _;
 use common::{
-    Camera, Frame, Gpu, Mesh, MeshData, Reloadable, ShaderError, ShaderFile, Target, anyhow, fullscreen, primitives,
-    shader, wgpu,
+    Camera, Drawn, Frame, Gpu, Mesh, MeshData, Reloadable, ShaderError, ShaderFile, Target, anyhow, fullscreen,
+    primitives, shader, wgpu,
 };
-use instancing::MarsPlain;
-use terrain::{SKY, Viewpoint};
+use instancing::{MarsPlain, PlainViewpoint};
+use terrain::SKY;
 
 use crate::waves::WaveSet;
 
@@ -293,11 +293,12 @@ impl WaterRenderer {
     }
 
     /// Draws picture `which` (0 reflection, 1 refraction) over the whole frame.
-    pub fn show(&self, frame: &mut Frame, which: usize) {
+    pub fn show(&self, frame: &mut Frame, which: usize) -> Drawn {
         let mut pass = fullscreen::pass(frame.encoder, frame.timer, "show picture", frame.target, Some(SKY));
         pass.set_pipeline(&self.pipelines.get().show);
         pass.set_bind_group(0, &self.show_groups[which], &[]);
         pass.draw(0..3, 0..1);
+        Drawn::FULL_SCREEN
     }
 
     // ANCHOR: aim
@@ -319,20 +320,26 @@ impl WaterRenderer {
     }
     // ANCHOR_END: aim
 
-    /// Draws the surface in `style` into `pass`, seen from `ground` (a
-    /// viewpoint of `plain`'s terrain, aimed from the same camera as
-    /// `aim`), in `plain`'s fog. `Style::Pictures` reads the reflection
+    /// Draws the surface in `style` into `pass`, seen from `viewpoint` (a
+    /// viewpoint of `plain`, aimed from the same camera as `aim`: the water
+    /// reads its terrain uniforms), in `plain`'s fog. `Style::Pictures` reads the reflection
     /// and refraction pictures, which must have been drawn this frame.
-    pub fn draw(&self, pass: &mut wgpu::RenderPass<'_>, plain: &MarsPlain, ground: &Viewpoint, style: Style) {
+    pub fn draw(
+        &self,
+        pass: &mut wgpu::RenderPass<'_>,
+        plain: &MarsPlain,
+        viewpoint: &PlainViewpoint,
+        style: Style,
+    ) -> Drawn {
         let pipelines = self.pipelines.get();
         pass.set_pipeline(match style {
             Style::Pictures => &pipelines.pictures,
             Style::Texture => &pipelines.texture,
         });
-        plain.terrain.bind(pass, ground);
+        plain.terrain.bind(pass, &viewpoint.ground);
         pass.set_bind_group(1, &plain.fog.group, &[]);
         pass.set_bind_group(2, &self.water_group, &[]);
-        self.grid.draw(pass, 0..1);
+        self.grid.draw(pass, 0..1)
     }
 }
 

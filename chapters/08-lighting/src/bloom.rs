@@ -10,7 +10,10 @@
 
 use common::chapter::{FILTERABLE, sampler_entry, texture_entry, uniform_entry};
 use common::wgpu::util::DeviceExt as _;
-use common::{Gpu, PassTimer, Reloadable, ShaderError, ShaderFile, fullscreen, shader, wgpu};
+use common::{Drawn, Gpu, PassCount, PassTimer, Reloadable, ShaderError, ShaderFile, fullscreen, shader, wgpu};
+
+/// The name the chain's passes are timed and counted by, as one.
+const CHAIN: &str = "bloom chain";
 
 /// What the overlay changes.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -254,7 +257,8 @@ impl Bloom {
     /// Records the chain: the bright part of `source` (an HDR picture of
     /// the size given to `new` or `resize`) downsampled level by level, then
     /// upsampled back, each level blended into the one above. Timed as one
-    /// span, "bloom chain".
+    /// span, "bloom chain", and counted as one: a full-screen triangle a
+    /// pass.
     pub fn render(
         &self,
         gpu: &Gpu,
@@ -262,13 +266,14 @@ impl Bloom {
         timer: &PassTimer,
         source: &wgpu::TextureView,
         settings: &BloomSettings,
-    ) {
+    ) -> PassCount {
         let params = Params { threshold: settings.threshold, knee: settings.knee.max(1e-4), prefilter: 1, _padding: 0 };
         gpu.queue.write_buffer(&self.params[1], 0, bytemuck::bytes_of(&params));
         let first = self.read_group(&gpu.device, source, 1);
         let (downsample, upsample) = self.pipelines.get();
         let passes = 2 * self.levels.len() - 1;
         let mut index = 0;
+        let mut drawn = Drawn::NOTHING;
         // Down: source → level 0 (taking out the bright part), level i → level i + 1.
         for (i, level) in self.levels.iter().enumerate() {
             let input = if i == 0 { &first } else { &self.levels[i - 1].read };
@@ -276,6 +281,7 @@ impl Bloom {
             pass.set_pipeline(&downsample);
             pass.set_bind_group(0, input, &[]);
             pass.draw(0..3, 0..1);
+            drawn += Drawn::FULL_SCREEN;
             index += 1;
         }
         // Up: level i + 1 → blended into level i, from the smallest.
@@ -290,8 +296,10 @@ impl Bloom {
             });
             pass.set_bind_group(0, &self.levels[i + 1].read, &[]);
             pass.draw(0..3, 0..1);
+            drawn += Drawn::FULL_SCREEN;
             index += 1;
         }
+        PassCount { pass: CHAIN, drawn }
     }
     // ANCHOR_END: render
 
@@ -313,7 +321,7 @@ impl Bloom {
                 resolve_target: None,
                 ops: wgpu::Operations { load, store: wgpu::StoreOp::Store },
             })],
-            timestamp_writes: timer.chain("bloom chain", index, passes),
+            timestamp_writes: timer.chain(CHAIN, index, passes),
             ..Default::default()
         })
     }

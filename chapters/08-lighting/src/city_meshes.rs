@@ -5,7 +5,7 @@
 
 use common::chapter::mesh_pipeline;
 use common::glam::{Mat3, Mat4, Vec3};
-use common::{Gpu, Mesh, MeshData, ShaderError, ShaderFile, Vertex, shader, wgpu};
+use common::{Drawn, Gpu, Mesh, MeshData, ShaderError, ShaderFile, Vertex, shader, wgpu};
 
 use crate::city::{Material, Piece, Shape};
 use crate::countryside;
@@ -224,15 +224,18 @@ impl CityMeshes {
         gpu.queue.write_buffer(&self.instances, 0, bytemuck::cast_slice(&all));
     }
 
-    /// One instanced draw per mesh: the shapes', then (`models`) the models'.
-    pub(crate) fn draw(&self, pass: &mut wgpu::RenderPass<'_>, faceted: bool, models: bool) {
+    /// One instanced draw per mesh: the shapes', then (`models`) the
+    /// models'. Returns what the draws drew.
+    pub(crate) fn draw(&self, pass: &mut wgpu::RenderPass<'_>, faceted: bool, models: bool) -> Drawn {
         pass.set_vertex_buffer(1, self.instances.slice(..));
         let meshes = if faceted { &self.faceted } else { &self.smooth };
         let count = if models { meshes.len() } else { Shape::ALL.len() };
+        let mut drawn = Drawn::NOTHING;
         for (mesh, range) in meshes.iter().zip(&self.ranges).take(count) {
             if !range.is_empty() {
-                mesh.draw(pass, range.clone());
+                drawn += mesh.draw(pass, range.clone());
             }
         }
+        drawn
     }
 }

@@ -5,7 +5,7 @@
 
 use common::chapter::uniform_entry;
 use common::glam::{Mat4, Vec3};
-use common::{Camera, Gpu, Reloadable, ShaderError, fullscreen, shader, wgpu};
+use common::{Camera, Drawn, Gpu, Reloadable, ShaderError, fullscreen, shader, wgpu};
 
 use crate::lights::Daylight;
 use crate::post::HDR_FORMAT;
@@ -87,10 +87,12 @@ impl CitySky {
         gpu.queue.write_buffer(&self.uniform, 0, bytemuck::bytes_of(&sky));
     }
 
-    pub fn draw(&self, pass: &mut wgpu::RenderPass<'_>) {
+    /// Draws the sky behind what the pass drew before; returns what that drew.
+    pub fn draw(&self, pass: &mut wgpu::RenderPass<'_>) -> Drawn {
         pass.set_pipeline(&self.pipeline.get());
         pass.set_bind_group(1, &self.group, &[]);
         pass.draw(0..3, 0..1);
+        Drawn::FULL_SCREEN
     }
 }
 // ANCHOR_END: sky

@@ -660,6 +660,14 @@ impl Chapter for LightingChapter {
         Some(&mut self.camera)
     }
 
+    fn before_first_frame(&mut self, camera_placed: bool) {
+        // `--camera` on a view that rides a car or a drone: look from
+        // there, as when the learner takes the keys.
+        if camera_placed {
+            self.riding = None;
+        }
+    }
+
     fn update(&mut self, input: &Input, dt: f32) {
         let moving = [KeyCode::KeyW, KeyCode::KeyA, KeyCode::KeyS, KeyCode::KeyD, KeyCode::ArrowUp, KeyCode::ArrowDown];
         if moving.iter().any(|&k| input.held(k)) {
@@ -735,11 +743,12 @@ impl Chapter for LightingChapter {
                 Shading::Gouraud => &pipelines.gouraud,
                 Shading::Phong => &pipelines.phong,
             });
-            self.meshes.draw(&mut pass, s.shading == Shading::Flat, s.countryside);
+            let mut drawn = self.meshes.draw(&mut pass, s.shading == Shading::Flat, s.countryside);
             // The sky is a background, not light a surface reflects.
             if !matches!(s.display, Display::Term(_)) {
-                self.sky.draw(&mut pass);
+                drawn += self.sky.draw(&mut pass);
             }
+            frame.drawn.add("scene", drawn);
         }
 
         // Bloom, then tone mapping to the target.

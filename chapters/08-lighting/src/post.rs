@@ -8,7 +8,7 @@
 //! Chapters 08 to 11 finish their frames with it.
 
 use common::chapter::{FILTERABLE, sampler_entry, texture_entry, uniform_entry};
-use common::{Frame, Gpu, Reloadable, ShaderError, Target, fullscreen, shader, wgpu};
+use common::{Drawn, Frame, Gpu, Reloadable, ShaderError, Target, fullscreen, shader, wgpu};
 
 use crate::bloom::{Bloom, BloomSettings};
 
@@ -128,11 +128,11 @@ impl PostChain {
 
     /// Records the end of the frame: the bloom over the HDR picture (if
     /// `settings` asks for it and the output shows it), then the tone map
-    /// into `frame.target`.
+    /// into `frame.target`; both counted in `frame.drawn`.
     pub fn finish(&self, gpu: &Gpu, frame: &mut Frame, settings: &PostSettings) {
         let bloom = settings.bloom.filter(|_| settings.output != PostOutput::RawHdr);
         if let Some(bloom) = &bloom {
-            self.bloom.render(gpu, frame.encoder, frame.timer, &self.hdr.colour, bloom);
+            frame.drawn.extend([self.bloom.render(gpu, frame.encoder, frame.timer, &self.hdr.colour, bloom)]);
         }
         let strength = bloom.map_or(0.0, |b| b.strength);
         self.tone_map.draw(gpu, frame, settings.exposure, strength, settings.output);
@@ -252,7 +252,8 @@ impl ToneMap {
     }
 
     /// Draws `output` into `frame.target`, the bloom weighted by
-    /// `bloom_strength` and the light scaled by `exposure`.
+    /// `bloom_strength` and the light scaled by `exposure`; counted in
+    /// `frame.drawn` as "tone map".
     pub fn draw(&self, gpu: &Gpu, frame: &mut Frame, exposure: f32, bloom_strength: f32, output: PostOutput) {
         let uniform = CompositeUniform { exposure, bloom_strength, mode: output.shader_mode(), _padding: 0 };
         gpu.queue.write_buffer(&self.uniform, 0, bytemuck::bytes_of(&uniform));
@@ -260,6 +261,7 @@ impl ToneMap {
         pass.set_pipeline(&self.pipeline.get());
         pass.set_bind_group(0, &self.group, &[]);
         pass.draw(0..3, 0..1);
+        frame.drawn.add("tone map", Drawn::FULL_SCREEN);
     }
 }
 // ANCHOR_END: tonemap

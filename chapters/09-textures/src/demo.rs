@@ -700,10 +700,11 @@ impl Chapter for TexturesChapter {
                 swapped_colour_spaces: s.swapped_colour_spaces,
                 show_frame: s.show_frame,
             };
-            self.renderer.draw(gpu, &mut pass, &surfaces, self.target.width, &list);
+            let mut drawn = self.renderer.draw(gpu, &mut pass, &surfaces, self.target.width, &list);
             if !s.show_frame {
-                self.sky.draw(&mut pass);
+                drawn += self.sky.draw(&mut pass);
             }
+            frame.drawn.add("scene", drawn);
         }
 
         // Bloom, then tone mapping to the target (chapter 08's). The

@@ -9,7 +9,7 @@ use std::collections::HashMap;
 use std::sync::{Arc, Mutex};
 
 use common::chapter::{FILTERABLE, sampler_entry, texture_entry};
-use common::{Gpu, Reloadable, ShaderError, fullscreen, shader, wgpu};
+use common::{Drawn, Gpu, Reloadable, ShaderError, fullscreen, shader, wgpu};
 
 /// Levels in a full chain for a `width × height` texture, down to 1 × 1.
 pub fn level_count(width: u32, height: u32) -> u32 {
@@ -94,13 +94,14 @@ impl MipMaker {
 
     /// Records the passes that fill levels 1.. of `texture` from level 0.
     /// The texture needs `RENDER_ATTACHMENT` and `TEXTURE_BINDING` usage.
+    /// Returns what they drew: a full-screen triangle a level.
     pub fn generate(
         &self,
         device: &wgpu::Device,
         encoder: &mut wgpu::CommandEncoder,
         texture: &wgpu::Texture,
         averaging: Averaging,
-    ) {
+    ) -> Drawn {
         let pipeline = self.pipelines.get().get(device, texture.format(), averaging);
         let level_view = |level| {
             texture.create_view(&wgpu::TextureViewDescriptor {
@@ -109,6 +110,7 @@ impl MipMaker {
                 ..Default::default()
             })
         };
+        let mut drawn = Drawn::NOTHING;
         for level in 1..texture.mip_level_count() {
             let above = level_view(level - 1);
             let group = device.create_bind_group(&wgpu::BindGroupDescriptor {
@@ -136,7 +138,9 @@ impl MipMaker {
             pass.set_pipeline(&pipeline);
             pass.set_bind_group(0, &group, &[]);
             pass.draw(0..3, 0..1);
+            drawn += Drawn::FULL_SCREEN;
         }
+        drawn
     }
 }
 // ANCHOR_END: maker

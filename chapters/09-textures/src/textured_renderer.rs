@@ -5,7 +5,7 @@
 //! [`upload_model`], which puts a model and its materials on the GPU.
 
 use common::chapter::{mesh_pipeline, sampler_entry, storage_entry};
-use common::{Gpu, Reloadable, ShaderError, shader, wgpu};
+use common::{Drawn, Gpu, Reloadable, ShaderError, shader, wgpu};
 use lighting::{HDR_FORMAT, SceneLights, Shading};
 
 use crate::materials::{Materials, SamplerMode, Uploader};
@@ -70,9 +70,10 @@ impl DrawList<'_> {
     /// Draws every model, one draw per part with its material in group 1
     /// (`swapped`: the material's views in the other colour space), into a
     /// pass whose pipeline and other groups are set. Chapter 10 draws its
-    /// level with this too.
-    pub fn draw(&self, pass: &mut wgpu::RenderPass<'_>, swapped: bool) {
+    /// level with this too. Returns what the draws drew.
+    pub fn draw(&self, pass: &mut wgpu::RenderPass<'_>, swapped: bool) -> Drawn {
         pass.set_vertex_buffer(1, self.instances.slice(..));
+        let mut drawn = Drawn::NOTHING;
         for draw in &self.draws {
             if draw.instances.is_empty() {
                 continue;
@@ -83,8 +84,10 @@ impl DrawList<'_> {
                 let material = &self.materials.list[draw.model.first_material + part.material];
                 pass.set_bind_group(1, if swapped { &material.swapped_group } else { &material.group }, &[]);
                 pass.draw_indexed(part.indices.clone(), 0, draw.instances.clone());
+                drawn += Drawn::triangle_list(part.indices.clone(), draw.instances.clone());
             }
         }
+        drawn
     }
 }
 // ANCHOR_END: draw_list
@@ -145,7 +148,7 @@ impl TexturedRenderer {
 
     // ANCHOR: draw
     /// Draws `draws` into `pass`, whose group 0 must already be the scene's
-    /// lights; `instances` holds every draw's instances.
+    /// lights; `instances` holds every draw's instances. Returns what it drew.
     pub fn draw(
         &self,
         gpu: &Gpu,
@@ -153,7 +156,7 @@ impl TexturedRenderer {
         settings: &SurfaceOptions,
         target_width: u32,
         list: &DrawList,
-    ) {
+    ) -> Drawn {
         let options = ViewOptions {
             flip_green: u32::from(settings.flip_green),
             target_width: target_width as f32,
@@ -170,7 +173,7 @@ impl TexturedRenderer {
             (false, Shading::Phong, false) => &pipelines.plain,
         });
         pass.set_bind_group(2, &self.sampler_groups[mode], &[]);
-        list.draw(pass, settings.swapped_colour_spaces);
+        list.draw(pass, settings.swapped_colour_spaces)
     }
     // ANCHOR_END: draw
 }

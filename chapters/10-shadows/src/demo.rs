@@ -595,7 +595,7 @@ impl Chapter for ShadowsChapter {
         };
 
         // Pass one: the sun's view, depth only.
-        self.shadow_map.render(gpu, frame.encoder, frame.timer, &s.shadow, &list);
+        frame.drawn.extend([self.shadow_map.render(gpu, frame.encoder, frame.timer, &s.shadow, &list)]);
         if s.show == Show::ShadowMap {
             let range = visible.map(|p| light.view_proj.project_point3(p).z);
             let (lo, hi) = range.iter().fold((f32::MAX, f32::MIN), |(lo, hi), z| (lo.min(*z), hi.max(*z)));
@@ -619,6 +619,7 @@ impl Chapter for ShadowsChapter {
                     .collect(),
             };
             self.cube_cost = self.point_shadow.render(frame.encoder, frame.timer, &casters);
+            frame.drawn.extend([self.cube_cost.pass_count()]);
         }
         if s.show == Show::CubeMap {
             self.cube_view.draw(gpu, frame, self.target);
@@ -636,11 +637,12 @@ impl Chapter for ShadowsChapter {
                 &self.post.hdr().depth,
             );
             pass.set_bind_group(0, &self.scene_lights.group, &[]);
-            self.renderer.draw(&mut pass, &self.shadow_map, &list, s.show == Show::Sunlit);
+            let mut drawn = self.renderer.draw(&mut pass, &self.shadow_map, &list, s.show == Show::Sunlit);
             if s.show == Show::Scene {
-                self.parallax.draw(gpu, &mut pass, day.horizon, s.tint_layers);
-                self.sky.draw(&mut pass);
+                drawn += self.parallax.draw(gpu, &mut pass, day.horizon, s.tint_layers);
+                drawn += self.sky.draw(&mut pass);
             }
+            frame.drawn.add("scene", drawn);
         }
         // What the tests count is shown as it is, not tone-mapped.
         let output = if s.show == Show::Sunlit { PostOutput::RawHdr } else { PostOutput::Picture };
@@ -656,7 +658,8 @@ impl Chapter for ShadowsChapter {
             lines.box_edges(&light.corners(), Vec4::new(1.0, 0.85, 0.1, 1.0));
             lines.box_edges(&visible, Vec4::new(0.2, 0.9, 1.0, 1.0));
         }
-        self.lines.draw(gpu, frame.encoder, frame.timer, frame.target, camera.view_projection(), &lines);
+        let drawn = self.lines.draw(gpu, frame.encoder, frame.timer, frame.target, camera.view_projection(), &lines);
+        frame.drawn.extend(drawn);
     }
     // ANCHOR_END: render
 

@@ -3,7 +3,7 @@
 
 use common::chapter::uniform_entry;
 use common::glam::{Mat4, Vec3, Vec4};
-use common::{Gpu, Reloadable, ShaderError, shader, wgpu};
+use common::{Drawn, Gpu, PassCount, Reloadable, ShaderError, shader, wgpu};
 
 /// A corner of a line.
 #[repr(C)]
@@ -139,9 +139,9 @@ impl Lines {
         target: &wgpu::TextureView,
         view_proj: Mat4,
         list: &LineList,
-    ) {
+    ) -> Option<PassCount> {
         if list.0.is_empty() {
-            return;
+            return None;
         }
         let bytes = std::mem::size_of_val(list.0.as_slice()) as u64;
         if bytes > self.vertices.size() {
@@ -154,5 +154,6 @@ impl Lines {
         pass.set_bind_group(0, &self.group, &[]);
         pass.set_vertex_buffer(0, self.vertices.slice(..));
         pass.draw(0..list.0.len() as u32, 0..1);
+        Some(PassCount { pass: "lines", drawn: Drawn::POINTS_OR_LINES })
     }
 }

@@ -9,7 +9,7 @@ use std::path::Path;
 use common::chapter::{FILTERABLE, sampler_entry, texture_entry, uniform_entry};
 use common::glam::Vec3;
 use common::texture::ColorSpace;
-use common::{Gpu, Reloadable, ShaderError, anyhow, shader, wgpu};
+use common::{Drawn, Gpu, Reloadable, ShaderError, anyhow, shader, wgpu};
 use lighting::{HDR_FORMAT, SceneLights};
 use textures::materials::{Uploader, upload};
 
@@ -177,7 +177,8 @@ impl Parallax {
     }
 
     /// Draws the layers; group 0 of `pass` must be the scene's lights.
-    pub fn draw(&self, gpu: &Gpu, pass: &mut wgpu::RenderPass<'_>, horizon: Vec3, tint_by_depth: bool) {
+    /// Returns what it drew: two triangles a layer.
+    pub fn draw(&self, gpu: &Gpu, pass: &mut wgpu::RenderPass<'_>, horizon: Vec3, tint_by_depth: bool) -> Drawn {
         let uniform = LayersUniform {
             horizon: horizon.extend(1.0).into(),
             haze: [LAYERS[0].haze, LAYERS[1].haze, LAYERS[2].haze, 0.0],
@@ -187,10 +188,13 @@ impl Parallax {
         gpu.queue.write_buffer(&self.uniform, 0, bytemuck::bytes_of(&uniform));
         pass.set_pipeline(&self.pipeline.get());
         pass.set_vertex_buffer(0, self.vertices.slice(..));
+        let mut drawn = Drawn::NOTHING;
         for (index, group) in self.groups.iter().enumerate() {
             pass.set_bind_group(1, group, &[]);
             let first = 6 * index as u32;
             pass.draw(first..first + 6, 0..1);
+            drawn += Drawn::triangle_list(first..first + 6, 0..1);
         }
+        drawn
     }
 }

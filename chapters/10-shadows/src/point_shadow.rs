@@ -15,7 +15,7 @@
 
 use common::chapter::uniform_entry;
 use common::glam::{Mat4, Vec2, Vec3, Vec4};
-use common::{Gpu, PassTimer, Reloadable, ShaderError, Target, shader, wgpu};
+use common::{Drawn, Gpu, PassCount, PassTimer, Reloadable, ShaderError, Target, shader, wgpu};
 use lighting::lights::Light;
 use textures::DrawList;
 use textures::mesh::{ModelInstance, TexturedVertex};
@@ -210,6 +210,13 @@ pub struct CubeCost {
     pub draw_calls: u32,
     /// Triangles submitted, over all six passes (instances counted).
     pub triangles: u64,
+}
+
+impl CubeCost {
+    /// The six passes as the frame's counts know them: one pass, as they are timed.
+    pub fn pass_count(&self) -> PassCount {
+        PassCount { pass: "lantern shadow", drawn: Drawn::counted(self.draw_calls, self.triangles) }
+    }
 }
 
 /// `PointShadow` in point_shadow.wgsl: 64 bytes.
@@ -625,5 +632,6 @@ impl CubeView {
         pass.set_pipeline(&self.pipeline.get());
         pass.set_bind_group(0, &self.group, &[]);
         pass.draw(0..3, 0..1);
+        frame.drawn.add("cube view", Drawn::FULL_SCREEN);
     }
 }

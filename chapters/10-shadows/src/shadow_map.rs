@@ -6,7 +6,7 @@
 
 use common::chapter::{storage_entry, texture_entry, uniform_entry};
 use common::glam::{Mat4, Vec3};
-use common::{Gpu, PassTimer, Reloadable, ShaderError, shader, wgpu};
+use common::{Drawn, Gpu, PassCount, PassTimer, Reloadable, ShaderError, shader, wgpu};
 use textures::DrawList;
 use textures::mesh::{ModelInstance, TexturedVertex};
 
@@ -478,7 +478,7 @@ impl ShadowMap {
 
     // ANCHOR: render
     /// The shadow pass: the depth of every model in `casters`, as the sun
-    /// sees it (their materials play no part).
+    /// sees it (their materials play no part). Returns what it drew.
     pub fn render(
         &mut self,
         gpu: &Gpu,
@@ -486,7 +486,7 @@ impl ShadowMap {
         timer: &PassTimer,
         settings: &ShadowSettings,
         casters: &DrawList,
-    ) {
+    ) -> PassCount {
         let (bias, cull) = caster_key(settings);
         if (self.caster.0, self.caster.1) != (bias, cull) {
             // While caster.wgsl is broken on disk (the window says why), the
@@ -510,13 +510,16 @@ impl ShadowMap {
         pass.set_pipeline(&pipeline);
         pass.set_bind_group(0, &self.caster_group, &[]);
         pass.set_vertex_buffer(1, casters.instances.slice(..));
+        let mut drawn = Drawn::NOTHING;
         for draw in casters.draws.iter().filter(|d| !d.instances.is_empty()) {
             pass.set_vertex_buffer(0, draw.model.vertices.slice(..));
             pass.set_index_buffer(draw.model.indices.slice(..), wgpu::IndexFormat::Uint32);
             for part in &draw.model.parts {
                 pass.draw_indexed(part.indices.clone(), 0, draw.instances.clone());
+                drawn += Drawn::triangle_list(part.indices.clone(), draw.instances.clone());
             }
         }
+        PassCount { pass: "shadow map", drawn }
     }
     // ANCHOR_END: render
 }
@@ -602,5 +605,6 @@ impl MapView {
         pass.set_pipeline(&self.pipeline.get());
         pass.set_bind_group(0, &group, &[]);
         pass.draw(0..3, 0..1);
+        frame.drawn.add("shadow map view", Drawn::FULL_SCREEN);
     }
 }

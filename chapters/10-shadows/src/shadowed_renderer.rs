@@ -6,7 +6,7 @@
 //! Chapter 11 draws its boat with it, without a point light.
 
 use common::chapter::{mesh_pipeline, sampler_entry};
-use common::{Gpu, Reloadable, ShaderError, shader, wgpu};
+use common::{Drawn, Gpu, Reloadable, ShaderError, shader, wgpu};
 use lighting::{HDR_FORMAT, SceneLights};
 use textures::DrawList;
 use textures::materials::{Materials, SamplerMode};
@@ -115,12 +115,19 @@ impl ShadowedRenderer {
     /// `sunlit_only` draws what the tests count instead of the picture:
     /// red the sun that arrives, green whether the surface faces the sun,
     /// and blue, with a point light, how much of its light arrives.
-    pub fn draw(&self, pass: &mut wgpu::RenderPass<'_>, shadow: &ShadowMap, list: &DrawList, sunlit_only: bool) {
+    /// Returns what it drew.
+    pub fn draw(
+        &self,
+        pass: &mut wgpu::RenderPass<'_>,
+        shadow: &ShadowMap,
+        list: &DrawList,
+        sunlit_only: bool,
+    ) -> Drawn {
         let (lit, sunlit) = self.pipelines.get();
         pass.set_pipeline(if sunlit_only { &sunlit } else { &lit });
         pass.set_bind_group(2, &self.sampler_group, &[]);
         pass.set_bind_group(3, &shadow.group, &[]);
-        list.draw(pass, false);
+        list.draw(pass, false)
     }
     // ANCHOR_END: draw
 }

@@ -9,7 +9,7 @@ use common::chapter::{FILTERABLE, sampler_entry, texture_entry, uniform_entry};
 use common::glam::{Mat4, Vec3};
 use common::image::RgbaImage;
 use common::texture::ColorSpace;
-use common::{Camera, Gpu, Reloadable, ShaderError, anyhow, fullscreen, shader, wgpu};
+use common::{Camera, Drawn, Gpu, Reloadable, ShaderError, anyhow, fullscreen, shader, wgpu};
 use lighting::lights::Daylight;
 
 /// The gradients, embedded so the binary runs from anywhere.
@@ -238,10 +238,12 @@ impl Sky {
         .map_err(ShaderError)
     }
 
-    pub fn draw(&self, pass: &mut wgpu::RenderPass<'_>, atmosphere: &Atmosphere) {
+    /// Draws the sky behind what the pass drew before; returns what that drew.
+    pub fn draw(&self, pass: &mut wgpu::RenderPass<'_>, atmosphere: &Atmosphere) -> Drawn {
         pass.set_pipeline(&self.pipeline.get());
         pass.set_bind_group(1, &atmosphere.group, &[]);
         pass.draw(0..3, 0..1);
+        Drawn::FULL_SCREEN
     }
 }
 

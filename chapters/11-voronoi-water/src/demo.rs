@@ -519,13 +519,13 @@ impl Chapter for VoronoiWaterChapter {
         let sites = sites::wandering(s.sites, sites::DEFAULT_SEED, time);
         if s.show == Show::Cells {
             let size = (self.target.width, self.target.height);
-            self.voronoi.render(gpu, frame.encoder, frame.timer, &sites, size, &s.voronoi);
+            frame.drawn.extend([self.voronoi.render(gpu, frame.encoder, frame.timer, &sites, size, &s.voronoi)]);
             self.show.cells(gpu, frame, &self.water, self.voronoi.ids());
             return;
         }
         let size = s.texture_size;
-        self.voronoi.render(gpu, frame.encoder, frame.timer, &sites, (size, size), &s.voronoi);
-        self.water.render(gpu, frame.encoder, frame.timer, self.voronoi.ids(), size, &s.processing);
+        frame.drawn.extend([self.voronoi.render(gpu, frame.encoder, frame.timer, &sites, (size, size), &s.voronoi)]);
+        frame.drawn.extend(self.water.render(gpu, frame.encoder, frame.timer, self.voronoi.ids(), size, &s.processing));
         if let Show::Picture(picture) = s.show {
             self.show.picture(gpu, frame, &self.water, picture, self.target.aspect(), 1.5);
             return;
@@ -565,7 +565,7 @@ impl Chapter for VoronoiWaterChapter {
                 .collect(),
         };
         // ANCHOR_END: rig_draw
-        self.shadow_map.render(gpu, frame.encoder, frame.timer, &shadow, &list);
+        frame.drawn.extend([self.shadow_map.render(gpu, frame.encoder, frame.timer, &shadow, &list)]);
         if s.show == Show::ShadowMap {
             // Depths stretched over the boat's (its first eight points).
             let depths = focus.iter().take(8).map(|p| light.view_proj.project_point3(*p).z);
@@ -588,11 +588,12 @@ impl Chapter for VoronoiWaterChapter {
                 &self.post.hdr().depth,
             );
             pass.set_bind_group(0, &self.scene_lights.group, &[]);
-            self.sky.draw(&mut pass, &self.atmosphere);
-            self.islands.draw(&mut pass, &self.atmosphere);
+            let mut drawn = self.sky.draw(&mut pass, &self.atmosphere);
+            drawn += self.islands.draw(&mut pass, &self.atmosphere);
             pass.set_bind_group(3, &self.shadow_map.group, &[]);
-            self.sea.draw(&mut pass, s.small_grid, s.wires);
-            self.boat_renderer.draw(&mut pass, &self.shadow_map, &list, false);
+            drawn += self.sea.draw(&mut pass, s.small_grid, s.wires);
+            drawn += self.boat_renderer.draw(&mut pass, &self.shadow_map, &list, false);
+            frame.drawn.add("scene", drawn);
         }
         let output = if s.show == Show::BloomOnly { PostOutput::BloomOnly } else { PostOutput::Picture };
         let bloom = (s.bloom || output == PostOutput::BloomOnly).then(BloomSettings::default);

@@ -5,7 +5,7 @@
 
 use common::glam::{Vec2, Vec3};
 use common::noise::Fbm;
-use common::{Gpu, Reloadable, ShaderError, shader, wgpu};
+use common::{Drawn, Gpu, Reloadable, ShaderError, shader, wgpu};
 use lighting::{HDR_FORMAT, SceneLights};
 
 use crate::atmosphere::Atmosphere;
@@ -183,16 +183,20 @@ impl IslandRenderer {
         gpu.queue.write_buffer(&self.offsets, 0, bytemuck::cast_slice(&offsets));
     }
 
-    pub fn draw(&self, pass: &mut wgpu::RenderPass<'_>, atmosphere: &Atmosphere) {
+    /// Draws each island at its copy nearest the boat; returns what that drew.
+    pub fn draw(&self, pass: &mut wgpu::RenderPass<'_>, atmosphere: &Atmosphere) -> Drawn {
         pass.set_pipeline(&self.pipeline.get());
         pass.set_bind_group(1, &atmosphere.group, &[]);
         pass.set_vertex_buffer(0, self.vertices.slice(..));
         pass.set_vertex_buffer(1, self.offsets.slice(..));
         pass.set_index_buffer(self.indices.slice(..), wgpu::IndexFormat::Uint32);
+        let mut drawn = Drawn::NOTHING;
         for (k, range) in self.ranges.iter().enumerate() {
             let k = k as u32;
             pass.draw_indexed(range.clone(), 0, k..k + 1);
+            drawn += Drawn::triangle_list(range.clone(), k..k + 1);
         }
+        drawn
     }
 }
 

@@ -4,7 +4,7 @@
 
 use common::chapter::{FILTERABLE, mesh_pipeline, sampler_entry, texture_entry, uniform_entry};
 use common::glam::Vec2;
-use common::{Gpu, Reloadable, ShaderError, shader, wgpu};
+use common::{Drawn, Gpu, Reloadable, ShaderError, shader, wgpu};
 use lighting::{HDR_FORMAT, SceneLights};
 use shadows::shadow_map::ShadowMap;
 use water::waves::Wave;
@@ -335,19 +335,22 @@ impl SeaRenderer {
     // ANCHOR: draw
     /// Draws the sea into `pass`, whose groups 0, 1 and 3 must be the
     /// lights, the atmosphere and the shadow map; `wires` draws the grid's
-    /// edges over it.
-    pub fn draw(&self, pass: &mut wgpu::RenderPass<'_>, small: bool, wires: bool) {
+    /// edges over it. Returns what it drew.
+    pub fn draw(&self, pass: &mut wgpu::RenderPass<'_>, small: bool, wires: bool) -> Drawn {
         pass.set_bind_group(2, self.group.as_ref(), &[]);
         let (indices, count) = if small { &self.small } else { &self.whole };
         let ([lit, wire], _) = self.pipelines.get();
         pass.set_pipeline(&lit);
         pass.set_index_buffer(indices.slice(..), wgpu::IndexFormat::Uint32);
         pass.draw_indexed(0..*count, 0, 0..1);
+        let mut drawn = Drawn::triangle_list(0..*count, 0..1);
         if wires {
             pass.set_pipeline(&wire);
             pass.set_index_buffer(self.lines.0.slice(..), wgpu::IndexFormat::Uint32);
             pass.draw_indexed(0..self.lines.1, 0, 0..1);
+            drawn += Drawn::POINTS_OR_LINES;
         }
+        drawn
     }
     // ANCHOR_END: draw
 

@@ -5,7 +5,7 @@
 
 use common::chapter::uniform_entry;
 use common::glam::Vec2;
-use common::{Gpu, PassTimer, Reloadable, ShaderError, shader, wgpu};
+use common::{Drawn, Gpu, PassCount, PassTimer, Reloadable, ShaderError, shader, wgpu};
 
 use crate::sites;
 
@@ -342,7 +342,8 @@ impl Voronoi {
     }
 
     // ANCHOR: render
-    /// Makes the diagram of `sites` (tile coordinates) at `width` × `height`.
+    /// Makes the diagram of `sites` (tile coordinates) at `width` × `height`;
+    /// returns what its passes drew.
     pub fn render(
         &mut self,
         gpu: &Gpu,
@@ -351,7 +352,7 @@ impl Voronoi {
         sites: &[Vec2],
         (width, height): (u32, u32),
         settings: &VoronoiSettings,
-    ) {
+    ) -> PassCount {
         let device = &gpu.device;
         let steps = jump_steps(width.max(1), height.max(1), settings.extra_pass);
         if (width.max(1), height.max(1)) != self.size() || steps.len() != self.targets.step_groups.len() {
@@ -381,7 +382,7 @@ impl Voronoi {
         timer: &PassTimer,
         sites: &[Vec2],
         settings: &VoronoiSettings,
-    ) {
+    ) -> PassCount {
         let segments = settings.segments.clamp(3, 256);
         // The polygon's sides come closer to the site than its corners, by
         // cos(π / segments): put the corners farther out, so that even the
@@ -414,11 +415,15 @@ impl Voronoi {
         pass.set_bind_group(0, &self.sites_group, &[]);
         pass.draw(0..3 * segments, 0..sites.len() as u32 * copies);
         self.result = 0;
+        PassCount {
+            pass: "voronoi cones",
+            drawn: Drawn::triangle_list(0..3 * segments, 0..sites.len() as u32 * copies),
+        }
     }
     // ANCHOR_END: draw_cones
 
     // ANCHOR: flood
-    fn flood(&mut self, encoder: &mut wgpu::CommandEncoder, timer: &PassTimer, count: u32, steps: usize) {
+    fn flood(&mut self, encoder: &mut wgpu::CommandEncoder, timer: &PassTimer, count: u32, steps: usize) -> PassCount {
         let passes = steps + 1;
         let timing = |index| timer.chain("jump flooding", index, passes);
         let [.., seeds, step] = self.pipelines.get();
@@ -430,6 +435,8 @@ impl Voronoi {
             pass.set_bind_group(0, &self.sites_group, &[]);
             pass.draw(0..count, 0..1);
         }
+        // The sites are points; every step after them is one full-screen triangle.
+        let mut drawn = Drawn::POINTS_OR_LINES;
         // Each step reads one texture and writes the other.
         for i in 0..steps {
             let mut pass = id_pass(encoder, &self.targets.views[(i + 1) % 2], wgpu::LoadOp::Load, timing(i + 1));
@@ -437,8 +444,10 @@ impl Voronoi {
             pass.set_bind_group(0, &self.sites_group, &[]);
             pass.set_bind_group(1, &self.targets.step_groups[i], &[]);
             pass.draw(0..3, 0..1);
+            drawn += Drawn::FULL_SCREEN;
         }
         self.result = steps % 2;
+        PassCount { pass: "jump flooding", drawn }
     }
     // ANCHOR_END: flood
 }

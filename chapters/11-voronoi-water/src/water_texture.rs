@@ -4,7 +4,7 @@
 //! switched off, and every picture on the way shown full screen.
 
 use common::chapter::{sampler_entry, texture_entry, uniform_entry};
-use common::{Gpu, PassTimer, Reloadable, ShaderError, fullscreen, shader, wgpu};
+use common::{Drawn, Gpu, PassCount, PassTimer, Reloadable, ShaderError, fullscreen, shader, wgpu};
 use textures::mipmaps::{Averaging, MipMaker, level_count};
 
 /// The pictures' format: sRGB, so they are stored as they are seen and
@@ -208,7 +208,9 @@ impl WaterTexture {
     }
 
     // ANCHOR: render
-    /// Runs the chain on `ids`, a diagram of `size` × `size` pixels.
+    /// Runs the chain on `ids`, a diagram of `size` × `size` pixels;
+    /// returns what each of its passes drew (the water picture's mipmaps,
+    /// untimed, counted with it).
     pub fn render(
         &mut self,
         gpu: &Gpu,
@@ -217,7 +219,7 @@ impl WaterTexture {
         ids: &wgpu::TextureView,
         size: u32,
         settings: &Processing,
-    ) {
+    ) -> Vec<PassCount> {
         let device = &gpu.device;
         if size != self.size {
             self.size = size;
@@ -240,23 +242,28 @@ impl WaterTexture {
         gpu.queue.write_buffer(&self.uniform, 0, bytemuck::bytes_of(&uniform));
 
         let [colour, blur_across, blur_down, edges, water] = self.pipelines.get();
-        self.run(encoder, timer, "colour cells", &colour, None, COLOURS);
+        let mut drawn = vec![self.run(encoder, timer, "colour cells", &colour, None, COLOURS)];
         // Box blur across then down, twice: four passes, timed as one.
         self.blurred = COLOURS;
         if settings.blur_radius > 0 {
             let passes = [(&blur_across, COLOURS, BLUR_A), (&blur_down, BLUR_A, BLUR_B)];
+            let mut blur = Drawn::NOTHING;
             for round in 0..2 {
                 for (i, (pipeline, from, to)) in passes.iter().enumerate() {
                     let from = if round == 1 && *from == COLOURS { BLUR_B } else { *from };
                     let timing = timer.chain("blur", round * 2 + i, 4);
                     self.run_timed(encoder, timing, pipeline, Some(from), *to);
+                    blur += Drawn::FULL_SCREEN;
                 }
             }
+            drawn.push(PassCount { pass: "blur", drawn: blur });
             self.blurred = BLUR_B;
         }
-        self.run(encoder, timer, "edges", &edges, Some(self.blurred), EDGES);
-        self.run(encoder, timer, "water", &water, Some(self.blurred), WATER);
-        self.mips.generate(device, encoder, &self.stages[WATER].texture, Averaging::Colour);
+        drawn.push(self.run(encoder, timer, "edges", &edges, Some(self.blurred), EDGES));
+        let mut water = self.run(encoder, timer, "water", &water, Some(self.blurred), WATER);
+        water.drawn += self.mips.generate(device, encoder, &self.stages[WATER].texture, Averaging::Colour);
+        drawn.push(water);
+        drawn
     }
     // ANCHOR_END: render
 
@@ -268,8 +275,9 @@ impl WaterTexture {
         pipeline: &wgpu::RenderPipeline,
         from: Option<usize>,
         to: usize,
-    ) {
+    ) -> PassCount {
         self.run_timed(encoder, timer.pass(label), pipeline, from, to);
+        PassCount { pass: label, drawn: Drawn::FULL_SCREEN }
     }
 
     fn run_timed(
@@ -379,6 +387,7 @@ impl Show {
         pass.set_bind_group(1, water.group_of(picture), &[]);
         pass.set_bind_group(2, &self.group, &[]);
         pass.draw(0..3, 0..1);
+        frame.drawn.add("show picture", Drawn::FULL_SCREEN);
     }
 
     /// Draws the id buffer `ids` (the target's size) as the `cells` view's
@@ -399,6 +408,7 @@ impl Show {
         pass.set_bind_group(1, &water.stages[EDGES].group, &[]);
         pass.set_bind_group(2, &self.group, &[]);
         pass.draw(0..3, 0..1);
+        frame.drawn.add("show cells", Drawn::FULL_SCREEN);
     }
 
     fn write(&self, gpu: &Gpu, tiled: bool, aspect: f32, tiles: f32) {

@@ -1,14 +1,16 @@
 //! Workspace-level tests, one binary: the snapshot comparison and the
 //! bless log, the bench tables' check, real references painted out, and
 //! what needs more than one chapter's pieces (clip distances, the shader
-//! panel, hot reload, light culling, chapter 04's fog). (The snapshot test
-//! of every view is its own harness, `tests/snapshots.rs`.)
+//! panel, hot reload, light culling, chapter flags headless, the rocks'
+//! levels of detail, chapter 04's fog). (The snapshot test of every view
+//! is its own harness, `tests/snapshots.rs`.)
 //!
 //! One test binary per crate: each links wgpu, naga, egui and winit, so
 //! every extra file here would be another link of all of them.
 
 mod bench_tables;
 mod blessings;
+mod chapter_flags;
 mod clipping;
 mod comparison;
 mod editor;
@@ -16,4 +18,5 @@ mod fog;
 mod hot_reload;
 mod light_culling;
 mod references;
+mod rock_lod;
 mod try_it_links;

@@ -208,32 +208,26 @@ fn exercise_2_height_fog_fills_the_valleys_and_leaves_the_peaks() {
 const PER_VERTEX_FOG: &str = "
 // ANCHOR: per_vertex_fog
 enable clip_distances;
-#import terrain::{globals, terrain_vertex, ground_colour, lit}
+#import terrain::{globals, terrain_vertex, ground_normal, ground_colour, lit}
 #import fog::{fog, visibility}
 
 struct FoggedVertex {
     @builtin(position) clip_position: vec4<f32>,
     @location(0) world_position: vec3<f32>,
-    @location(1) normal: vec3<f32>,
     // Computed at the vertex, blended across the triangle.
-    @location(2) seen: f32,
+    @location(1) seen: f32,
 };
 
 @vertex
-fn vs_main(
-    @builtin(vertex_index) vertex_index: u32,
-    @builtin(instance_index) chunk: u32,
-    @location(0) height: f32,
-    @location(1) normal: vec4<f32>,
-) -> FoggedVertex {
-    let v = terrain_vertex(vertex_index, chunk, height, normal);
+fn vs_main(@builtin(vertex_index) vertex_index: u32, @location(0) this_patch: vec3<u32>) -> FoggedVertex {
+    let v = terrain_vertex(vertex_index, this_patch);
     let distance = length(v.world_position - globals.eye.xyz);
-    return FoggedVertex(v.clip_position, v.world_position, v.normal, visibility(distance));
+    return FoggedVertex(v.clip_position, v.world_position, visibility(distance));
 }
 
 @fragment
 fn fs_main(in: FoggedVertex) -> @location(0) vec4<f32> {
-    let n = normalize(in.normal);
+    let n = ground_normal(in.world_position.xz);
     let surface = lit(ground_colour(in.world_position.y, n), n);
     return vec4<f32>(mix(fog.colour.rgb, surface, in.seen), 1.0);
 }
@@ -269,8 +263,8 @@ fn quad_visibility(fog: FogSettings, eye: Vec3, point: Vec3) -> (f32, f32) {
 
 #[test]
 fn exercise_3_per_vertex_fog_matches_on_terrain_and_fails_on_a_big_quad() {
-    // On the terrain, a vertex every metre: the dust storm per vertex and
-    // per fragment, from the start camera.
+    // On the terrain, cells of 1 to 8 m within the storm's 588 m: the dust
+    // storm per vertex and per fragment, from the start camera.
     let storm = FogSettings::DUST_STORM;
     let (per_fragment, per_vertex) = (render_fogged(&fog_shader(), storm), render_fogged(&per_vertex_shader(), storm));
     let differences: Vec<u8> = per_fragment
@@ -282,7 +276,8 @@ fn exercise_3_per_vertex_fog_matches_on_terrain_and_fails_on_a_big_quad() {
     eprintln!(
         "terrain in the dust storm, per vertex against per fragment: {differing} pixels differ, by at most {most}"
     );
-    assert!(most <= 1 && differing.abs_diff(52) <= 20, "{differing} pixels, by up to {most}");
+    // Measured (a change detector, as the page says): 139 pixels, one step.
+    assert!(most <= 1 && differing.abs_diff(139) <= 30, "{differing} pixels, by up to {most}");
 
     // Chapter 02's ground, 60 m across in two triangles, seen from its
     // camera at (−3, 4, 9) in fog scaled to that scene (density 0.02,

@@ -143,7 +143,8 @@ fn exercise_2_a_tilted_rock_tilts_its_normal_by_the_same_rotation() {
     assert!((worst_forgotten - 0.4f32.to_degrees()).abs() < 1.5, "{worst_forgotten}");
 
     // The WGSL edit is valid against the real modules.
-    let rocks_wgsl = shader!("instancing/rocks.wgsl", imports: ["terrain/terrain.wgsl", "fog/fog.wgsl"]);
+    let rocks_wgsl =
+        shader!("instancing/rocks.wgsl", imports: ["terrain/terrain.wgsl", "fog/fog.wgsl", "instancing/rock.wgsl"]);
     let mut edited = rocks_wgsl.embedded.to_string();
     for (from, to) in [(ROCK_TRANSFORM, TILTED_TRANSFORM), (ROCK_NORMAL, TILTED_NORMAL)] {
         assert!(edited.contains(from), "rocks.wgsl changed: update the exercise's edit");
@@ -176,7 +177,8 @@ impl RockLab {
             bind_group_layouts: &[Some(&terrain.bind_group_layout), Some(&air.layout)],
             immediate_size: 0,
         });
-        let rocks = shader!("instancing/rocks.wgsl", imports: ["terrain/terrain.wgsl", "fog/fog.wgsl"]);
+        let rocks =
+            shader!("instancing/rocks.wgsl", imports: ["terrain/terrain.wgsl", "fog/fog.wgsl", "instancing/rock.wgsl"]);
         let module = rocks.module(gpu).unwrap();
         let buffers = [Some(Vertex::LAYOUT), Some(RockInstance::LAYOUT)];
         let pipeline = common::pipeline::mesh_pipeline(

@@ -1,5 +1,5 @@
-//! Chapter 08's integration tests, one binary: the bloom chain, light
-//! extremes, the three shading models and the three terms of the light,
+//! Chapter 08's integration tests, one binary: the bloom chain, `--camera`
+//! on a riding view, light extremes, the three shading models and the three terms of the light,
 //! the worked solutions to the page's exercises, and the tone map pass
 //! against its Rust mirror.
 //!
@@ -7,6 +7,7 @@
 //! every extra file here would be another link of all of them.
 
 mod bloom;
+mod camera_flag;
 mod extremes;
 mod shading;
 mod solutions;
