@@ -17,6 +17,7 @@ mod editor;
 mod fog;
 mod hot_reload;
 mod light_culling;
+mod lod_same_picture;
 mod references;
 mod rock_lod;
 mod try_it_links;
