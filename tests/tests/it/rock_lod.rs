@@ -84,3 +84,30 @@ fn the_lake_with_graded_rocks_looks_like_the_lake_with_every_rock_at_full_detail
     assert!(comparison.mean <= MOST_MEAN_FLIP, "{comparison}");
     assert!(comparison.passes(Tolerance::DEFAULT), "{comparison}");
 }
+
+/// Culling only leaves out what no pixel shows: the default view drawn with
+/// every rock of the world (culling off) and with the rocks the GPU's
+/// frustum test keeps (at full detail, so that grading is not in play), and
+/// by the CPU's chunk groups, are the same picture. The counts are checked
+/// another way by chapter 06's recount (`rock_culling.rs`), which projects
+/// each rock's sphere on the CPU.
+#[test]
+fn culling_leaves_out_no_rock_a_pixel_shows() {
+    let gpu = snapshots::lease(InstancingChapter::gpu_needs()).unwrap();
+    let target = Target { format: OFFSCREEN_FORMAT, ..snapshots::target() };
+    let mut chapter: InstancingChapter = common::chapter::create(&gpu, target, &Default::default()).unwrap();
+    let mut picture = |culling| {
+        chapter.setup = Setup { culling, ..Setup::DEFAULT };
+        let picture = capture(&gpu, &mut chapter, target, InstancingChapter::SNAPSHOT_TIME, 0).unwrap();
+        (picture, chapter.stats(&gpu))
+    };
+    let (all, all_stats) = picture(Culling::Off);
+    let (per_rock, per_rock_stats) = picture(Culling::PerRockFullDetail);
+    let (by_chunk, by_chunk_stats) = picture(Culling::Chunks);
+    eprintln!("off: {all_stats}\nper rock: {per_rock_stats}\nby chunk: {by_chunk_stats}");
+    assert!(busy(&all));
+    let differing =
+        |a: &image::RgbaImage, b: &image::RgbaImage| a.pixels().zip(b.pixels()).filter(|(a, b)| a != b).count();
+    assert_eq!(differing(&all, &per_rock), 0, "the GPU's frustum test left out a rock a pixel shows");
+    assert_eq!(differing(&all, &by_chunk), 0, "the chunk groups left out a rock a pixel shows");
+}
