@@ -146,7 +146,9 @@ fn test() -> anyhow::Result<()> {
     // the links that two invocations would each end with alone.
     step("build", &|| cargo(&["build", "--workspace", "--exclude", "xtask", "--all-targets"]))?;
     step("cargo test", &|| {
-        cargo(&["test", "--workspace", "--exclude", "xtask"])?;
+        // Every test executable runs even after one fails, so that a CI
+        // log names every failure at once.
+        cargo(&["test", "--workspace", "--exclude", "xtask", "--no-fail-fast"])?;
         cargo(&["test", "-p", "xtask"])
     })?;
     step("shared builds", &chapters_reuse_the_test_build)?;
