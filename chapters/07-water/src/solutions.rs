@@ -9,7 +9,7 @@
 
 use std::f32::consts::TAU;
 
-use common::book_figures::{median_ms, solution, thousands};
+use common::book_figures::median_ms;
 use common::glam::{Vec2, Vec3};
 use common::headless::{OFFSCREEN_FORMAT, capture};
 use common::{Camera, Chapter, Gpu, ShaderFile, Target, shader};
@@ -73,7 +73,7 @@ fn lake_at(gpu: &Gpu, chapter: &mut WaterChapter, resolution: f32) -> common::im
 // ANCHOR_END: quarter
 
 #[test]
-fn exercise_1_quarter_resolution_pictures_save_memory_not_time_here() {
+fn exercise_1_quarter_resolution_pictures_save_memory_and_a_seventh_of_the_frame() {
     let target = Target { format: common::wgpu::TextureFormat::Bgra8UnormSrgb, width: 1280, height: 720 };
     let (half, quarter) = (picture_bytes(target, 0.5), picture_bytes(target, 0.25));
     let saved = pass_time_saved(0.25);
@@ -85,22 +85,9 @@ fn exercise_1_quarter_resolution_pictures_save_memory_not_time_here() {
     // Two pictures, each 4 bytes of colour and 4 of depth a pixel: at half
     // of 1280 × 720, 640 × 360 of them; at a quarter, 320 × 180.
     assert_eq!((half, quarter), (2 * 640 * 360 * (4 + 4), 2 * 320 * 180 * (4 + 4)));
-    // The page's solution quotes what the bench table gives, so a bench
-    // run that moves the figures fails here until the page follows.
-    let (main, reflection) =
-        (bench_median("default", "GPU: plain and sky pass"), bench_median("default", "GPU: reflection pass"));
-    page_quotes(
-        "frame time does it save at 1280 × 720?",
-        &[
-            format!("{reflection:.0} ms against the main pass's {main:.0} ms"),
-            format!("about {:.0} ms and the vertices", (main - reflection) / 0.75),
-            format!(
-                "saves about {saved:.0} ms of a {} ms frame ({:.1} %)",
-                thousands(f64::from(frame)),
-                100.0 * saved / frame
-            ),
-        ],
-    );
+    // The page computes its figures from the same rows with `{{#figure}}`
+    // when the book is built; here the estimate must at least be a saving.
+    assert!(saved > 0.0 && saved < frame, "{saved} ms of a {frame} ms frame");
     // What it costs: the pixels that change, and by how much (of 255).
     let gpu = Gpu::headless(WaterChapter::gpu_needs()).unwrap();
     let target = Target { format: OFFSCREEN_FORMAT, width: 320, height: 180 };
@@ -296,26 +283,8 @@ const REFLECTION_ONLY: [(&str, &str); 2] = [
 // ANCHOR_END: no_refraction
 
 #[test]
-fn exercise_4_without_the_refraction_picture_a_fifth_of_the_frame_goes() {
+fn exercise_4_without_the_refraction_picture_the_water_loses_its_depth() {
     compiles_with(WATER, &REFLECTION_ONLY);
-    let (refraction, frame) =
-        (bench_median("default", "GPU: refraction pass"), bench_median("default", "frame (CPU+GPU)"));
-    println!("the refraction pass is {:.1} % of the default frame", 100.0 * refraction / frame);
-    page_quotes(
-        "The refraction pass is",
-        &[
-            format!("{refraction:.0} ms of the default view's {} ms frame", thousands(f64::from(frame))),
-            format!("bench: {:.1} %", 100.0 * refraction / frame),
-        ],
-    );
-}
-
-/// Asserts that page 07's solution after `opening` (up to its
-/// `</details>`) says each of `figures`.
-fn page_quotes(opening: &str, figures: &[String]) {
-    let page = include_str!("../../../book/src/07-water.md");
-    let solution = solution(page, opening).expect("the solution");
-    for figure in figures {
-        assert!(solution.contains(figure.as_str()), "page 07's solution should say `{figure}` (from the bench table)");
-    }
+    // The pass's share of the frame is on the page, from the bench table
+    // by `{{#figure}}`.
 }
