@@ -8,7 +8,8 @@
 pub const MODULE: &str = "common/fullscreen.wgsl";
 
 /// A pipeline that runs `vs_fullscreen` and `fragment_entry` of `module`
-/// over the whole target: no vertex buffers, no culling.
+/// over the whole target: no vertex buffers, no culling; `multisample` as
+/// the pass it draws in (the default, one sample, for post-processing).
 pub fn pipeline(
     device: &wgpu::Device,
     label: &str,
@@ -17,6 +18,7 @@ pub fn pipeline(
     fragment_entry: &str,
     target: wgpu::ColorTargetState,
     depth_stencil: Option<wgpu::DepthStencilState>,
+    multisample: wgpu::MultisampleState,
 ) -> wgpu::RenderPipeline {
     device.create_render_pipeline(&wgpu::RenderPipelineDescriptor {
         label: Some(label),
@@ -29,7 +31,7 @@ pub fn pipeline(
         },
         primitive: Default::default(),
         depth_stencil,
-        multisample: Default::default(),
+        multisample,
         fragment: Some(wgpu::FragmentState {
             module,
             entry_point: Some(fragment_entry),

@@ -108,7 +108,16 @@ fn sky_pipeline(
         bias: Default::default(),
     };
     gpu.catch_validation(|| {
-        fullscreen::pipeline(&gpu.device, "sky", layout, &module, "fs_sky", format.into(), Some(depth))
+        fullscreen::pipeline(
+            &gpu.device,
+            "sky",
+            layout,
+            &module,
+            "fs_sky",
+            format.into(),
+            Some(depth),
+            Default::default(),
+        )
     })
     .map_err(ShaderError)
 }

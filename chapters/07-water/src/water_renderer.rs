@@ -494,7 +494,16 @@ fn build_pipelines(
         Pipelines {
             pictures: surface("water", "fs_water"),
             texture: surface("water, seed 003's texture", "fs_texture"),
-            show: fullscreen::pipeline(&gpu.device, "show picture", show_layout, &show, "fs_show", format.into(), None),
+            show: fullscreen::pipeline(
+                &gpu.device,
+                "show picture",
+                show_layout,
+                &show,
+                "fs_show",
+                format.into(),
+                None,
+                Default::default(),
+            ),
         }
     })
     .map_err(ShaderError)

@@ -71,7 +71,16 @@ impl CitySky {
             bias: Default::default(),
         };
         gpu.catch_validation(|| {
-            fullscreen::pipeline(&gpu.device, "sky", layout, &module, "fs_sky", HDR_FORMAT.into(), Some(depth))
+            fullscreen::pipeline(
+                &gpu.device,
+                "sky",
+                layout,
+                &module,
+                "fs_sky",
+                HDR_FORMAT.into(),
+                Some(depth),
+                Default::default(),
+            )
         })
         .map_err(ShaderError)
     }

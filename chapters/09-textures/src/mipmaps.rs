@@ -64,7 +64,16 @@ impl MipPipelines {
                 Averaging::Colour => "fs_colour",
                 Averaging::Normals => "fs_normal",
             };
-            fullscreen::pipeline(device, "mip level", &self.layout, &self.module, entry, format.into(), None)
+            fullscreen::pipeline(
+                device,
+                "mip level",
+                &self.layout,
+                &self.module,
+                entry,
+                format.into(),
+                None,
+                Default::default(),
+            )
         });
         pipeline.clone()
     }

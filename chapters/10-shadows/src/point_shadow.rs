@@ -607,6 +607,7 @@ impl CubeView {
                     "fs_unfolded",
                     format.into(),
                     None,
+                    Default::default(),
                 )
             })
             .map_err(ShaderError)

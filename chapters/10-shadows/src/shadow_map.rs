@@ -577,6 +577,7 @@ impl MapView {
                 "fs_depth",
                 format.into(),
                 None,
+                Default::default(),
             )
         })
         .map_err(ShaderError)

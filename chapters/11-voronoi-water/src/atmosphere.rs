@@ -233,6 +233,7 @@ impl Sky {
                 "fs_sky",
                 lighting::HDR_FORMAT.into(),
                 Some(depth),
+                Default::default(),
             )
         })
         .map_err(ShaderError)
