@@ -77,7 +77,7 @@ pub const FOUR_SAMPLES: [(f32, f32); 4] = [(0.375, 0.125), (0.875, 0.375), (0.12
 pub fn multisampling() -> String {
     let (cell, pixels, rows) = (64.0, 6, 3);
     let origin = Vec2::new(40.0, 70.0);
-    let mut svg = Svg::new(origin.x * 2.0 + cell * pixels as f32, origin.y + cell * rows as f32 + 70.0);
+    let mut svg = Svg::new(720.0, origin.y + cell * rows as f32 + 50.0);
     // The edge: inside is below the line from (0, 2.6) to (6, 0.4), in pixels.
     let (a, b) = (Vec2::new(0.0, 2.6), Vec2::new(6.0, 0.4));
     let inside = |p: Vec2| (b - a).perp_dot(p - a) > 0.0;
