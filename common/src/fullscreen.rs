@@ -8,8 +8,7 @@
 pub const MODULE: &str = "common/fullscreen.wgsl";
 
 /// A pipeline that runs `vs_fullscreen` and `fragment_entry` of `module`
-/// over the whole target: no vertex buffers, no culling; `multisample` as
-/// the pass it draws in (the default, one sample, for post-processing).
+/// over the whole target: no vertex buffers, no culling, one sample a pixel.
 pub fn pipeline(
     device: &wgpu::Device,
     label: &str,
@@ -18,7 +17,6 @@ pub fn pipeline(
     fragment_entry: &str,
     target: wgpu::ColorTargetState,
     depth_stencil: Option<wgpu::DepthStencilState>,
-    multisample: wgpu::MultisampleState,
 ) -> wgpu::RenderPipeline {
     device.create_render_pipeline(&wgpu::RenderPipelineDescriptor {
         label: Some(label),
@@ -31,7 +29,7 @@ pub fn pipeline(
         },
         primitive: Default::default(),
         depth_stencil,
-        multisample,
+        multisample: Default::default(),
         fragment: Some(wgpu::FragmentState {
             module,
             entry_point: Some(fragment_entry),

@@ -140,7 +140,6 @@ impl CameraChapter {
                 "fs_depth",
                 format.into(),
                 None,
-                Default::default(),
             ),
         })
         .map_err(ShaderError)

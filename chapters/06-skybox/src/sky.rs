@@ -108,16 +108,7 @@ fn sky_pipeline(
         bias: Default::default(),
     };
     gpu.catch_validation(|| {
-        fullscreen::pipeline(
-            &gpu.device,
-            "sky",
-            layout,
-            &module,
-            "fs_sky",
-            format.into(),
-            Some(depth),
-            Default::default(),
-        )
+        fullscreen::pipeline(&gpu.device, "sky", layout, &module, "fs_sky", format.into(), Some(depth))
     })
     .map_err(ShaderError)
 }

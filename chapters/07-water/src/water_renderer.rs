@@ -494,16 +494,7 @@ fn build_pipelines(
         Pipelines {
             pictures: surface("water", "fs_water"),
             texture: surface("water, seed 003's texture", "fs_texture"),
-            show: fullscreen::pipeline(
-                &gpu.device,
-                "show picture",
-                show_layout,
-                &show,
-                "fs_show",
-                format.into(),
-                None,
-                Default::default(),
-            ),
+            show: fullscreen::pipeline(&gpu.device, "show picture", show_layout, &show, "fs_show", format.into(), None),
         }
     })
     .map_err(ShaderError)

@@ -198,26 +198,8 @@ impl Bloom {
         };
         gpu.catch_validation(|| {
             (
-                fullscreen::pipeline(
-                    &gpu.device,
-                    "bloom down",
-                    layout,
-                    &module,
-                    "fs_downsample",
-                    format.into(),
-                    None,
-                    Default::default(),
-                ),
-                fullscreen::pipeline(
-                    &gpu.device,
-                    "bloom up",
-                    layout,
-                    &module,
-                    "fs_upsample",
-                    blended,
-                    None,
-                    Default::default(),
-                ),
+                fullscreen::pipeline(&gpu.device, "bloom down", layout, &module, "fs_downsample", format.into(), None),
+                fullscreen::pipeline(&gpu.device, "bloom up", layout, &module, "fs_upsample", blended, None),
             )
         })
         .map_err(ShaderError)

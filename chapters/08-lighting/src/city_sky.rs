@@ -71,16 +71,7 @@ impl CitySky {
             bias: Default::default(),
         };
         gpu.catch_validation(|| {
-            fullscreen::pipeline(
-                &gpu.device,
-                "sky",
-                layout,
-                &module,
-                "fs_sky",
-                HDR_FORMAT.into(),
-                Some(depth),
-                Default::default(),
-            )
+            fullscreen::pipeline(&gpu.device, "sky", layout, &module, "fs_sky", HDR_FORMAT.into(), Some(depth))
         })
         .map_err(ShaderError)
     }

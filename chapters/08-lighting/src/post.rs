@@ -221,16 +221,7 @@ impl ToneMap {
     ) -> Result<wgpu::RenderPipeline, ShaderError> {
         let module = shader!("lighting/tonemap.wgsl", imports: ["common/fullscreen.wgsl"]).module(gpu)?;
         gpu.catch_validation(|| {
-            fullscreen::pipeline(
-                &gpu.device,
-                "tone map",
-                layout,
-                &module,
-                "fs_composite",
-                format.into(),
-                None,
-                Default::default(),
-            )
+            fullscreen::pipeline(&gpu.device, "tone map", layout, &module, "fs_composite", format.into(), None)
         })
         .map_err(ShaderError)
     }

@@ -64,16 +64,7 @@ impl MipPipelines {
                 Averaging::Colour => "fs_colour",
                 Averaging::Normals => "fs_normal",
             };
-            fullscreen::pipeline(
-                device,
-                "mip level",
-                &self.layout,
-                &self.module,
-                entry,
-                format.into(),
-                None,
-                Default::default(),
-            )
+            fullscreen::pipeline(device, "mip level", &self.layout, &self.module, entry, format.into(), None)
         });
         pipeline.clone()
     }

@@ -607,7 +607,6 @@ impl CubeView {
                     "fs_unfolded",
                     format.into(),
                     None,
-                    Default::default(),
                 )
             })
             .map_err(ShaderError)

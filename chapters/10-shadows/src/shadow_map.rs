@@ -577,7 +577,6 @@ impl MapView {
                 "fs_depth",
                 format.into(),
                 None,
-                Default::default(),
             )
         })
         .map_err(ShaderError)

@@ -233,7 +233,6 @@ impl Sky {
                 "fs_sky",
                 lighting::HDR_FORMAT.into(),
                 Some(depth),
-                Default::default(),
             )
         })
         .map_err(ShaderError)

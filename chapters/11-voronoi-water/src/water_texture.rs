@@ -143,18 +143,8 @@ impl WaterTexture {
 
     fn pipelines(gpu: &Gpu, layout: &wgpu::PipelineLayout) -> Result<[wgpu::RenderPipeline; 5], ShaderError> {
         let module = shader!("voronoi-water/process.wgsl", imports: ["common/fullscreen.wgsl"]).module(gpu)?;
-        let pipeline = |entry| {
-            fullscreen::pipeline(
-                &gpu.device,
-                entry,
-                layout,
-                &module,
-                entry,
-                PICTURE_FORMAT.into(),
-                None,
-                Default::default(),
-            )
-        };
+        let pipeline =
+            |entry| fullscreen::pipeline(&gpu.device, entry, layout, &module, entry, PICTURE_FORMAT.into(), None);
         gpu.catch_validation(|| {
             [
                 pipeline("fs_colour"),
@@ -375,9 +365,7 @@ impl Show {
         format: wgpu::TextureFormat,
     ) -> Result<(wgpu::RenderPipeline, wgpu::RenderPipeline), ShaderError> {
         let module = shader!("voronoi-water/process.wgsl", imports: ["common/fullscreen.wgsl"]).module(gpu)?;
-        let pipeline = |entry| {
-            fullscreen::pipeline(&gpu.device, entry, layout, &module, entry, format.into(), None, Default::default())
-        };
+        let pipeline = |entry| fullscreen::pipeline(&gpu.device, entry, layout, &module, entry, format.into(), None);
         gpu.catch_validation(|| (pipeline("fs_show"), pipeline("fs_show_cells"))).map_err(ShaderError)
     }
 

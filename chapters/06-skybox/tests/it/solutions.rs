@@ -362,7 +362,6 @@ impl CloudySky {
             "fs_sky",
             format.into(),
             None,
-            Default::default(),
         );
         Self { pipeline, group, uniform }
     }
