@@ -166,7 +166,6 @@ impl IslandRenderer {
                 ("vs_island", "fs_island"),
                 &buffers,
                 HDR_FORMAT.into(),
-                Default::default(),
             )
         })
         .map_err(ShaderError)
