@@ -5,7 +5,7 @@ use std::path::{Path, PathBuf};
 
 use clap::{CommandFactory, FromArgMatches, Parser};
 
-use crate::{CameraPlace, Chapter, Gpu};
+use crate::{Antialiasing, CameraPlace, Chapter, Gpu};
 
 /// Width and height in pixels.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -48,6 +48,10 @@ pub struct Args {
     /// Scene time in seconds. Headless pictures default to the chapter's snapshot time; the window starts at 0.
     #[arg(long, value_name = "SECONDS", value_parser = parse_time, allow_negative_numbers = true)]
     pub time: Option<f32>,
+
+    /// How edges are smoothed: off, or msaa (4 samples a pixel where the adapter can).
+    #[arg(long, value_enum, value_name = "HOW", default_value = "msaa")]
+    pub antialiasing: Antialiasing,
 
     /// The view to show (--list-views lists them with what each shows).
     #[arg(long, value_name = "NAME")]

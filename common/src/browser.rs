@@ -134,7 +134,7 @@ async fn still_picture<C: Chapter>(args: &Args) -> anyhow::Result<()> {
 
     let view = args.view_index::<C>();
     let time = args.time.unwrap_or(C::SNAPSHOT_TIME);
-    let target = Target { format: scene_format, width, height };
+    let target = Target { format: scene_format, width, height, samples: args.antialiasing.samples() };
     let mut chapter = crate::chapter::create_prepared::<C>(&gpu, target, prepared, &args.chapter_flags)?;
     crate::chapter::start(&mut chapter, view, args.camera)?;
     let frame = match surface.get_current_texture() {

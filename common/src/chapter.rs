@@ -2,6 +2,7 @@
 //! window, render it headless to a PNG, benchmark it and snapshot-test it.
 
 use crate::args::UsageError;
+use crate::multisampling::SceneTargets;
 use crate::{Camera, CameraPlace, DrawCounts, Gpu, GpuNeeds, Input, PassTimer, Preparation};
 
 // For existing imports (`use common::chapter::{uniform_entry, …}`): the
@@ -143,6 +144,11 @@ pub struct Target {
     pub format: wgpu::TextureFormat,
     pub width: u32,
     pub height: u32,
+    /// Samples a pixel asked for the scene (multisampling, chapter 02):
+    /// [`crate::multisampling::SAMPLES`], or 1 for none. The chapter's
+    /// [`SceneTargets`] grants it where the adapter can, and its pipelines
+    /// draw with what it granted.
+    pub samples: u32,
 }
 
 impl Target {
@@ -183,6 +189,17 @@ impl Frame<'_> {
         depth: &wgpu::TextureView,
     ) -> wgpu::RenderPass<'_> {
         scene_pass(self.encoder, self.timer, label, self.target, clear, depth)
+    }
+
+    /// [`Frame::scene_pass`] into `scene`'s samples, resolved into the
+    /// frame's target when the pass ends (multisampling, chapter 02).
+    pub fn multisampled_pass(
+        &mut self,
+        label: &'static str,
+        clear: wgpu::Color,
+        scene: &SceneTargets,
+    ) -> wgpu::RenderPass<'_> {
+        scene.pass(self.encoder, self.timer, label, self.target, Some(clear))
     }
 }
 

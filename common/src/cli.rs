@@ -69,8 +69,14 @@ fn run_headless<C: Chapter>(args: &Args) -> anyhow::Result<()> {
     let gpu = Gpu::headless(needs)?;
     check_size(&gpu, args.size)?;
     let time = args.time.unwrap_or(C::SNAPSHOT_TIME);
-    let request =
-        |view| RenderRequest { width: args.size.width, height: args.size.height, time, view, camera: args.camera };
+    let request = |view| RenderRequest {
+        width: args.size.width,
+        height: args.size.height,
+        time,
+        view,
+        camera: args.camera,
+        antialiasing: args.antialiasing,
+    };
 
     if let Some(path) = &args.screenshot {
         let image = headless::render_image_with::<C>(&gpu, &request(args.view_index::<C>()), &args.chapter_flags)?;

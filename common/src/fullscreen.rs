@@ -8,7 +8,7 @@
 pub const MODULE: &str = "common/fullscreen.wgsl";
 
 /// A pipeline that runs `vs_fullscreen` and `fragment_entry` of `module`
-/// over the whole target: no vertex buffers, no culling.
+/// over the whole target: no vertex buffers, no culling, one sample a pixel.
 pub fn pipeline(
     device: &wgpu::Device,
     label: &str,

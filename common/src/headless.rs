@@ -8,7 +8,7 @@ use anyhow::{Context as _, bail};
 
 use crate::chapter::FlagValues;
 use crate::memory::{Growth, MemoryUse};
-use crate::{CameraPlace, Chapter, DrawCounts, Frame, Gpu, PassCount, PassTimer, Stats, Target};
+use crate::{Antialiasing, CameraPlace, Chapter, DrawCounts, Frame, Gpu, PassCount, PassTimer, Stats, Target};
 
 /// Offscreen pictures are 8-bit RGBA with sRGB encoding, like a PNG.
 pub const OFFSCREEN_FORMAT: wgpu::TextureFormat = wgpu::TextureFormat::Rgba8UnormSrgb;
@@ -22,6 +22,8 @@ pub struct RenderRequest {
     pub view: usize,
     /// `--camera`: a place that replaces the view's camera; `None` keeps it.
     pub camera: Option<CameraPlace>,
+    /// `--antialiasing`: how the scene's edges are smoothed.
+    pub antialiasing: Antialiasing,
 }
 
 /// A texture to render into instead of a window.
@@ -196,7 +198,12 @@ pub fn capture<C: Chapter>(
 /// Makes chapter `C` for `request`'s size with `flags`, and starts it as
 /// every runner does ([`crate::chapter::start`]: the view, the camera).
 pub fn started<C: Chapter>(gpu: &Gpu, request: &RenderRequest, flags: &FlagValues) -> anyhow::Result<C> {
-    let target = Target { format: OFFSCREEN_FORMAT, width: request.width, height: request.height };
+    let target = Target {
+        format: OFFSCREEN_FORMAT,
+        width: request.width,
+        height: request.height,
+        samples: request.antialiasing.samples(),
+    };
     let mut chapter = crate::chapter::create::<C>(gpu, target, flags)?;
     crate::chapter::start(&mut chapter, request.view, request.camera)?;
     Ok(chapter)
@@ -213,7 +220,12 @@ pub fn render_image_with<C: Chapter>(
     request: &RenderRequest,
     flags: &FlagValues,
 ) -> anyhow::Result<image::RgbaImage> {
-    let target = Target { format: OFFSCREEN_FORMAT, width: request.width, height: request.height };
+    let target = Target {
+        format: OFFSCREEN_FORMAT,
+        width: request.width,
+        height: request.height,
+        samples: request.antialiasing.samples(),
+    };
     let mut chapter = started::<C>(gpu, request, flags)?;
     capture(gpu, &mut chapter, target, request.time, request.view)
 }
@@ -250,7 +262,12 @@ pub fn bench<C: Chapter>(
     frames: u32,
     flags: &FlagValues,
 ) -> anyhow::Result<BenchReport> {
-    let target = Target { format: OFFSCREEN_FORMAT, width: request.width, height: request.height };
+    let target = Target {
+        format: OFFSCREEN_FORMAT,
+        width: request.width,
+        height: request.height,
+        samples: request.antialiasing.samples(),
+    };
     let setup = Instant::now();
     let mut chapter = crate::chapter::create::<C>(gpu, target, flags)?;
     let setup_ms = setup.elapsed().as_secs_f64() * 1e3;
@@ -325,7 +342,12 @@ pub fn edit_to_frame<C: Chapter>(
     edits: usize,
     flags: &FlagValues,
 ) -> anyhow::Result<(&'static str, Stats)> {
-    let target = Target { format: OFFSCREEN_FORMAT, width: request.width, height: request.height };
+    let target = Target {
+        format: OFFSCREEN_FORMAT,
+        width: request.width,
+        height: request.height,
+        samples: request.antialiasing.samples(),
+    };
     let mut chapter = started::<C>(gpu, request, flags)?;
     let offscreen = Offscreen::new(&gpu.device, target);
     let file = crate::editor::main_file::<C>(gpu).context("the chapter builds no pipeline from WGSL")?;

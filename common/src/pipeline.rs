@@ -36,8 +36,9 @@ pub fn scene_pass<'e>(
 }
 
 /// An opaque mesh pipeline: back faces culled, depth tested against
-/// [`crate::texture::depth_test`], one colour `target`; `entries` names the
-/// vertex and fragment functions, and the fragment's names the pipeline.
+/// [`crate::texture::depth_test`], one colour `target` of `multisample`'s
+/// samples a pixel ([`crate::SceneTargets::multisample`]); `entries` names
+/// the vertex and fragment functions, and the fragment's names the pipeline.
 /// Chapter 02 writes one out in full; later chapters call this.
 pub fn mesh_pipeline(
     device: &wgpu::Device,
@@ -46,6 +47,7 @@ pub fn mesh_pipeline(
     (vertex_entry, fragment_entry): (&str, &str),
     buffers: &[Option<wgpu::VertexBufferLayout<'_>>],
     target: wgpu::ColorTargetState,
+    multisample: wgpu::MultisampleState,
 ) -> wgpu::RenderPipeline {
     device.create_render_pipeline(&wgpu::RenderPipelineDescriptor {
         label: Some(fragment_entry),
@@ -58,7 +60,7 @@ pub fn mesh_pipeline(
         },
         primitive: wgpu::PrimitiveState { cull_mode: Some(wgpu::Face::Back), ..Default::default() },
         depth_stencil: crate::texture::depth_test(),
-        multisample: Default::default(),
+        multisample,
         fragment: Some(wgpu::FragmentState {
             module,
             entry_point: Some(fragment_entry),

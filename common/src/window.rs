@@ -89,6 +89,8 @@ struct Running<C: Chapter> {
     config: wgpu::SurfaceConfiguration,
     /// The format the chapter draws in: the surface's, seen as sRGB.
     scene_format: wgpu::TextureFormat,
+    /// How the scene's edges are smoothed (`--antialiasing`).
+    antialiasing: crate::Antialiasing,
     /// The surface's format without sRGB encoding, for the overlay.
     overlay_format: wgpu::TextureFormat,
     gpu: Gpu,
@@ -323,7 +325,12 @@ impl Opening {
         surface.configure(&gpu.device, &config);
 
         let view = args.view_index::<C>();
-        let target = Target { format: scene_format, width: config.width, height: config.height };
+        let target = Target {
+            format: scene_format,
+            width: config.width,
+            height: config.height,
+            samples: args.antialiasing.samples(),
+        };
         // Shaders are read from the source tree from the start, so that an
         // edit saved before this run is what the first frame shows.
         let watcher = shader::ShaderWatcher::start();
@@ -368,6 +375,7 @@ impl Opening {
             config,
             scene_format,
             overlay_format,
+            antialiasing: args.antialiasing,
             gpu,
             chapter,
             overlay,
@@ -404,7 +412,12 @@ impl Opening {
 
 impl<C: Chapter> Running<C> {
     fn target(&self) -> Target {
-        Target { format: self.scene_format, width: self.config.width, height: self.config.height }
+        Target {
+            format: self.scene_format,
+            width: self.config.width,
+            height: self.config.height,
+            samples: self.antialiasing.samples(),
+        }
     }
 
     /// Whether there is anything to draw into: a minimised window reports

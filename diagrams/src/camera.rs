@@ -65,3 +65,66 @@ pub fn depth_precision() -> String {
     }
     svg.finish()
 }
+
+/// The standard positions of four samples in a pixel, as fractions of its
+/// side from its top-left corner: Vulkan, Metal and Direct3D share them,
+/// and WebGPU relies on them (gpuweb issue 108).
+pub const FOUR_SAMPLES: [(f32, f32); 4] = [(0.375, 0.125), (0.875, 0.375), (0.125, 0.625), (0.625, 0.875)];
+
+/// Chapter 02: an edge crossing a row of pixels, sampled once at each
+/// pixel's centre and at the four standard sample positions; each pixel
+/// is shaded by the share of its samples inside.
+pub fn multisampling() -> String {
+    let (cell, pixels, rows) = (64.0, 6, 3);
+    let origin = Vec2::new(40.0, 70.0);
+    let mut svg = Svg::new(720.0, origin.y + cell * rows as f32 + 50.0);
+    // The edge: inside is below the line from (0, 2.6) to (6, 0.4), in pixels.
+    let (a, b) = (Vec2::new(0.0, 2.6), Vec2::new(6.0, 0.4));
+    let inside = |p: Vec2| (b - a).perp_dot(p - a) > 0.0;
+    let at = |p: Vec2| origin + p * cell;
+    for row in 0..rows {
+        for column in 0..pixels {
+            let corner = Vec2::new(column as f32, row as f32);
+            let covered = FOUR_SAMPLES.iter().filter(|(x, y)| inside(corner + Vec2::new(*x, *y))).count();
+            // The resolve: the pixel's colour is the mean of its samples.
+            let shade = 255 - (covered as u32 * 150 / 4) as u8;
+            let fill = format!("#{shade:02x}{:02x}{:02x}", 255 - (covered as u32 * 60 / 4) as u8, 255u8);
+            let p = at(corner);
+            svg.rect(p.x, p.y, cell, cell, &fill, MUTED);
+            for (x, y) in FOUR_SAMPLES {
+                let sample = corner + Vec2::new(x, y);
+                if inside(sample) {
+                    svg.circle(at(sample), 4.5, BLUE);
+                } else {
+                    svg.ring(at(sample), 4.5, BLUE, 1.2);
+                }
+            }
+            let centre = corner + Vec2::splat(0.5);
+            svg.circle(at(centre), 3.0, if inside(centre) { ACCENT } else { MUTED });
+        }
+    }
+    svg.line(at(a), at(b), ACCENT, 2.0);
+    svg.text(
+        Vec2::new(origin.x, 28.0),
+        "An edge (red) across pixels: one sample at each centre (small dot) sees all or nothing;",
+        11.0,
+        "start",
+        INK,
+    );
+    svg.text(
+        Vec2::new(origin.x, 46.0),
+        "four samples (blue: filled inside, hollow outside) give the share covered, in quarters.",
+        11.0,
+        "start",
+        INK,
+    );
+    let below = origin.y + cell * rows as f32 + 28.0;
+    svg.text(
+        Vec2::new(origin.x, below),
+        "Each pixel's shade is the mean of its samples (the resolve); the shader ran once for each pixel touched.",
+        11.0,
+        "start",
+        INK,
+    );
+    svg.finish()
+}

@@ -27,6 +27,7 @@ pub fn all() -> Vec<(&'static str, String)> {
         ("clip-space.svg", triangle::clip_space()),
         ("frustum-side.svg", camera::frustum_side()),
         ("depth-precision.svg", camera::depth_precision()),
+        ("multisampling.svg", camera::multisampling()),
         ("fbm-octaves.svg", terrain::fbm_octaves()),
         ("frustum-culling.svg", terrain::frustum_culling()),
         ("lod-quadtree.svg", terrain::lod_quadtree()),

@@ -30,7 +30,7 @@ pub const HEIGHT: u32 = 450;
 
 /// Snapshots are rendered into this target.
 pub fn target() -> Target {
-    Target { format: OFFSCREEN_FORMAT, width: WIDTH, height: HEIGHT }
+    Target { format: OFFSCREEN_FORMAT, width: WIDTH, height: HEIGHT, samples: common::multisampling::SAMPLES }
 }
 
 /// The README and the book's `SUMMARY.md` as the chapter records say they

@@ -4,8 +4,8 @@
 
 use common::wgpu::util::DeviceExt as _;
 use common::{
-    Chapter, Drawn, Frame, Gpu, Preparation, Reloadable, ShaderError, Target, View, ViewRow, anyhow, egui, shader,
-    views_of, wgpu,
+    Chapter, Drawn, Frame, Gpu, Preparation, Reloadable, SceneTargets, ShaderError, Target, View, ViewRow, anyhow,
+    egui, shader, views_of, wgpu,
 };
 
 use crate::pipeline::build_pipeline;
@@ -47,15 +47,22 @@ pub struct Triangle {
     /// The smooth and the flat pipeline, rebuilt whenever triangle.wgsl is
     /// saved while the window is open (hot reload).
     pipelines: Reloadable<[wgpu::RenderPipeline; 2]>,
+    /// Where the triangle is drawn before it reaches the target: four
+    /// samples a pixel, so that its edges are smoothed (chapter 02).
+    scene: SceneTargets,
 }
 
 impl Triangle {
-    fn pipelines(gpu: &Gpu, format: wgpu::TextureFormat) -> Result<[wgpu::RenderPipeline; 2], ShaderError> {
+    fn pipelines(
+        gpu: &Gpu,
+        format: wgpu::TextureFormat,
+        multisample: wgpu::MultisampleState,
+    ) -> Result<[wgpu::RenderPipeline; 2], ShaderError> {
         let module = shader!("triangle/triangle.wgsl").module(gpu)?;
         gpu.catch_validation(|| {
             [
-                build_pipeline(&gpu.device, &module, format, "vs_main", "fs_main"),
-                build_pipeline(&gpu.device, &module, format, "vs_flat", "fs_flat"),
+                build_pipeline(&gpu.device, &module, format, "vs_main", "fs_main", multisample),
+                build_pipeline(&gpu.device, &module, format, "vs_flat", "fs_flat", multisample),
             ]
         })
         .map_err(ShaderError)
@@ -82,11 +89,16 @@ impl Chapter for Triangle {
             // COPY_DST so the colour pickers in the overlay can rewrite it.
             usage: wgpu::BufferUsages::VERTEX | wgpu::BufferUsages::COPY_DST,
         });
-        let format = target.format;
-        let pipelines = Reloadable::new(gpu, move |gpu| Self::pipelines(gpu, format))?;
-        Ok(Self { settings: Settings::DEFAULT, vertices, corners: TRIANGLE, pipelines })
+        let scene = SceneTargets::without_depth(gpu, target);
+        let (format, multisample) = (target.format, scene.multisample());
+        let pipelines = Reloadable::new(gpu, move |gpu| Self::pipelines(gpu, format, multisample))?;
+        Ok(Self { settings: Settings::DEFAULT, vertices, corners: TRIANGLE, pipelines, scene })
     }
     // ANCHOR_END: new
+
+    fn resize(&mut self, gpu: &Gpu, target: Target) {
+        self.scene = SceneTargets::without_depth(gpu, target);
+    }
 
     fn apply_view(&mut self, view: usize) {
         self.settings = VIEW_TABLE[view].settings;
@@ -95,12 +107,15 @@ impl Chapter for Triangle {
     // ANCHOR: render
     fn render(&mut self, gpu: &Gpu, frame: &mut Frame) {
         gpu.queue.write_buffer(&self.vertices, 0, bytemuck::cast_slice(&self.corners));
+        // With several samples a pixel, the pass draws into the samples and
+        // averages them into the target as it ends (the resolve).
+        let (view, resolve_target) = self.scene.colour_attachment(frame.target);
         let mut pass = frame.encoder.begin_render_pass(&wgpu::RenderPassDescriptor {
             label: Some("triangle"),
             color_attachments: &[Some(wgpu::RenderPassColorAttachment {
-                view: frame.target,
+                view,
                 depth_slice: None,
-                resolve_target: None,
+                resolve_target,
                 ops: wgpu::Operations { load: wgpu::LoadOp::Clear(CLEAR), store: wgpu::StoreOp::Store },
             })],
             timestamp_writes: frame.timer.pass("triangle"),

@@ -9,13 +9,15 @@ use crate::vertex::ColoredVertex;
 /// Builds a pipeline from one vertex and one fragment entry point of
 /// `triangle.wgsl`. Everything the GPU needs to know ahead of drawing is
 /// fixed here: the shader stages, the vertex layout, the kind of primitive
-/// and the format of the picture it draws into.
+/// and the format of the picture it draws into, and how many samples a
+/// pixel it has (one, or four with multisampling: chapter 02).
 pub fn build_pipeline(
     device: &wgpu::Device,
     module: &wgpu::ShaderModule,
     format: wgpu::TextureFormat,
     vertex_entry: &str,
     fragment_entry: &str,
+    multisample: wgpu::MultisampleState,
 ) -> wgpu::RenderPipeline {
     device.create_render_pipeline(&wgpu::RenderPipelineDescriptor {
         label: Some(vertex_entry),
@@ -33,7 +35,7 @@ pub fn build_pipeline(
             ..Default::default()
         },
         depth_stencil: None,
-        multisample: Default::default(),
+        multisample,
         fragment: Some(wgpu::FragmentState {
             module,
             entry_point: Some(fragment_entry),

@@ -3,11 +3,10 @@
 //! primitives and, for the depth views, the depth buffer over it.
 
 use common::glam::{Mat4, Vec3};
-use common::texture::depth_view;
 use common::wgpu::util::DeviceExt as _;
 use common::{
-    Camera, Chapter, Drawn, FlyController, Frame, Gpu, Input, Mesh, Preparation, Reloadable, ShaderError, Target, View,
-    ViewRow, anyhow, egui, fullscreen, primitives, shader, views_of, wgpu,
+    Camera, Chapter, Drawn, FlyController, Frame, Gpu, Input, Mesh, Preparation, Reloadable, SceneTargets, ShaderError,
+    Target, View, ViewRow, anyhow, egui, fullscreen, primitives, shader, views_of, wgpu,
 };
 
 use crate::depth_display::{depth_group, depth_group_layout};
@@ -90,6 +89,8 @@ const SKY: wgpu::Color = wgpu::Color { r: 0.30, g: 0.42, b: 0.60, a: 1.0 };
 struct Pipelines {
     shaded: wgpu::RenderPipeline,
     normals: wgpu::RenderPipeline,
+    /// `shaded` at one sample a pixel, for the depth views' scene pass.
+    one_sample: wgpu::RenderPipeline,
     depth_view: wgpu::RenderPipeline,
 }
 
@@ -106,7 +107,11 @@ pub struct CameraChapter {
     object_group: wgpu::BindGroup,
     /// Bytes between consecutive objects in `object_buffer`.
     object_stride: u32,
-    depth: wgpu::TextureView,
+    /// The scene's samples and depth, resolved into the frame.
+    scene: SceneTargets,
+    /// One sample a pixel, for the depth views: they read the depth buffer
+    /// as data, and a multisampled one would need a shader of its own.
+    depth_scene: SceneTargets,
     depth_params: wgpu::Buffer,
     depth_group_layout: wgpu::BindGroupLayout,
     depth_group: wgpu::BindGroup,
@@ -119,12 +124,14 @@ impl CameraChapter {
         gpu: &Gpu,
         layouts: &[wgpu::PipelineLayout; 2],
         format: wgpu::TextureFormat,
+        multisample: wgpu::MultisampleState,
     ) -> Result<Pipelines, ShaderError> {
         let scene = shader!("camera/scene.wgsl").module(gpu)?;
         let depth = shader!("camera/depth.wgsl", imports: ["common/fullscreen.wgsl"]).module(gpu)?;
         gpu.catch_validation(|| Pipelines {
-            shaded: scene_pipeline(&gpu.device, &layouts[0], &scene, format, "fs_main"),
-            normals: scene_pipeline(&gpu.device, &layouts[0], &scene, format, "fs_normals"),
+            shaded: scene_pipeline(&gpu.device, &layouts[0], &scene, format, "fs_main", multisample),
+            normals: scene_pipeline(&gpu.device, &layouts[0], &scene, format, "fs_normals", multisample),
+            one_sample: scene_pipeline(&gpu.device, &layouts[0], &scene, format, "fs_main", Default::default()),
             depth_view: fullscreen::pipeline(
                 &gpu.device,
                 "depth view",
@@ -228,8 +235,10 @@ impl Chapter for CameraChapter {
             contents: &[0; 16],
             usage: wgpu::BufferUsages::UNIFORM | wgpu::BufferUsages::COPY_DST,
         });
-        let depth = depth_view(device, target.width, target.height);
-        let depth_group = depth_group(gpu, &depth_group_layout, &depth, &depth_params);
+        let scene = SceneTargets::new(gpu, target);
+        let depth_scene = SceneTargets::new(gpu, Target { samples: 1, ..target });
+        let depth = depth_scene.depth().expect("made with a depth buffer");
+        let depth_group = depth_group(gpu, &depth_group_layout, depth, &depth_params);
 
         let layouts = [
             device.create_pipeline_layout(&wgpu::PipelineLayoutDescriptor {
@@ -243,8 +252,8 @@ impl Chapter for CameraChapter {
                 immediate_size: 0,
             }),
         ];
-        let format = target.format;
-        let pipelines = Reloadable::new(gpu, move |gpu| Self::build_pipelines(gpu, &layouts, format))?;
+        let (format, multisample) = (target.format, scene.multisample());
+        let pipelines = Reloadable::new(gpu, move |gpu| Self::build_pipelines(gpu, &layouts, format, multisample))?;
 
         Ok(Self {
             settings: Settings::DEFAULT,
@@ -258,7 +267,8 @@ impl Chapter for CameraChapter {
             object_buffer,
             object_group,
             object_stride,
-            depth,
+            scene,
+            depth_scene,
             depth_params,
             depth_group_layout,
             depth_group,
@@ -270,8 +280,12 @@ impl Chapter for CameraChapter {
     fn resize(&mut self, gpu: &Gpu, target: Target) {
         self.target = target;
         self.camera.aspect = target.aspect();
-        self.depth = depth_view(&gpu.device, target.width, target.height);
-        self.depth_group = depth_group(gpu, &self.depth_group_layout, &self.depth, &self.depth_params);
+        // The sample count stays the one the pipelines were made for.
+        let samples = self.scene.samples();
+        self.scene = SceneTargets::new(gpu, Target { samples, ..target });
+        self.depth_scene = SceneTargets::new(gpu, Target { samples: 1, ..target });
+        let depth = self.depth_scene.depth().expect("made with a depth buffer");
+        self.depth_group = depth_group(gpu, &self.depth_group_layout, depth, &self.depth_params);
     }
 
     fn apply_view(&mut self, view: usize) {
@@ -299,25 +313,35 @@ impl Chapter for CameraChapter {
         self.write_uniforms(gpu, frame.time);
         let display = self.settings.display;
         let pipelines = self.pipelines.get();
+        // The depth views read the depth buffer: they draw at one sample.
+        let reads_depth = matches!(display, Display::Depth | Display::DepthRaw);
+        let scene = if reads_depth { &self.depth_scene } else { &self.scene };
         {
+            // With several samples a pixel, the pass draws into the samples
+            // and averages them into the target as it ends (the resolve).
+            let (view, resolve_target) = scene.colour_attachment(frame.target);
             let mut pass = frame.encoder.begin_render_pass(&wgpu::RenderPassDescriptor {
                 label: Some("scene"),
                 color_attachments: &[Some(wgpu::RenderPassColorAttachment {
-                    view: frame.target,
+                    view,
                     depth_slice: None,
-                    resolve_target: None,
+                    resolve_target,
                     ops: wgpu::Operations { load: wgpu::LoadOp::Clear(SKY), store: wgpu::StoreOp::Store },
                 })],
                 // Every frame starts with all depths at the far plane (1.0).
                 depth_stencil_attachment: Some(wgpu::RenderPassDepthStencilAttachment {
-                    view: &self.depth,
+                    view: scene.depth().expect("made with a depth buffer"),
                     depth_ops: Some(wgpu::Operations { load: wgpu::LoadOp::Clear(1.0), store: wgpu::StoreOp::Store }),
                     stencil_ops: None,
                 }),
                 timestamp_writes: frame.timer.pass("scene"),
                 ..Default::default()
             });
-            let pipeline = if display == Display::Normals { &pipelines.normals } else { &pipelines.shaded };
+            let pipeline = match display {
+                _ if reads_depth => &pipelines.one_sample,
+                Display::Normals => &pipelines.normals,
+                _ => &pipelines.shaded,
+            };
             pass.set_pipeline(pipeline);
             pass.set_bind_group(0, &self.camera_group, &[]);
             pass.set_bind_group(1, &self.object_group, &[0]);
@@ -330,7 +354,7 @@ impl Chapter for CameraChapter {
             }
             frame.drawn.add("scene", drawn);
         }
-        if matches!(display, Display::Depth | Display::DepthRaw) {
+        if reads_depth {
             let mut pass = fullscreen::pass(frame.encoder, frame.timer, "depth view", frame.target, None);
             pass.set_pipeline(&pipelines.depth_view);
             pass.set_bind_group(0, &self.depth_group, &[]);

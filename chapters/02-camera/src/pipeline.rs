@@ -5,7 +5,8 @@ use common::texture::DEPTH_FORMAT;
 use common::wgpu;
 
 /// A pipeline that draws meshes with `vs_main` and `fragment_entry` of
-/// `module`, keeping the nearest fragment at each pixel.
+/// `module`, keeping the nearest fragment at each pixel, into targets of
+/// `multisample`'s samples a pixel.
 // ANCHOR: pipeline
 pub fn scene_pipeline(
     device: &wgpu::Device,
@@ -13,6 +14,7 @@ pub fn scene_pipeline(
     module: &wgpu::ShaderModule,
     format: wgpu::TextureFormat,
     fragment_entry: &str,
+    multisample: wgpu::MultisampleState,
 ) -> wgpu::RenderPipeline {
     device.create_render_pipeline(&wgpu::RenderPipelineDescriptor {
         label: Some(fragment_entry),
@@ -33,7 +35,8 @@ pub fn scene_pipeline(
             stencil: Default::default(),
             bias: Default::default(),
         }),
-        multisample: Default::default(),
+        // One sample a pixel, or four (multisampling): as the pass's targets.
+        multisample,
         fragment: Some(wgpu::FragmentState {
             module,
             entry_point: Some(fragment_entry),

@@ -560,7 +560,7 @@ mod tests {
     #[test]
     fn the_overlays_controls() {
         let gpu = Gpu::headless(WaterChapter::gpu_needs()).unwrap();
-        let target = Target { format: OFFSCREEN_FORMAT, width: 160, height: 90 };
+        let target = Target { format: OFFSCREEN_FORMAT, width: 160, height: 90, samples: 1 };
         let mut chapter = common::chapter::create::<WaterChapter>(&gpu, target, &Default::default()).unwrap();
         chapter.rocks.rocks = 0; // they cost time and add nothing here
         edits_reach_the_picture_and_choosing_the_view_takes_them_back(&gpu, &mut chapter, target);

@@ -66,7 +66,7 @@ fn pass_time_saved(resolution: f32) -> f32 {
 /// default view at 320 × 180, without rocks (they cost seconds to draw
 /// and add nothing to the question).
 fn lake_at(gpu: &Gpu, chapter: &mut WaterChapter, resolution: f32) -> common::image::RgbaImage {
-    let target = Target { format: OFFSCREEN_FORMAT, width: 320, height: 180 };
+    let target = Target { format: OFFSCREEN_FORMAT, width: 320, height: 180, samples: 1 };
     chapter.settings.water.resolution = resolution;
     capture(gpu, chapter, target, 0.0, 0).unwrap()
 }
@@ -74,7 +74,7 @@ fn lake_at(gpu: &Gpu, chapter: &mut WaterChapter, resolution: f32) -> common::im
 
 #[test]
 fn exercise_1_quarter_resolution_pictures_save_memory_and_a_seventh_of_the_frame() {
-    let target = Target { format: common::wgpu::TextureFormat::Bgra8UnormSrgb, width: 1280, height: 720 };
+    let target = Target { format: common::wgpu::TextureFormat::Bgra8UnormSrgb, width: 1280, height: 720, samples: 1 };
     let (half, quarter) = (picture_bytes(target, 0.5), picture_bytes(target, 0.25));
     let saved = pass_time_saved(0.25);
     let frame = bench_median("default", "frame (CPU+GPU)");
@@ -90,7 +90,7 @@ fn exercise_1_quarter_resolution_pictures_save_memory_and_a_seventh_of_the_frame
     assert!(saved > 0.0 && saved < frame, "{saved} ms of a {frame} ms frame");
     // What it costs: the pixels that change, and by how much (of 255).
     let gpu = Gpu::headless(WaterChapter::gpu_needs()).unwrap();
-    let target = Target { format: OFFSCREEN_FORMAT, width: 320, height: 180 };
+    let target = Target { format: OFFSCREEN_FORMAT, width: 320, height: 180, samples: 1 };
     let mut chapter = common::chapter::create::<WaterChapter>(&gpu, target, &Default::default()).unwrap();
     chapter.select_view(0);
     chapter.rocks.rocks = 0;

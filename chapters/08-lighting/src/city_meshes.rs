@@ -141,7 +141,8 @@ pub(crate) struct Pipelines {
 pub(crate) fn build_pipelines(gpu: &Gpu, layout: &wgpu::PipelineLayout) -> Result<Pipelines, ShaderError> {
     let module = city_shader().module(gpu)?;
     let buffers = [Some(Vertex::LAYOUT), Some(GpuInstance::LAYOUT)];
-    let mesh = |entries| mesh_pipeline(&gpu.device, layout, &module, entries, &buffers, HDR_FORMAT.into());
+    let mesh =
+        |entries| mesh_pipeline(&gpu.device, layout, &module, entries, &buffers, HDR_FORMAT.into(), Default::default());
     gpu.catch_validation(|| Pipelines {
         flat: mesh(("vs_flat", "fs_flat")),
         gouraud: mesh(("vs_gouraud", "fs_gouraud")),

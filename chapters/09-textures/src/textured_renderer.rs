@@ -135,7 +135,9 @@ impl TexturedRenderer {
         let module = shader!("textures/textured.wgsl", imports: ["lighting/lights.wgsl", "textures/surface.wgsl"])
             .module(gpu)?;
         let buffers = [Some(TexturedVertex::LAYOUT), Some(ModelInstance::LAYOUT)];
-        let pipeline = |entries| mesh_pipeline(&gpu.device, layout, &module, entries, &buffers, HDR_FORMAT.into());
+        let pipeline = |entries| {
+            mesh_pipeline(&gpu.device, layout, &module, entries, &buffers, HDR_FORMAT.into(), Default::default())
+        };
         gpu.catch_validation(|| Pipelines {
             normal_mapped: pipeline(("vs_main", "fs_normal_mapped")),
             plain: pipeline(("vs_main", "fs_plain")),

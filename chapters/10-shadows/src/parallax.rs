@@ -171,6 +171,7 @@ impl Parallax {
                 ("vs_layer", "fs_layer"),
                 &[Some(buffer)],
                 HDR_FORMAT.into(),
+                Default::default(),
             )
         })
         .map_err(ShaderError)

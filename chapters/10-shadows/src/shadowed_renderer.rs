@@ -105,8 +105,17 @@ impl ShadowedRenderer {
         )
         .module(gpu)?;
         let buffers = [Some(TexturedVertex::LAYOUT), Some(ModelInstance::LAYOUT)];
-        let pipeline =
-            |fragment| mesh_pipeline(&gpu.device, layout, &module, ("vs_main", fragment), &buffers, HDR_FORMAT.into());
+        let pipeline = |fragment| {
+            mesh_pipeline(
+                &gpu.device,
+                layout,
+                &module,
+                ("vs_main", fragment),
+                &buffers,
+                HDR_FORMAT.into(),
+                Default::default(),
+            )
+        };
         gpu.catch_validation(|| (pipeline(picture), pipeline(sunlit))).map_err(ShaderError)
     }
 

@@ -166,6 +166,7 @@ impl IslandRenderer {
                 ("vs_island", "fs_island"),
                 &buffers,
                 HDR_FORMAT.into(),
+                Default::default(),
             )
         })
         .map_err(ShaderError)

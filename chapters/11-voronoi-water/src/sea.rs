@@ -243,7 +243,8 @@ impl SeaRenderer {
             ]
         )
         .module(gpu)?;
-        let lit = || mesh_pipeline(device, layout, &module, ("vs_sea", "fs_sea"), &[], HDR_FORMAT.into());
+        let lit =
+            || mesh_pipeline(device, layout, &module, ("vs_sea", "fs_sea"), &[], HDR_FORMAT.into(), Default::default());
         let wire = || {
             device.create_render_pipeline(&wgpu::RenderPipelineDescriptor {
                 label: Some("sea edges"),

@@ -12,7 +12,14 @@ use terrain::ground::EYE_HEIGHT;
 #[test]
 fn walk_puts_the_eye_on_the_ground_headless_too() {
     let gpu = Gpu::headless(TerrainChapter::gpu_needs()).expect("an adapter (lavapipe will do)");
-    let request = RenderRequest { width: 160, height: 90, time: TerrainChapter::SNAPSHOT_TIME, view: 0, camera: None };
+    let request = RenderRequest {
+        width: 160,
+        height: 90,
+        time: TerrainChapter::SNAPSHOT_TIME,
+        view: 0,
+        camera: None,
+        antialiasing: common::Antialiasing::Off,
+    };
     let walk = FlagValues(vec![("walk", "true".into())]);
     let walking = started::<TerrainChapter>(&gpu, &request, &walk).unwrap();
     let flying = started::<TerrainChapter>(&gpu, &request, &FlagValues::default()).unwrap();
@@ -40,5 +47,10 @@ fn walk_puts_the_eye_on_the_ground_headless_too() {
 }
 
 fn request_target(request: &RenderRequest) -> common::Target {
-    common::Target { format: common::headless::OFFSCREEN_FORMAT, width: request.width, height: request.height }
+    common::Target {
+        format: common::headless::OFFSCREEN_FORMAT,
+        width: request.width,
+        height: request.height,
+        samples: 1,
+    }
 }

@@ -14,7 +14,14 @@ fn clip_distances_and_discard_agree() {
     assert!(!without.device.features().contains(wgpu::Features::CLIP_DISTANCES));
     // The refraction picture is all clipping: everything above the water is cut away.
     let view = view_index::<WaterChapter>("refraction").unwrap();
-    let request = RenderRequest { width: 320, height: 180, time: WaterChapter::SNAPSHOT_TIME, view, camera: None };
+    let request = RenderRequest {
+        width: 320,
+        height: 180,
+        time: WaterChapter::SNAPSHOT_TIME,
+        view,
+        camera: None,
+        antialiasing: common::Antialiasing::Off,
+    };
     let (a, b) = (
         render_image::<WaterChapter>(&with, &request).unwrap(),
         render_image::<WaterChapter>(&without, &request).unwrap(),

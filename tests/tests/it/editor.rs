@@ -26,7 +26,7 @@ fn edits_build_errors_point_at_their_line_and_revert_restores() {
     const FILE: &str = "triangle/triangle.wgsl";
     let gpu = Gpu::headless(C::gpu_needs()).unwrap();
     type C = triangle::Triangle;
-    let target = Target { format: OFFSCREEN_FORMAT, width: 96, height: 64 };
+    let target = Target { format: OFFSCREEN_FORMAT, width: 96, height: 64, samples: 1 };
     let mut chapter: C = make(&gpu, target);
     let shipped = capture(&gpu, &mut chapter, target, 0.0, 0).unwrap();
 
@@ -76,7 +76,7 @@ fn edits_build_errors_point_at_their_line_and_revert_restores() {
 fn typing_builds_after_a_pause_not_before() {
     type C = triangle::Triangle;
     let gpu = Gpu::headless(C::gpu_needs()).unwrap();
-    let target = Target { format: OFFSCREEN_FORMAT, width: 32, height: 32 };
+    let target = Target { format: OFFSCREEN_FORMAT, width: 32, height: 32, samples: 1 };
     let mut chapter: C = make(&gpu, target);
     let shipped = capture(&gpu, &mut chapter, target, 0.0, 0).unwrap();
     let mut editor = ShaderEditor::new();
@@ -97,7 +97,7 @@ fn an_edit_to_a_module_reaches_every_pipeline_that_imports_it() {
     type C = voronoi_water::VoronoiWaterChapter;
     const MODULE: &str = "voronoi-water/atmosphere.wgsl";
     let gpu = Gpu::headless(C::gpu_needs()).unwrap();
-    let target = Target { format: OFFSCREEN_FORMAT, width: 128, height: 72 };
+    let target = Target { format: OFFSCREEN_FORMAT, width: 128, height: 72, samples: 1 };
     let mut chapter: C = make(&gpu, target);
     let time = C::SNAPSHOT_TIME;
     let shipped = capture(&gpu, &mut chapter, target, time, 0).unwrap();

@@ -16,7 +16,7 @@ fn a_broken_edit_keeps_the_last_good_pipeline() {
 
     let gpu = Gpu::headless(GpuNeeds::default()).unwrap();
     gpu.read_shaders_from(Some(root.clone()));
-    let target = Target { format: OFFSCREEN_FORMAT, width: 96, height: 64 };
+    let target = Target { format: OFFSCREEN_FORMAT, width: 96, height: 64, samples: 1 };
     let mut chapter = Triangle::new(&gpu, target, ()).unwrap();
     let good = capture(&gpu, &mut chapter, target, 0.0, 0).unwrap();
 

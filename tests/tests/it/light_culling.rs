@@ -14,8 +14,14 @@ fn culled_lights_draw_the_same_bytes_as_the_naive_loop() {
     let gpu = snapshots::lease(LightingChapter::gpu_needs()).unwrap();
     let render = |view| {
         let view = view_index::<LightingChapter>(view).unwrap();
-        let request =
-            RenderRequest { width: 640, height: 360, time: LightingChapter::SNAPSHOT_TIME, view, camera: None };
+        let request = RenderRequest {
+            width: 640,
+            height: 360,
+            time: LightingChapter::SNAPSHOT_TIME,
+            view,
+            camera: None,
+            antialiasing: common::Antialiasing::Off,
+        };
         render_image::<LightingChapter>(&gpu, &request).unwrap()
     };
     let (culled, naive) = (render("lights-256"), render("naive-256"));

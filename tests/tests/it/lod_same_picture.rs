@@ -21,8 +21,14 @@ fn default_against_full_detail<C: Chapter>() -> f32 {
     let target = Target { format: OFFSCREEN_FORMAT, ..snapshots::target() };
     let full = common::chapter::view_index::<C>("full-detail").expect("a full-detail view");
     let picture = |view| {
-        let request =
-            RenderRequest { width: target.width, height: target.height, time: C::SNAPSHOT_TIME, view, camera: None };
+        let request = RenderRequest {
+            width: target.width,
+            height: target.height,
+            time: C::SNAPSHOT_TIME,
+            view,
+            camera: None,
+            antialiasing: common::Antialiasing::Msaa,
+        };
         render_image::<C>(&gpu, &request).unwrap()
     };
     let (lod, whole) = (picture(0), picture(full));

@@ -4,5 +4,6 @@
 //! One test binary per crate: each links wgpu, naga, egui and winit, so
 //! every extra file in `tests/` would be another link of all of them.
 
+mod antialiasing;
 mod render;
 mod solutions;

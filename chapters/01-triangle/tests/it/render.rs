@@ -8,9 +8,18 @@ use triangle::Triangle;
 fn triangle_covers_the_centre_and_not_the_corners() {
     let gpu = Gpu::headless(GpuNeeds::default()).expect("an adapter (lavapipe will do)");
     // An odd width exercises the readback's row padding.
-    let image =
-        render_image::<Triangle>(&gpu, &RenderRequest { width: 201, height: 101, time: 0.0, view: 0, camera: None })
-            .unwrap();
+    let image = render_image::<Triangle>(
+        &gpu,
+        &RenderRequest {
+            width: 201,
+            height: 101,
+            time: 0.0,
+            view: 0,
+            camera: None,
+            antialiasing: common::Antialiasing::Off,
+        },
+    )
+    .unwrap();
     let background = *image.get_pixel(0, 0);
     for (x, y) in [(200, 0), (0, 100), (200, 100)] {
         assert_eq!(*image.get_pixel(x, y), background, "corner ({x}, {y})");
@@ -27,9 +36,18 @@ fn triangle_covers_the_centre_and_not_the_corners() {
 #[test]
 fn flat_view_is_one_colour() {
     let gpu = Gpu::headless(GpuNeeds::default()).expect("an adapter (lavapipe will do)");
-    let image =
-        render_image::<Triangle>(&gpu, &RenderRequest { width: 160, height: 90, time: 0.0, view: 1, camera: None })
-            .unwrap();
+    let image = render_image::<Triangle>(
+        &gpu,
+        &RenderRequest {
+            width: 160,
+            height: 90,
+            time: 0.0,
+            view: 1,
+            camera: None,
+            antialiasing: common::Antialiasing::Off,
+        },
+    )
+    .unwrap();
     let background = *image.get_pixel(0, 0);
     let mut colours: Vec<_> = image.pixels().filter(|p| **p != background).collect();
     // The triangle must be there: 1.4 wide at its base and 1.3 tall in clip
@@ -53,7 +71,7 @@ fn one_frame_draws_one_triangle() {
     use common::headless::{OFFSCREEN_FORMAT, Offscreen, draw_frame};
     use common::{Drawn, PassCount, PassTimer, Target};
     let gpu = Gpu::headless(GpuNeeds::default()).expect("an adapter (lavapipe will do)");
-    let target = Target { format: OFFSCREEN_FORMAT, width: 64, height: 64 };
+    let target = Target { format: OFFSCREEN_FORMAT, width: 64, height: 64, samples: 1 };
     let mut chapter = common::chapter::create::<Triangle>(&gpu, target, &Default::default()).unwrap();
     let offscreen = Offscreen::new(&gpu.device, target);
     let timer = PassTimer::off();
@@ -70,7 +88,14 @@ fn one_frame_draws_one_triangle() {
 fn a_chapter_without_a_camera_refuses_the_camera_flag() {
     let gpu = Gpu::headless(GpuNeeds::default()).expect("an adapter (lavapipe will do)");
     let place = "1,2,3,45,-10".parse().unwrap();
-    let request = RenderRequest { width: 16, height: 16, time: 0.0, view: 0, camera: Some(place) };
+    let request = RenderRequest {
+        width: 16,
+        height: 16,
+        time: 0.0,
+        view: 0,
+        camera: Some(place),
+        antialiasing: common::Antialiasing::Off,
+    };
     let error = render_image::<Triangle>(&gpu, &request).unwrap_err();
     assert!(error.is::<common::args::UsageError>(), "{error:#}");
     let text = format!("{error:#}");

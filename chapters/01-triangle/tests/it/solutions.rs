@@ -10,9 +10,9 @@ use triangle::{ColoredVertex, TRIANGLE, Triangle, build_pipeline};
 /// Draws `vertices` (through `indices`, when given) with the chapter's own
 /// pipeline into a `size` × `size` picture cleared to black.
 fn draw(gpu: &Gpu, size: u32, vertices: &[ColoredVertex], indices: Option<&[u16]>) -> image::RgbaImage {
-    let target = Target { format: OFFSCREEN_FORMAT, width: size, height: size };
+    let target = Target { format: OFFSCREEN_FORMAT, width: size, height: size, samples: 1 };
     let module = shader!("triangle/triangle.wgsl").module(gpu).unwrap();
-    let pipeline = build_pipeline(&gpu.device, &module, target.format, "vs_main", "fs_main");
+    let pipeline = build_pipeline(&gpu.device, &module, target.format, "vs_main", "fs_main", Default::default());
     let buffer = |contents: &[u8], usage| {
         gpu.device.create_buffer_init(&wgpu::util::BufferInitDescriptor { label: None, contents, usage })
     };
@@ -138,7 +138,7 @@ fn exercise_3_clip_position_holds_pixel_coordinates() {
     let (root, original) = scratch_shaders("position");
     let gpu = Gpu::headless(GpuNeeds::default()).expect("an adapter (lavapipe will do)");
     gpu.read_shaders_from(Some(root.clone()));
-    let target = Target { format: OFFSCREEN_FORMAT, width: 1280, height: 720 };
+    let target = Target { format: OFFSCREEN_FORMAT, width: 1280, height: 720, samples: 1 };
     let mut chapter = Triangle::new(&gpu, target, ()).unwrap();
 
     // Saving the edit while the window is open: the pipeline is rebuilt.
@@ -177,7 +177,7 @@ fn exercise_4_a_typo_is_reported_at_its_line_and_the_last_good_pipeline_draws_on
     let (root, original) = scratch_shaders("typo");
     let gpu = Gpu::headless(GpuNeeds::default()).expect("an adapter (lavapipe will do)");
     gpu.read_shaders_from(Some(root.clone()));
-    let target = Target { format: OFFSCREEN_FORMAT, width: 64, height: 64 };
+    let target = Target { format: OFFSCREEN_FORMAT, width: 64, height: 64, samples: 1 };
     let mut chapter = Triangle::new(&gpu, target, ()).unwrap();
     let good = capture(&gpu, &mut chapter, target, 0.0, 0).unwrap();
 

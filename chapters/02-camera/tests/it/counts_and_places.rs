@@ -19,7 +19,7 @@ fn gpu() -> Gpu {
 #[test]
 fn the_scene_pass_counts_every_mesh_it_draws() {
     let gpu = gpu();
-    let target = Target { format: OFFSCREEN_FORMAT, width: 64, height: 36 };
+    let target = Target { format: OFFSCREEN_FORMAT, width: 64, height: 36, samples: 1 };
     let mut chapter = common::chapter::create::<CameraChapter>(&gpu, target, &Default::default()).unwrap();
     let offscreen = Offscreen::new(&gpu.device, target);
     let placements = scene();
@@ -42,7 +42,14 @@ fn the_scene_pass_counts_every_mesh_it_draws() {
 }
 
 fn request(view: usize, camera: Option<CameraPlace>) -> RenderRequest {
-    RenderRequest { width: 96, height: 54, time: CameraChapter::SNAPSHOT_TIME, view, camera }
+    RenderRequest {
+        width: 96,
+        height: 54,
+        time: CameraChapter::SNAPSHOT_TIME,
+        view,
+        camera,
+        antialiasing: common::Antialiasing::Off,
+    }
 }
 
 /// `--camera` with the view's own camera, written with every digit, draws

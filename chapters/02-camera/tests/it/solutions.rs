@@ -148,7 +148,7 @@ fn exercise_3_the_model_matrix_tilts_the_stretched_rows_normals_by_up_to_43_degr
     // The same, seen in the `normals` view: render it with the shader as
     // it is and with the edit, and read the normals back from the colours.
     let gpu = Gpu::headless(GpuNeeds::default()).expect("an adapter (lavapipe will do)");
-    let target = Target { format: OFFSCREEN_FORMAT, width: 320, height: 180 };
+    let target = Target { format: OFFSCREEN_FORMAT, width: 320, height: 180, samples: 1 };
     let normals = camera::VIEW_TABLE.iter().position(|row| row.view.name == "normals").unwrap();
     let render = |gpu: &Gpu| {
         let mut chapter: CameraChapter = common::chapter::create(gpu, target, &Default::default()).unwrap();

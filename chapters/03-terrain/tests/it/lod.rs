@@ -61,7 +61,7 @@ fn straddling_cameras(field: &HeightField, aspect: f32) -> Vec<Camera> {
 #[test]
 fn no_hole_opens_between_levels_and_one_does_without_the_morph() {
     let (_, data) = default_terrain();
-    let target = Target { format: OFFSCREEN_FORMAT, width: 800, height: 450 };
+    let target = Target { format: OFFSCREEN_FORMAT, width: 800, height: 450, samples: 1 };
     let (mut without_morph, mut cameras_with_holes) = (0, 0);
     for camera in straddling_cameras(&data.field, target.aspect()) {
         let detail = Detail::lod(target.height);
@@ -84,7 +84,7 @@ fn no_hole_opens_between_levels_and_one_does_without_the_morph() {
 #[test]
 fn a_large_picture_has_no_hole_either() {
     let (_, data) = default_terrain();
-    let target = Target { format: OFFSCREEN_FORMAT, width: 1920, height: 1080 };
+    let target = Target { format: OFFSCREEN_FORMAT, width: 1920, height: 1080, samples: 1 };
     let camera = looking_down(&data.field, (2000.0, 2200.0), 250.0, 30.0, 50.0, target.aspect());
     let picture = read_texture(
         default_terrain().0,
@@ -107,7 +107,7 @@ fn walking_across_a_boundary_changes_no_pixel_much() {
     // and every change between steps is the level of detail's, none the
     // camera's.
     let (_, data) = default_terrain();
-    let target = Target { format: OFFSCREEN_FORMAT, width: 400, height: 225 };
+    let target = Target { format: OFFSCREEN_FORMAT, width: 400, height: 225, samples: 1 };
     let camera = looking_down(&data.field, (2000.0, 2200.0), 120.0, 0.0, 60.0, target.aspect());
     let detail = Detail::lod(target.height);
     let walk = |shader: &common::ShaderFile| {
@@ -142,7 +142,7 @@ fn the_walker_stands_on_the_ground_drawn() {
         "            return vec4<f32>(shaded, 1.0);",
         "            return vec4<f32>(in.world_position, 1.0);",
     );
-    let target = Target { format: wgpu::TextureFormat::Rgba32Float, width: 9, height: 9 };
+    let target = Target { format: wgpu::TextureFormat::Rgba32Float, width: 9, height: 9, samples: 1 };
     let mut worst = 0.0f32;
     for (x, z) in [(1900.0, 2300.0), (1925.3, 2317.8), (812.6, 3120.1), (3010.0, 1544.4), (2222.2, 600.9)] {
         let mut eye = looking_down(field, (x, z), EYE_HEIGHT, 0.0, 89.99, 1.0);
@@ -178,7 +178,7 @@ fn at_the_edge_under_the_ground_and_at_one_pixel_nothing_breaks() {
     let field = &data.field;
     // Straight down over the map's west edge, facing north: the edge runs
     // down the middle of the picture, the map to its right (east, +x).
-    let target = Target { format: OFFSCREEN_FORMAT, width: 400, height: 400 };
+    let target = Target { format: OFFSCREEN_FORMAT, width: 400, height: 400, samples: 1 };
     let mut camera = looking_down(field, (0.0, 2000.0), 300.0, 0.0, 89.99, 1.0);
     camera.position.x = 0.0;
     let picture =
@@ -195,7 +195,7 @@ fn at_the_edge_under_the_ground_and_at_one_pixel_nothing_breaks() {
         read_texture(gpu, &draw_terrain(&shaded(), target, NO_GROUND, (&under, &under), Detail::lod(400))).unwrap();
     assert_eq!(holes(&picture), 400 * 400);
     // One pixel.
-    let one = Target { format: OFFSCREEN_FORMAT, width: 1, height: 1 };
+    let one = Target { format: OFFSCREEN_FORMAT, width: 1, height: 1, samples: 1 };
     let camera = looking_down(field, (2000.0, 2000.0), 100.0, 0.0, 60.0, 1.0);
     let picture =
         read_texture(gpu, &draw_terrain(&shaded(), one, NO_GROUND, (&camera, &camera), Detail::lod(1))).unwrap();

@@ -124,7 +124,7 @@ fn default_view(
     clear: wgpu::Color,
 ) -> (image::RgbaImage, Vec<Patch>) {
     let (gpu, data) = default_terrain();
-    let target = Target { format, width: 1280, height: 720 };
+    let target = Target { format, width: 1280, height: 720, samples: 1 };
     let camera = start_camera(&data.field, target.aspect());
     let picture =
         read_texture(gpu, &draw_terrain(shader, target, clear, (&camera, &camera), Detail::lod(720))).unwrap();

@@ -150,7 +150,7 @@ fn fog_group(device: &wgpu::Device, fog: FogSettings) -> (wgpu::BindGroupLayout,
 /// The terrain from the start camera in `fog`, at 320 × 180, drawn with `shader`.
 fn render_fogged(shader: &ShaderFile, fog: FogSettings) -> image::RgbaImage {
     let gpu = crate::plain_gpu();
-    let target = Target { format: OFFSCREEN_FORMAT, width: 320, height: 180 };
+    let target = Target { format: OFFSCREEN_FORMAT, width: 320, height: 180, samples: 1 };
     let terrain = TerrainRenderer::new(gpu, TerrainData::get(gpu, TerrainSettings::default()));
     let (air_layout, air) = fog_group(&gpu.device, fog);
     let layout = gpu.device.create_pipeline_layout(&wgpu::PipelineLayoutDescriptor {

@@ -20,7 +20,7 @@ use terrain::{KEEP_ALL, SKY, Sun, TerrainData, TerrainRenderer};
 #[test]
 fn exercise_1_one_call_per_rock_draws_the_same_picture() {
     let gpu = crate::plain_gpu();
-    let target = Target { format: OFFSCREEN_FORMAT, width: 320, height: 180 };
+    let target = Target { format: OFFSCREEN_FORMAT, width: 320, height: 180, samples: 1 };
     let mut chapter: InstancingChapter = common::chapter::create(gpu, target, &Default::default()).unwrap();
     let mut picture = |view: &str| {
         let view = common::chapter::view_index::<InstancingChapter>(view).unwrap();
@@ -129,7 +129,7 @@ struct RockLab {
 
 impl RockLab {
     fn new(gpu: &Gpu) -> Self {
-        let target = Target { format: OFFSCREEN_FORMAT, width: 400, height: 225 };
+        let target = Target { format: OFFSCREEN_FORMAT, width: 400, height: 225, samples: 1 };
         let terrain = TerrainRenderer::new(gpu, TerrainData::get(gpu, TerrainSettings::default()));
         let air = FogBinding::new(&gpu.device);
         air.write(&gpu.queue, FogSettings::HAZE);
@@ -149,6 +149,7 @@ impl RockLab {
             ("vs_instanced", "fs_main"),
             &buffers,
             target.format.into(),
+            Default::default(),
         );
         let camera = Camera { far: FogSettings::HAZE.far_plane(), ..plain_camera(terrain.field(), target.aspect()) };
         Self { terrain, air, pipeline, camera, target }
@@ -241,7 +242,7 @@ fn near_and_far(groups: &[RockGroup], count: u32, frustum: &Frustum, eye: Vec3, 
 #[test]
 fn exercise_4_far_rocks_with_a_coarse_mesh_save_three_fifths_of_the_vertices() {
     let gpu = crate::plain_gpu();
-    let target = Target { format: OFFSCREEN_FORMAT, width: 320, height: 180 };
+    let target = Target { format: OFFSCREEN_FORMAT, width: 320, height: 180, samples: 1 };
     let chapter: InstancingChapter = common::chapter::create(gpu, target, &Default::default()).unwrap();
     // The default view's camera, with its far plane in the haze.
     let camera = Camera { far: FogSettings::HAZE.far_plane(), ..chapter.camera };

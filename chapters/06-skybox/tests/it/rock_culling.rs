@@ -30,7 +30,7 @@ fn picture<C: Chapter>(gpu: &common::Gpu, chapter: &mut C, target: Target, view:
 #[test]
 fn the_cpu_culling_view_draws_the_rocks_of_the_chunks_in_view_and_says_how_many() {
     let gpu = crate::plain_gpu();
-    let target = Target { format: OFFSCREEN_FORMAT, width: 160, height: 90 };
+    let target = Target { format: OFFSCREEN_FORMAT, width: 160, height: 90, samples: 1 };
     let mut chapter: InstancingChapter = common::chapter::create(gpu, target, &Default::default()).unwrap();
     let culled = picture(gpu, &mut chapter, target, "cpu-culling");
     let calls = chapter.draw_calls;
@@ -148,7 +148,7 @@ fn project(camera: &Camera, height: f32, centre: Vec3, radius: f32, grading: Gra
 #[test]
 fn the_gpu_keeps_and_grades_the_rocks_a_projection_of_their_spheres_keeps_and_grades() {
     let gpu = crate::plain_gpu();
-    let target = Target { format: OFFSCREEN_FORMAT, width: 640, height: 360 };
+    let target = Target { format: OFFSCREEN_FORMAT, width: 640, height: 360, samples: 1 };
     let mut chapter: InstancingChapter = common::chapter::create(gpu, target, &Default::default()).unwrap();
     picture(gpu, &mut chapter, target, "default");
     let lists = chapter.plain.rock_lists(chapter.viewpoint()).expect("lavapipe culls on the GPU");
@@ -313,7 +313,7 @@ fn rocks_placed_by_hand_land_in_the_lists_worked_out_by_hand() {
 #[test]
 fn without_compute_shaders_the_plain_culls_by_chunk_and_says_which_capability_is_missing() {
     let gpu = crate::plain_gpu();
-    let target = Target { format: OFFSCREEN_FORMAT, width: 160, height: 90 };
+    let target = Target { format: OFFSCREEN_FORMAT, width: 160, height: 90, samples: 1 };
     let mut chapter: InstancingChapter = common::chapter::create(gpu, target, &Default::default()).unwrap();
     let by_chunk = picture(gpu, &mut chapter, target, "cpu-culling");
     let chunk_calls = chapter.draw_calls;
@@ -347,7 +347,7 @@ fn rock_triangles(line: &str) -> u64 {
 fn the_default_views_of_05_and_06_draw_a_tenth_of_the_rock_triangles_culling_by_chunk_drew() {
     // The budget's picture size: the lent GPU's figures are at 1920 × 1080.
     let gpu = crate::plain_gpu();
-    let target = Target { format: OFFSCREEN_FORMAT, width: 1920, height: 1080 };
+    let target = Target { format: OFFSCREEN_FORMAT, width: 1920, height: 1080, samples: 1 };
     let mut chapter: InstancingChapter = common::chapter::create(gpu, target, &Default::default()).unwrap();
     let mut drawn = |view: &str| {
         let view = common::chapter::view_index::<InstancingChapter>(view).unwrap();

@@ -15,7 +15,7 @@ use terrain::noise::perlin3;
 fn exercise_1_at_midnight_the_sun_is_73_degrees_below_the_southern_horizon() {
     // A 20 s day, starting mid-morning (phase 0.4): midnight comes 12 s in.
     let gpu = crate::plain_gpu();
-    let target = Target { format: OFFSCREEN_FORMAT, width: 64, height: 36 };
+    let target = Target { format: OFFSCREEN_FORMAT, width: 64, height: 36, samples: 1 };
     let mut chapter: SkyboxChapter = common::chapter::create(gpu, target, &Default::default()).unwrap();
     chapter.day_seconds = 20.0;
     assert!(chapter.phase_at(12.0).abs() < 1e-6, "{}", chapter.phase_at(12.0));
@@ -115,7 +115,7 @@ fn exercise_2_phobos_rises_in_the_west_twice_a_day() {
     // middle of the picture, about 6 pixels across (0.8° in a 60° view
     // 450 pixels tall).
     let (gpu, as_it_is, with_phobos) = skies("sky-phobos", SKY_RETURN, PHOBOS);
-    let target = Target { format: OFFSCREEN_FORMAT, width: 800, height: 450 };
+    let target = Target { format: OFFSCREEN_FORMAT, width: 800, height: 450, samples: 1 };
     let camera = Camera::looking_at(Vec3::ZERO, phobos_at(0.4), target.aspect());
     let (before, after) =
         (render_sky(&gpu, &as_it_is, &camera, 0.4, target), render_sky(&gpu, &with_phobos, &camera, 0.4, target));
@@ -179,7 +179,7 @@ fn row_colour(picture: &image::RgbaImage, y: u32) -> [f32; 3] {
 #[test]
 fn exercise_3_the_night_horizon_glows_level_and_the_fog_glows_with_it() {
     let (gpu, as_it_is, glowing) = skies("sky-glow", SKY_RETURN, NIGHT_GLOW);
-    let target = Target { format: OFFSCREEN_FORMAT, width: 320, height: 180 };
+    let target = Target { format: OFFSCREEN_FORMAT, width: 320, height: 180, samples: 1 };
     // Looking level, west and east, at two times of the night: the horizon
     // is the picture's middle row, and row 30 looks 21° up.
     for (yaw, phase) in [(0.25 * TAU, 0.02), (0.75 * TAU, 0.9)] {
@@ -414,7 +414,7 @@ fn exercise_4_clouds_turn_three_times_a_day_over_a_still_sky() {
     let clear = std::array::from_fn(|_| image::RgbaImage::from_pixel(64, 64, image::Rgba([0, 0, 0, 255])));
     let (cloudy, cloudless) =
         (CloudySky::new(&gpu, OFFSCREEN_FORMAT, &faces), CloudySky::new(&gpu, OFFSCREEN_FORMAT, &clear));
-    let target = Target { format: OFFSCREEN_FORMAT, width: 200, height: 112 };
+    let target = Target { format: OFFSCREEN_FORMAT, width: 200, height: 112, samples: 1 };
     let clouds_seen = |camera: &Camera, phase: f32| -> Vec<i16> {
         let (a, b) = (cloudy.render(&gpu, camera, phase, target), cloudless.render(&gpu, camera, phase, target));
         a.pixels().zip(b.pixels()).map(|(p, q)| i16::from(p[1]) - i16::from(q[1])).collect()

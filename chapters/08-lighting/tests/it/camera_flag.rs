@@ -10,10 +10,17 @@ use lighting::LightingChapter;
 fn a_placed_camera_stops_riding() {
     let gpu = Gpu::headless(LightingChapter::gpu_needs()).expect("an adapter (lavapipe will do)");
     let (width, height) = (64, 36);
-    let target = Target { format: OFFSCREEN_FORMAT, width, height };
+    let target = Target { format: OFFSCREEN_FORMAT, width, height, samples: 1 };
     let view = view_index::<LightingChapter>("follow").unwrap();
     let place: CameraPlace = "10,30,-40,135,-20".parse().unwrap();
-    let request = |camera| RenderRequest { width, height, time: LightingChapter::SNAPSHOT_TIME, view, camera };
+    let request = |camera| RenderRequest {
+        width,
+        height,
+        time: LightingChapter::SNAPSHOT_TIME,
+        view,
+        camera,
+        antialiasing: common::Antialiasing::Off,
+    };
     let time = LightingChapter::SNAPSHOT_TIME;
 
     let mut riding = started::<LightingChapter>(&gpu, &request(None), &Default::default()).unwrap();

@@ -17,7 +17,7 @@ struct Night {
 
 impl Night {
     fn new(gpu: &Gpu, (width, height): (u32, u32)) -> Self {
-        let target = Target { format: OFFSCREEN_FORMAT, width, height };
+        let target = Target { format: OFFSCREEN_FORMAT, width, height, samples: 1 };
         let mut chapter = LightingChapter::new(gpu, target, ()).unwrap();
         chapter.select_view(view_index::<LightingChapter>("night").unwrap());
         Self { chapter, offscreen: Offscreen::new(&gpu.device, target) }

@@ -17,7 +17,7 @@ const SIZE: (u32, u32) = (480, 270);
 /// without highlights, at `exposure`, without bloom (which would spread a
 /// highlight into its surroundings).
 fn render(gpu: &Gpu, chapter: &mut LightingChapter, view: &str, highlights: bool, exposure: f32) -> image::RgbaImage {
-    let target = Target { format: OFFSCREEN_FORMAT, width: SIZE.0, height: SIZE.1 };
+    let target = Target { format: OFFSCREEN_FORMAT, width: SIZE.0, height: SIZE.1, samples: 1 };
     let index = view_index::<LightingChapter>(view).unwrap();
     chapter.select_view(index);
     let sun = daylight(TimeOfDay::Morning.phase(0.0, 1.0)).direction;
@@ -49,7 +49,7 @@ fn luminance(p: &image::Rgba<u8>) -> f32 {
 #[test]
 fn phong_peaks_higher_than_gouraud_and_their_diffuse_light_agrees() {
     let gpu = Gpu::headless(LightingChapter::gpu_needs()).expect("an adapter (lavapipe will do)");
-    let target = Target { format: OFFSCREEN_FORMAT, width: SIZE.0, height: SIZE.1 };
+    let target = Target { format: OFFSCREEN_FORMAT, width: SIZE.0, height: SIZE.1, samples: 1 };
     let mut chapter = LightingChapter::new(&gpu, target, ()).unwrap();
 
     // The highlight is tens of times brighter than white in HDR: at the usual
@@ -90,7 +90,7 @@ fn phong_peaks_higher_than_gouraud_and_their_diffuse_light_agrees() {
 /// The `phong` view's HDR light, pixel by pixel, and its depth (1 where
 /// the sky is), after drawing `view` at the snapshot's time and camera.
 fn hdr_light(gpu: &Gpu, chapter: &mut LightingChapter, view: &str) -> (Vec<[f32; 4]>, Vec<f32>) {
-    let target = Target { format: OFFSCREEN_FORMAT, width: SIZE.0, height: SIZE.1 };
+    let target = Target { format: OFFSCREEN_FORMAT, width: SIZE.0, height: SIZE.1, samples: 1 };
     let index = view_index::<LightingChapter>(view).unwrap();
     chapter.select_view(index);
     capture(gpu, chapter, target, LightingChapter::SNAPSHOT_TIME, index).unwrap();
@@ -102,7 +102,7 @@ fn hdr_light(gpu: &Gpu, chapter: &mut LightingChapter, view: &str) -> (Vec<[f32;
 #[test]
 fn the_ambient_diffuse_and_specular_views_add_up_to_the_picture() {
     let gpu = Gpu::headless(LightingChapter::gpu_needs()).expect("an adapter (lavapipe will do)");
-    let target = Target { format: OFFSCREEN_FORMAT, width: SIZE.0, height: SIZE.1 };
+    let target = Target { format: OFFSCREEN_FORMAT, width: SIZE.0, height: SIZE.1, samples: 1 };
     let mut chapter = LightingChapter::new(&gpu, target, ()).unwrap();
     let (picture, depth) = hdr_light(&gpu, &mut chapter, "phong");
     let terms = ["ambient", "diffuse", "specular"].map(|view| hdr_light(&gpu, &mut chapter, view).0);

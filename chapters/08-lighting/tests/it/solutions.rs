@@ -308,7 +308,7 @@ fn exercises_3_to_5_on_the_night_city() {
     let gpu = Gpu::headless(LightingChapter::gpu_needs()).expect("an adapter (lavapipe will do)");
     gpu.read_shaders_from(Some(root.clone()));
     let size = (320, 180);
-    let target = Target { format: OFFSCREEN_FORMAT, width: size.0, height: size.1 };
+    let target = Target { format: OFFSCREEN_FORMAT, width: size.0, height: size.1, samples: 1 };
     let mut chapter = LightingChapter::new(&gpu, target, ()).unwrap();
     let time = LightingChapter::SNAPSHOT_TIME;
     let draw = |chapter: &mut LightingChapter, view: &str, camera: Camera| {

@@ -174,7 +174,7 @@ fn gpu() -> Gpu {
 }
 
 fn chapter_with_model(gpu: &Gpu, path: &Path, size: (u32, u32)) -> TexturesChapter {
-    let target = Target { format: OFFSCREEN_FORMAT, width: size.0, height: size.1 };
+    let target = Target { format: OFFSCREEN_FORMAT, width: size.0, height: size.1, samples: 1 };
     let flags = FlagValues(vec![("model", path.display().to_string())]);
     common::chapter::create::<TexturesChapter>(gpu, target, &flags).unwrap()
 }
@@ -214,7 +214,7 @@ fn a_missing_texture_is_one_warning_and_a_visible_checker() {
     assert_eq!(chapter.featured.materials, 3);
     let view = common::chapter::view_index::<TexturesChapter>("car").unwrap();
     chapter.select_view(view);
-    let target = Target { format: OFFSCREEN_FORMAT, width: 320, height: 180 };
+    let target = Target { format: OFFSCREEN_FORMAT, width: 320, height: 180, samples: 1 };
     let picture = capture(&gpu, &mut chapter, target, TexturesChapter::SNAPSHOT_TIME, view).unwrap();
     let magenta = picture.pixels().filter(|p| p[0] > 120 && p[2] > 120 && p[1] < 90).count();
     assert!(magenta > 200, "the checker shows: {magenta} magenta pixels");
@@ -264,7 +264,7 @@ fn a_million_triangles_load_and_render() {
     assert!(chapter.featured.triangles >= 1_000_000, "{} triangles", chapter.featured.triangles);
     let view = common::chapter::view_index::<TexturesChapter>("car").unwrap();
     chapter.select_view(view);
-    let target = Target { format: OFFSCREEN_FORMAT, width: 160, height: 90 };
+    let target = Target { format: OFFSCREEN_FORMAT, width: 160, height: 90, samples: 1 };
     let with = capture(&gpu, &mut chapter, target, TexturesChapter::SNAPSHOT_TIME, view).unwrap();
     // The same picture with the model taken off the stage: the middle changes.
     chapter.featured.placement = common::glam::Mat4::from_translation(Vec3::new(0.0, -1000.0, 0.0));
@@ -383,7 +383,7 @@ fn vertex_colours_are_drawn() {
     let dir = folder("colours-drawn", &[("red.obj", &coloured_cube("1 0 0")), ("white.obj", &coloured_cube("1 1 1"))]);
     let gpu = gpu();
     let view = common::chapter::view_index::<TexturesChapter>("car").unwrap();
-    let target = Target { format: OFFSCREEN_FORMAT, width: 64, height: 64 };
+    let target = Target { format: OFFSCREEN_FORMAT, width: 64, height: 64, samples: 1 };
     let mut reddish = Vec::new();
     for name in ["red.obj", "white.obj"] {
         let mut chapter = chapter_with_model(&gpu, &dir.join(name), (64, 64));

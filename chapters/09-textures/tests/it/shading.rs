@@ -52,7 +52,7 @@ fn sphere_folder() -> PathBuf {
 /// The stage with the sphere on it, seen by the `car` view's camera, with
 /// `shading` and no bloom (which would spread light from face to face).
 fn render(gpu: &Gpu, chapter: &mut TexturesChapter, shading: Shading) -> image::RgbaImage {
-    let target = Target { format: OFFSCREEN_FORMAT, width: SIZE.0, height: SIZE.1 };
+    let target = Target { format: OFFSCREEN_FORMAT, width: SIZE.0, height: SIZE.1, samples: 1 };
     let view = common::chapter::view_index::<TexturesChapter>("car").unwrap();
     chapter.select_view(view);
     chapter.settings.shading = shading;
@@ -123,7 +123,7 @@ fn flat_gouraud_and_phong_differ_and_flat_gives_each_face_one_colour() {
     let dir = sphere_folder();
     let path: &Path = &dir.join("sphere.obj");
     let gpu = Gpu::headless(TexturesChapter::gpu_needs()).unwrap();
-    let target = Target { format: OFFSCREEN_FORMAT, width: SIZE.0, height: SIZE.1 };
+    let target = Target { format: OFFSCREEN_FORMAT, width: SIZE.0, height: SIZE.1, samples: 1 };
     let flags = FlagValues(vec![("model", path.display().to_string())]);
     let mut chapter = common::chapter::create::<TexturesChapter>(&gpu, target, &flags).unwrap();
     let [flat, gouraud, phong] =

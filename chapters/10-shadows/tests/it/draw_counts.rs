@@ -17,7 +17,7 @@ use textures::obj;
 #[test]
 fn each_pass_counts_the_level_it_draws() {
     let gpu = Gpu::headless(ShadowsChapter::gpu_needs()).expect("an adapter (lavapipe will do)");
-    let target = Target { format: OFFSCREEN_FORMAT, width: 96, height: 54 };
+    let target = Target { format: OFFSCREEN_FORMAT, width: 96, height: 54, samples: 1 };
     let mut chapter = common::chapter::create::<ShadowsChapter>(&gpu, target, &Default::default()).unwrap();
     let view = 0;
     chapter.select_view(view);

@@ -18,7 +18,7 @@ fn a_broken_caster_shader_keeps_the_last_good_shadow_pass() {
 
     let gpu = Gpu::headless(ShadowsChapter::gpu_needs()).unwrap();
     gpu.read_shaders_from(Some(root.clone()));
-    let target = Target { format: OFFSCREEN_FORMAT, width: 160, height: 90 };
+    let target = Target { format: OFFSCREEN_FORMAT, width: 160, height: 90, samples: 1 };
     let mut chapter = ShadowsChapter::new(&gpu, target, ()).unwrap();
     let good = capture(&gpu, &mut chapter, target, 5.7, 0).unwrap();
 

@@ -198,7 +198,7 @@ impl TinyScene {
         point.write(gpu, &light, settings);
         let renderer = ShadowedRenderer::with_point_light(gpu, &lights, &materials, &sun, &point).unwrap();
         let Offscreen { texture: target, view } =
-            Offscreen::new(device, Target { format: HDR_FORMAT, width: WIDTH, height: HEIGHT });
+            Offscreen::new(device, Target { format: HDR_FORMAT, width: WIDTH, height: HEIGHT, samples: 1 });
         let depth = common::texture::depth_view(device, WIDTH, HEIGHT);
         let mut encoder = device.create_command_encoder(&Default::default());
         let timer = common::PassTimer::off();
@@ -362,7 +362,7 @@ fn the_lantern_hangs_in_the_tunnel_and_its_cube_costs_what_the_page_says() {
 
     // One frame's six passes, counted as they were recorded.
     let gpu = Gpu::headless(ShadowsChapter::gpu_needs()).unwrap();
-    let target = Target { format: OFFSCREEN_FORMAT, width: 160, height: 90 };
+    let target = Target { format: OFFSCREEN_FORMAT, width: 160, height: 90, samples: 1 };
     let mut chapter = ShadowsChapter::new(&gpu, target, ()).unwrap();
     let view = common::chapter::view_index::<ShadowsChapter>("lantern").unwrap();
     chapter.select_view(view);

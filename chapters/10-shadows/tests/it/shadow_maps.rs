@@ -90,7 +90,7 @@ fn a_box_above_a_plane_casts_the_shadow_geometry_predicts() {
         draws: vec![Draw { model: &plane, instances: 0..1 }, Draw { model: &cube, instances: 0..1 }],
     };
     let Offscreen { texture: target, view } =
-        Offscreen::new(device, Target { format: HDR_FORMAT, width: WIDTH, height: HEIGHT });
+        Offscreen::new(device, Target { format: HDR_FORMAT, width: WIDTH, height: HEIGHT, samples: 1 });
     let depth = common::texture::depth_view(device, WIDTH, HEIGHT);
     // The picture, lit by the sun towards `towards_sun`, with the map made
     // for a sun towards `map_sun`.
@@ -173,7 +173,7 @@ fn a_box_above_a_plane_casts_the_shadow_geometry_predicts() {
 
 /// Pixels whose surface faces the sun and yet get less than half its light.
 fn shadowed_lit_faces(gpu: &Gpu, view: &str) -> (usize, usize) {
-    let target = Target { format: OFFSCREEN_FORMAT, width: 480, height: 270 };
+    let target = Target { format: OFFSCREEN_FORMAT, width: 480, height: 270, samples: 1 };
     let mut chapter = ShadowsChapter::new(gpu, target, ()).unwrap();
     let index = common::chapter::view_index::<ShadowsChapter>(view).unwrap();
     chapter.settings = shadows::Settings { show: Show::Sunlit, ..shadows::VIEW_TABLE[index].settings };
@@ -200,7 +200,7 @@ fn without_bias_lit_faces_shadow_themselves() {
 #[test]
 fn the_scripted_run_gives_the_same_bytes_however_it_was_reached() {
     let gpu = Gpu::headless(ShadowsChapter::gpu_needs()).unwrap();
-    let target = Target { format: OFFSCREEN_FORMAT, width: 320, height: 180 };
+    let target = Target { format: OFFSCREEN_FORMAT, width: 320, height: 180, samples: 1 };
     let picture = |times: &[f32]| {
         let mut chapter = ShadowsChapter::new(&gpu, target, ()).unwrap();
         let mut last = None;
@@ -242,7 +242,7 @@ fn a_key_takes_over_from_the_demo_and_every_key_at_once_breaks_nothing() {
     use common::Input;
     use common::winit::keyboard::KeyCode;
     let gpu = Gpu::headless(ShadowsChapter::gpu_needs()).unwrap();
-    let target = Target { format: OFFSCREEN_FORMAT, width: 160, height: 90 };
+    let target = Target { format: OFFSCREEN_FORMAT, width: 160, height: 90, samples: 1 };
     let mut chapter = ShadowsChapter::new(&gpu, target, ()).unwrap();
     let demo = capture(&gpu, &mut chapter, target, 0.0, 0).unwrap();
     let mut input = Input::default();

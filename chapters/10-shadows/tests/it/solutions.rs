@@ -33,7 +33,7 @@ struct Sunlit {
 /// Counts what [`Sunlit`] says in a picture of the level at `time` with
 /// `settings`, shown as `Show::Sunlit`.
 fn sunlit(gpu: &Gpu, chapter: &mut ShadowsChapter, settings: Settings, time: f32) -> Sunlit {
-    let target = Target { format: OFFSCREEN_FORMAT, width: 320, height: 180 };
+    let target = Target { format: OFFSCREEN_FORMAT, width: 320, height: 180, samples: 1 };
     chapter.settings = Settings { show: Show::Sunlit, ..settings };
     let image = capture(gpu, chapter, target, time, 0).unwrap();
     let pixels: Vec<_> = image.pixels().collect();
@@ -74,7 +74,7 @@ fn smallest_bias_without_acne(
 #[test]
 fn exercises_1_2_and_4_biases_culling_and_the_evening_sun() {
     let gpu = Gpu::headless(ShadowsChapter::gpu_needs()).unwrap();
-    let target = Target { format: OFFSCREEN_FORMAT, width: 320, height: 180 };
+    let target = Target { format: OFFSCREEN_FORMAT, width: 320, height: 180, samples: 1 };
     let mut chapter = ShadowsChapter::new(&gpu, target, ()).unwrap();
     let time = ShadowsChapter::SNAPSHOT_TIME;
 

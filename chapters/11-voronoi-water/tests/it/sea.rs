@@ -13,13 +13,13 @@ use voronoi_water::{Play, VoronoiWaterChapter};
 /// the vertex shader put each vertex of the grid: (x, height, z).
 fn probe(gpu: &Gpu, chapter: &mut VoronoiWaterChapter, position: Vec2, time: f32) -> Vec<[f32; 4]> {
     chapter.play = Play::Keys(Helm { position, heading: 0.3, speed: 0.0 });
-    let target = Target { format: OFFSCREEN_FORMAT, width: 64, height: 36 };
+    let target = Target { format: OFFSCREEN_FORMAT, width: 64, height: 36, samples: 1 };
     capture(gpu, chapter, target, time, 0).unwrap();
     chapter.sea.probe(gpu, &chapter.scene_lights, &chapter.atmosphere, &chapter.shadow_map).unwrap()
 }
 
 fn chapter(gpu: &Gpu) -> VoronoiWaterChapter {
-    let target = Target { format: OFFSCREEN_FORMAT, width: 64, height: 36 };
+    let target = Target { format: OFFSCREEN_FORMAT, width: 64, height: 36, samples: 1 };
     let mut chapter = common::chapter::create::<VoronoiWaterChapter>(gpu, target, &Default::default()).unwrap();
     chapter.select_view(0);
     chapter
@@ -120,7 +120,7 @@ fn a_million_seconds_in_the_waves_are_still_waves() {
     assert!((spread(&late) / early - 1.0).abs() < 0.2, "the waves' spread went from {early} to {}", spread(&late));
     // And the picture renders.
     chapter.play = Play::Course;
-    let target = Target { format: OFFSCREEN_FORMAT, width: 64, height: 36 };
+    let target = Target { format: OFFSCREEN_FORMAT, width: 64, height: 36, samples: 1 };
     let picture = capture(&gpu, &mut chapter, target, 1e6, 0).unwrap();
     assert!(picture.pixels().any(|p| p[2] > 40), "a sea at 10⁶ s");
 }

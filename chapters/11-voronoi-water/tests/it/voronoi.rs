@@ -14,7 +14,7 @@ const WIDTH: u32 = 400;
 const HEIGHT: u32 = 240;
 
 fn chapter(gpu: &Gpu, view: &str) -> VoronoiWaterChapter {
-    let target = Target { format: OFFSCREEN_FORMAT, width: WIDTH, height: HEIGHT };
+    let target = Target { format: OFFSCREEN_FORMAT, width: WIDTH, height: HEIGHT, samples: 1 };
     let mut chapter = common::chapter::create::<VoronoiWaterChapter>(gpu, target, &Default::default()).unwrap();
     chapter.select_view(common::chapter::view_index::<VoronoiWaterChapter>(view).unwrap());
     chapter
@@ -38,7 +38,7 @@ fn every_pixel_of_the_cells_view_holds_its_nearest_site() {
     let view = common::chapter::view_index::<VoronoiWaterChapter>("cells").unwrap();
     let software = gpu.adapter.get_info().device_type == common::wgpu::DeviceType::Cpu;
     for time in [3.0, 1234.5] {
-        let target = Target { format: OFFSCREEN_FORMAT, width: WIDTH, height: HEIGHT };
+        let target = Target { format: OFFSCREEN_FORMAT, width: WIDTH, height: HEIGHT, samples: 1 };
         let picture = capture(&gpu, &mut chapter, target, time, view).unwrap();
         let sites = sites::positions(time);
         // The exact cones' depth is the distance in f32 (a depth of 0..1,
@@ -93,7 +93,7 @@ fn jump_flooding_agrees_with_the_cones() {
     let gpu = Gpu::headless(VoronoiWaterChapter::gpu_needs()).unwrap();
     let mut chapter = chapter(&gpu, "cells");
     let view = common::chapter::view_index::<VoronoiWaterChapter>("cells").unwrap();
-    let target = Target { format: OFFSCREEN_FORMAT, width: WIDTH, height: HEIGHT };
+    let target = Target { format: OFFSCREEN_FORMAT, width: WIDTH, height: HEIGHT, samples: 1 };
     let time = 3.0;
     let cones = ids_of(&capture(&gpu, &mut chapter, target, time, view).unwrap());
     let mut misses = |extra_pass| {

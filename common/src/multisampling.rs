@@ -1,0 +1,171 @@
+//! Multisampling (MSAA): the scene is drawn into a picture that keeps
+//! several samples a pixel, and the pass ends by resolving them, averaging
+//! each pixel's samples into the single-sampled picture the next step
+//! reads. A triangle's coverage is tested at every sample, its fragment
+//! shader runs once a pixel, so an edge gets as many shades as there are
+//! samples for about the cost of the extra memory. Chapter 02 explains it;
+//! every chapter draws its scene through [`SceneTargets`].
+
+use crate::texture::DEPTH_FORMAT;
+use crate::{Gpu, Target};
+
+/// The sample count the chapters ask for: WebGPU guarantees 4 for the
+/// usual colour formats and for depth, and WebGL2 allows at least 4.
+pub const SAMPLES: u32 = 4;
+
+/// How edges are smoothed: `--antialiasing`, and the overlay's switch.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, clap::ValueEnum)]
+pub enum Antialiasing {
+    /// One sample a pixel: every edge a staircase.
+    Off,
+    /// [`SAMPLES`] samples a pixel, resolved at the end of the scene pass.
+    #[default]
+    Msaa,
+}
+
+impl Antialiasing {
+    /// The samples a pixel this asks for.
+    pub const fn samples(self) -> u32 {
+        match self {
+            Self::Off => 1,
+            Self::Msaa => SAMPLES,
+        }
+    }
+}
+
+/// `asked` if the adapter can multisample both `format` and the depth
+/// format with that many samples, else 1 (the GL backend cannot for some
+/// formats); the overlay says so.
+pub fn samples_for(adapter: &wgpu::Adapter, format: wgpu::TextureFormat, asked: u32) -> u32 {
+    let supports = |format| adapter.get_texture_format_features(format).flags.sample_count_supported(asked);
+    if asked > 1 && supports(format) && supports(DEPTH_FORMAT) { asked } else { 1 }
+}
+
+/// The pipeline state for drawing into a pass of `samples` samples a pixel.
+pub fn multisample(samples: u32) -> wgpu::MultisampleState {
+    wgpu::MultisampleState { count: samples, ..Default::default() }
+}
+
+// ANCHOR: scene_targets
+/// What a scene is drawn into before it reaches its picture: a colour
+/// buffer of [`Target::samples`] samples a pixel (none at 1 sample, where
+/// the scene is drawn into the picture itself) and a depth buffer of as
+/// many. In: the target's size, format and sample count; out: each pass
+/// [`SceneTargets::pass`] begins ends in the picture it is given.
+pub struct SceneTargets {
+    samples: u32,
+    /// The samples, until the pass resolves them; `None` at 1 sample.
+    colour: Option<wgpu::TextureView>,
+    /// `None` for a scene drawn without a depth test (chapter 01).
+    depth: Option<wgpu::TextureView>,
+}
+
+impl SceneTargets {
+    /// Colour samples and a depth buffer for `target`: as many samples as
+    /// it asks for where the adapter can multisample its format and
+    /// depth, else one ([`SceneTargets::samples`] says which).
+    pub fn new(gpu: &Gpu, target: Target) -> Self {
+        Self::make(gpu, target, true)
+    }
+
+    /// [`SceneTargets::new`] without a depth buffer, for a scene drawn
+    /// without a depth test.
+    pub fn without_depth(gpu: &Gpu, target: Target) -> Self {
+        Self::make(gpu, target, false)
+    }
+
+    fn make(gpu: &Gpu, target: Target, with_depth: bool) -> Self {
+        let device = &gpu.device;
+        let samples = samples_for(&gpu.adapter, target.format, target.samples.max(1));
+        let size =
+            wgpu::Extent3d { width: target.width.max(1), height: target.height.max(1), depth_or_array_layers: 1 };
+        let texture = |label, format, usage| {
+            device
+                .create_texture(&wgpu::TextureDescriptor {
+                    label: Some(label),
+                    size,
+                    mip_level_count: 1,
+                    sample_count: samples,
+                    dimension: wgpu::TextureDimension::D2,
+                    format,
+                    usage,
+                    view_formats: &[],
+                })
+                .create_view(&Default::default())
+        };
+        let colour = (samples > 1).then(|| texture("samples", target.format, wgpu::TextureUsages::RENDER_ATTACHMENT));
+        // A single-sampled depth buffer can be read as a texture (chapter
+        // 02's depth view); a multisampled one would need a shader of its
+        // own, and views that read depth draw with one sample instead.
+        let readable = if samples == 1 { wgpu::TextureUsages::TEXTURE_BINDING } else { wgpu::TextureUsages::empty() };
+        let depth =
+            with_depth.then(|| texture("depth", DEPTH_FORMAT, wgpu::TextureUsages::RENDER_ATTACHMENT | readable));
+        Self { samples, colour, depth }
+    }
+
+    // ANCHOR_END: scene_targets
+
+    /// Samples a pixel: what every pipeline drawing in these passes must say.
+    pub fn samples(&self) -> u32 {
+        self.samples
+    }
+
+    /// The pipeline state for drawing into these targets.
+    pub fn multisample(&self) -> wgpu::MultisampleState {
+        multisample(self.samples)
+    }
+
+    /// The depth buffer (single-sampled, and readable, at 1 sample).
+    pub fn depth(&self) -> Option<&wgpu::TextureView> {
+        self.depth.as_ref()
+    }
+
+    /// The colour attachment's view and resolve target for a pass that
+    /// ends in `picture`: the samples, resolved into `picture`, or at one
+    /// sample `picture` itself (for a pass written out in full: chapter 01).
+    pub fn colour_attachment<'a>(
+        &'a self,
+        picture: &'a wgpu::TextureView,
+    ) -> (&'a wgpu::TextureView, Option<&'a wgpu::TextureView>) {
+        match &self.colour {
+            Some(samples) => (samples, Some(picture)),
+            None => (picture, None),
+        }
+    }
+
+    /// Begins a pass that ends in `picture`: cleared to `clear` and depth
+    /// to the far plane, or with `None` kept as the last pass left both (to
+    /// draw on top). With several samples the pass draws into the samples
+    /// and resolves them into `picture` when it ends; the samples are kept
+    /// for a pass that goes on drawing.
+    pub fn pass<'e>(
+        &self,
+        encoder: &'e mut wgpu::CommandEncoder,
+        timer: &crate::PassTimer,
+        label: &'static str,
+        picture: &wgpu::TextureView,
+        clear: Option<wgpu::Color>,
+    ) -> wgpu::RenderPass<'e> {
+        let (view, resolve_target) = self.colour_attachment(picture);
+        let (load, depth_load) = match clear {
+            Some(colour) => (wgpu::LoadOp::Clear(colour), wgpu::LoadOp::Clear(1.0)),
+            None => (wgpu::LoadOp::Load, wgpu::LoadOp::Load),
+        };
+        encoder.begin_render_pass(&wgpu::RenderPassDescriptor {
+            label: Some(label),
+            color_attachments: &[Some(wgpu::RenderPassColorAttachment {
+                view,
+                depth_slice: None,
+                resolve_target,
+                ops: wgpu::Operations { load, store: wgpu::StoreOp::Store },
+            })],
+            depth_stencil_attachment: self.depth.as_ref().map(|view| wgpu::RenderPassDepthStencilAttachment {
+                view,
+                depth_ops: Some(wgpu::Operations { load: depth_load, store: wgpu::StoreOp::Store }),
+                stencil_ops: None,
+            }),
+            timestamp_writes: timer.pass(label),
+            ..Default::default()
+        })
+    }
+}
