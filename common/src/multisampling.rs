@@ -6,6 +6,8 @@
 //! samples for about the cost of the extra memory. Chapter 02 explains it;
 //! every chapter draws its scene through [`SceneTargets`].
 
+use std::sync::Mutex;
+
 use crate::texture::DEPTH_FORMAT;
 use crate::{Gpu, Target};
 
@@ -54,8 +56,14 @@ pub fn multisample(samples: u32) -> wgpu::MultisampleState {
 /// [`SceneTargets::pass`] begins ends in the picture it is given.
 pub struct SceneTargets {
     samples: u32,
-    /// The samples, until the pass resolves them; `None` at 1 sample.
-    colour: Option<wgpu::TextureView>,
+    /// The format the scene is drawn in, and its size.
+    format: wgpu::TextureFormat,
+    size: wgpu::Extent3d,
+    device: wgpu::Device,
+    /// The samples, until the pass resolves them; none at 1 sample. Made
+    /// for the first picture they are resolved into, and again if a later
+    /// one is a texture of another format (see [`SceneTargets::samples_resolved_into`]).
+    colour: Mutex<Option<(wgpu::TextureFormat, wgpu::TextureView)>>,
     /// `None` for a scene drawn without a depth test (chapter 01).
     depth: Option<wgpu::TextureView>,
 }
@@ -75,32 +83,60 @@ impl SceneTargets {
     }
 
     fn make(gpu: &Gpu, target: Target, with_depth: bool) -> Self {
-        let device = &gpu.device;
         let samples = samples_for(&gpu.adapter, target.format, target.samples.max(1));
         let size =
             wgpu::Extent3d { width: target.width.max(1), height: target.height.max(1), depth_or_array_layers: 1 };
-        let texture = |label, format, usage| {
-            device
-                .create_texture(&wgpu::TextureDescriptor {
-                    label: Some(label),
-                    size,
-                    mip_level_count: 1,
-                    sample_count: samples,
-                    dimension: wgpu::TextureDimension::D2,
-                    format,
-                    usage,
-                    view_formats: &[],
-                })
-                .create_view(&Default::default())
-        };
-        let colour = (samples > 1).then(|| texture("samples", target.format, wgpu::TextureUsages::RENDER_ATTACHMENT));
         // A single-sampled depth buffer can be read as a texture (chapter
         // 02's depth view); a multisampled one would need a shader of its
         // own, and views that read depth draw with one sample instead.
         let readable = if samples == 1 { wgpu::TextureUsages::TEXTURE_BINDING } else { wgpu::TextureUsages::empty() };
-        let depth =
-            with_depth.then(|| texture("depth", DEPTH_FORMAT, wgpu::TextureUsages::RENDER_ATTACHMENT | readable));
-        Self { samples, colour, depth }
+        let depth = with_depth.then(|| {
+            gpu.device
+                .create_texture(&wgpu::TextureDescriptor {
+                    label: Some("depth"),
+                    size,
+                    mip_level_count: 1,
+                    sample_count: samples,
+                    dimension: wgpu::TextureDimension::D2,
+                    format: DEPTH_FORMAT,
+                    usage: wgpu::TextureUsages::RENDER_ATTACHMENT | readable,
+                    view_formats: &[],
+                })
+                .create_view(&Default::default())
+        });
+        Self { samples, format: target.format, size, device: gpu.device.clone(), colour: Mutex::new(None), depth }
+    }
+
+    /// The samples for a pass resolved into `picture`. They are stored in
+    /// the format of `picture`'s texture and seen in the scene's: a WebGPU
+    /// canvas is a plain `bgra8unorm` texture that the scene draws into
+    /// through an sRGB view, and a resolve between textures of different
+    /// formats is left to each API, which do not agree (Vulkan's gives
+    /// darker pictures: gpuweb issue 2729).
+    fn samples_resolved_into(&self, picture: &wgpu::TextureView) -> wgpu::TextureView {
+        let stored = picture.texture().format();
+        let mut colour = self.colour.lock().unwrap_or_else(|e| e.into_inner());
+        if let Some((format, view)) = &*colour
+            && *format == stored
+        {
+            return view.clone();
+        }
+        let view_formats: &[wgpu::TextureFormat] = if stored == self.format { &[] } else { &[self.format] };
+        let view = self
+            .device
+            .create_texture(&wgpu::TextureDescriptor {
+                label: Some("samples"),
+                size: self.size,
+                mip_level_count: 1,
+                sample_count: self.samples,
+                dimension: wgpu::TextureDimension::D2,
+                format: stored,
+                usage: wgpu::TextureUsages::RENDER_ATTACHMENT,
+                view_formats,
+            })
+            .create_view(&wgpu::TextureViewDescriptor { format: Some(self.format), ..Default::default() });
+        *colour = Some((stored, view.clone()));
+        view
     }
 
     // ANCHOR_END: scene_targets
@@ -124,13 +160,10 @@ impl SceneTargets {
     /// ends in `picture`: the samples, resolved into `picture`, or at one
     /// sample `picture` itself (for a pass written out in full: chapter 01).
     pub fn colour_attachment<'a>(
-        &'a self,
+        &self,
         picture: &'a wgpu::TextureView,
-    ) -> (&'a wgpu::TextureView, Option<&'a wgpu::TextureView>) {
-        match &self.colour {
-            Some(samples) => (samples, Some(picture)),
-            None => (picture, None),
-        }
+    ) -> (wgpu::TextureView, Option<&'a wgpu::TextureView>) {
+        if self.samples == 1 { (picture.clone(), None) } else { (self.samples_resolved_into(picture), Some(picture)) }
     }
 
     /// Begins a pass that ends in `picture`: cleared to `clear` and depth
@@ -154,7 +187,7 @@ impl SceneTargets {
         encoder.begin_render_pass(&wgpu::RenderPassDescriptor {
             label: Some(label),
             color_attachments: &[Some(wgpu::RenderPassColorAttachment {
-                view,
+                view: &view,
                 depth_slice: None,
                 resolve_target,
                 ops: wgpu::Operations { load, store: wgpu::StoreOp::Store },

@@ -113,7 +113,7 @@ impl Chapter for Triangle {
         let mut pass = frame.encoder.begin_render_pass(&wgpu::RenderPassDescriptor {
             label: Some("triangle"),
             color_attachments: &[Some(wgpu::RenderPassColorAttachment {
-                view,
+                view: &view,
                 depth_slice: None,
                 resolve_target,
                 ops: wgpu::Operations { load: wgpu::LoadOp::Clear(CLEAR), store: wgpu::StoreOp::Store },
