@@ -18,6 +18,20 @@ pub fn pipeline(
     target: wgpu::ColorTargetState,
     depth_stencil: Option<wgpu::DepthStencilState>,
 ) -> wgpu::RenderPipeline {
+    in_scene(device, label, layout, module, fragment_entry, target, (depth_stencil, Default::default()))
+}
+
+/// [`pipeline`] for a pass of `multisample`'s samples a pixel: a full-screen
+/// pass drawn inside the scene's pass (the sky, behind everything).
+pub fn in_scene(
+    device: &wgpu::Device,
+    label: &str,
+    layout: &wgpu::PipelineLayout,
+    module: &wgpu::ShaderModule,
+    fragment_entry: &str,
+    target: wgpu::ColorTargetState,
+    (depth_stencil, multisample): (Option<wgpu::DepthStencilState>, wgpu::MultisampleState),
+) -> wgpu::RenderPipeline {
     device.create_render_pipeline(&wgpu::RenderPipelineDescriptor {
         label: Some(label),
         layout: Some(layout),
@@ -29,7 +43,7 @@ pub fn pipeline(
         },
         primitive: Default::default(),
         depth_stencil,
-        multisample: Default::default(),
+        multisample,
         fragment: Some(wgpu::FragmentState {
             module,
             entry_point: Some(fragment_entry),

@@ -4,10 +4,9 @@
 
 use std::sync::Arc;
 
-use common::texture::depth_view;
 use common::{
-    Camera, Chapter, ChapterFlag, FlagValues, FlyController, Frame, Gpu, Input, Preparation, Reloadable, ShaderFile,
-    Target, View, ViewRow, anyhow, egui, shader, views_of, wgpu,
+    Camera, Chapter, ChapterFlag, FlagValues, FlyController, Frame, Gpu, Input, Preparation, Reloadable, SceneTargets,
+    ShaderFile, Target, View, ViewRow, anyhow, egui, shader, views_of, wgpu,
 };
 
 use crate::cameras::{close_up_camera, overhead_camera, start_camera};
@@ -96,7 +95,8 @@ pub struct TerrainChapter {
     viewpoint: Viewpoint,
     /// Rebuilt when terrain.wgsl is saved (hot reload).
     pipeline: Reloadable<wgpu::RenderPipeline>,
-    depth: wgpu::TextureView,
+    /// The scene's samples and depth, resolved into the frame.
+    scene: SceneTargets,
     target: Target,
     /// The overlay changed the settings; regenerate before the next frame.
     regenerate_requested: bool,
@@ -134,7 +134,8 @@ impl Chapter for TerrainChapter {
             bind_group_layouts: &[Some(&terrain.bind_group_layout)],
             immediate_size: 0,
         });
-        let format = target.format;
+        let scene = SceneTargets::new(gpu, target);
+        let format = (target.format, scene.samples());
         let pipeline =
             Reloadable::new(gpu, move |gpu| TerrainRenderer::pipeline(gpu, &terrain_shader(), &layout, format))?;
         Ok(Self {
@@ -145,7 +146,7 @@ impl Chapter for TerrainChapter {
             viewpoint: terrain.viewpoint(&gpu.device),
             terrain,
             pipeline,
-            depth: depth_view(&gpu.device, target.width, target.height),
+            scene,
             target,
             regenerate_requested: false,
         })
@@ -159,7 +160,7 @@ impl Chapter for TerrainChapter {
     fn resize(&mut self, gpu: &Gpu, target: Target) {
         self.target = target;
         self.camera.aspect = target.aspect();
-        self.depth = depth_view(&gpu.device, target.width, target.height);
+        self.scene = SceneTargets::new(gpu, Target { samples: self.scene.samples(), ..target });
     }
 
     fn apply_view(&mut self, view: usize) {
@@ -203,7 +204,7 @@ impl Chapter for TerrainChapter {
         let (camera, sun) = (&self.camera, Sun::AFTERNOON);
         self.terrain.aim_seen_from(gpu, &mut self.viewpoint, camera, detail, sun, KEEP_ALL, &seen_from);
         let drawn = frame.drawn;
-        let mut pass = frame.scene_pass("terrain", SKY, &self.depth);
+        let mut pass = frame.multisampled_pass("terrain", SKY, &self.scene);
         pass.set_pipeline(&self.pipeline.get());
         drawn.add("terrain", self.terrain.draw(&mut pass, &self.viewpoint));
     }

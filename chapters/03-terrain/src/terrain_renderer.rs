@@ -213,14 +213,15 @@ impl TerrainRenderer {
     }
 
     /// A pipeline that draws the terrain's patches with `shader`'s
-    /// `vs_main` and `fs_main`; `layout` starts with a renderer's bind group
+    /// `vs_main` and `fs_main` into targets of `format` and `samples`
+    /// samples a pixel; `layout` starts with a renderer's bind group
     /// layout. It takes no renderer, so that a `Reloadable` can call it
     /// again on hot reload.
     pub fn pipeline(
         gpu: &Gpu,
         shader: &ShaderFile,
         layout: &wgpu::PipelineLayout,
-        format: wgpu::TextureFormat,
+        (format, samples): (wgpu::TextureFormat, u32),
     ) -> Result<wgpu::RenderPipeline, ShaderError> {
         let module = shader.module(gpu)?;
         gpu.catch_validation(|| {
@@ -235,7 +236,7 @@ impl TerrainRenderer {
                 },
                 primitive: wgpu::PrimitiveState { cull_mode: Some(wgpu::Face::Back), ..Default::default() },
                 depth_stencil: depth_test(),
-                multisample: Default::default(),
+                multisample: common::multisampling::multisample(samples),
                 fragment: Some(wgpu::FragmentState {
                     module: &module,
                     entry_point: Some("fs_main"),

@@ -2,10 +2,9 @@
 //! overlay's sliders, and `impl Chapter`, which draws chapter 03's terrain
 //! through the fog with the far plane pulled in to where it turns opaque.
 
-use common::texture::depth_view;
 use common::{
-    Camera, Chapter, ChapterFlag, FlagValues, FlyController, Frame, Gpu, Input, Reloadable, Target, View, ViewRow,
-    anyhow, egui, views_of, wgpu,
+    Camera, Chapter, ChapterFlag, FlagValues, FlyController, Frame, Gpu, Input, Reloadable, SceneTargets, Target, View,
+    ViewRow, anyhow, egui, views_of, wgpu,
 };
 use terrain::ground::{self, Movement};
 use terrain::heightfield::{HeightField, TerrainSettings};
@@ -71,7 +70,8 @@ pub struct FogChapter {
     viewpoint: Viewpoint,
     /// Rebuilt when fog.wgsl or terrain.wgsl is saved (hot reload).
     pipeline: Reloadable<wgpu::RenderPipeline>,
-    depth: wgpu::TextureView,
+    /// The scene's samples and depth, resolved into the frame.
+    scene: SceneTargets,
     target: Target,
     regenerate_requested: bool,
 }
@@ -106,7 +106,8 @@ impl Chapter for FogChapter {
             bind_group_layouts: &[Some(&terrain.bind_group_layout), Some(&fog_binding.layout)],
             immediate_size: 0,
         });
-        let format = target.format;
+        let scene = SceneTargets::new(gpu, target);
+        let format = (target.format, scene.samples());
         let pipeline = Reloadable::new(gpu, move |gpu| TerrainRenderer::pipeline(gpu, &fog_shader(), &layout, format))?;
         Ok(Self {
             camera: start_camera(terrain.field(), target.aspect()),
@@ -118,7 +119,7 @@ impl Chapter for FogChapter {
             terrain,
             fog_binding,
             pipeline,
-            depth: depth_view(device, target.width, target.height),
+            scene,
             target,
             regenerate_requested: false,
         })
@@ -132,7 +133,7 @@ impl Chapter for FogChapter {
     fn resize(&mut self, gpu: &Gpu, target: Target) {
         self.target = target;
         self.camera.aspect = target.aspect();
-        self.depth = depth_view(&gpu.device, target.width, target.height);
+        self.scene = SceneTargets::new(gpu, Target { samples: self.scene.samples(), ..target });
     }
 
     fn apply_view(&mut self, view: usize) {
@@ -175,7 +176,7 @@ impl Chapter for FogChapter {
         // Clear to the fog colour: where there is no ground, the fog's
         // "infinitely far" is what shows.
         let drawn = frame.drawn;
-        let mut pass = frame.scene_pass("terrain", SKY, &self.depth);
+        let mut pass = frame.multisampled_pass("terrain", SKY, &self.scene);
         pass.set_pipeline(&self.pipeline.get());
         pass.set_bind_group(1, &self.fog_binding.group, &[]);
         drawn.add("terrain", self.terrain.draw(&mut pass, &self.viewpoint));

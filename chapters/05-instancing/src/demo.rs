@@ -3,10 +3,9 @@
 //! camera standing on it.
 
 use common::book_figures::thousands;
-use common::texture::depth_view;
 use common::{
-    Camera, Chapter, ChapterFlag, FlagValues, FlyController, Frame, Gpu, Input, Target, View, ViewRow, anyhow, egui,
-    views_of, wgpu,
+    Camera, Chapter, ChapterFlag, FlagValues, FlyController, Frame, Gpu, Input, SceneTargets, Target, View, ViewRow,
+    anyhow, egui, views_of,
 };
 use fog::FogSettings;
 use terrain::ground::{self, Movement};
@@ -144,7 +143,8 @@ pub struct InstancingChapter {
     /// Flying (the default) or walking on the ground (G, `--walk`).
     pub movement: Movement,
     viewpoint: PlainViewpoint,
-    depth: wgpu::TextureView,
+    /// The scene's samples and depth, resolved into the frame.
+    scene: SceneTargets,
     target: Target,
     /// Draw calls in the last frame.
     pub draw_calls: DrawCalls,
@@ -175,16 +175,17 @@ impl Chapter for InstancingChapter {
     }
 
     fn new(gpu: &Gpu, target: Target, terrain: Self::Prepared) -> anyhow::Result<Self> {
-        let plain = MarsPlain::new(gpu, target.format, terrain)?;
+        let scene = SceneTargets::new(gpu, target);
+        let plain = MarsPlain::new(gpu, target.format, &[scene.samples()], terrain)?;
         Ok(Self {
             camera: plain_camera(plain.terrain.field(), target.aspect()),
             controller: FlyController { speed: 20.0, ..Default::default() },
             movement: Movement::Fly,
             fog: FogSettings::HAZE,
             setup: Setup::DEFAULT,
-            viewpoint: plain.viewpoint(&gpu.device),
+            viewpoint: plain.viewpoint(&gpu.device, scene.samples()),
             plain,
-            depth: depth_view(&gpu.device, target.width, target.height),
+            scene,
             target,
             draw_calls: DrawCalls::default(),
             regenerate_requested: false,
@@ -199,7 +200,7 @@ impl Chapter for InstancingChapter {
     fn resize(&mut self, gpu: &Gpu, target: Target) {
         self.target = target;
         self.camera.aspect = target.aspect();
-        self.depth = depth_view(&gpu.device, target.width, target.height);
+        self.scene = SceneTargets::new(gpu, Target { samples: self.scene.samples(), ..target });
     }
 
     fn apply_view(&mut self, view: usize) {
@@ -248,7 +249,7 @@ impl Chapter for InstancingChapter {
         // render pass that draws them.
         self.plain.cull(gpu, frame.encoder, frame.timer, &mut self.viewpoint, self.setup);
         let drawn = frame.drawn;
-        let mut pass = frame.scene_pass("terrain and rocks", SKY, &self.depth);
+        let mut pass = frame.multisampled_pass("terrain and rocks", SKY, &self.scene);
         self.draw_calls = self.plain.draw(&mut pass, &self.viewpoint, self.setup);
         drawn.add("terrain and rocks", self.draw_calls.drawn());
     }

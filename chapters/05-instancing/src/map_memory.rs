@@ -40,7 +40,7 @@ impl MapMemory {
         let gpu = Gpu::headless(gpu_needs())?;
         let before = gpu_bytes(&gpu.device).unwrap_or(0);
         let settings = TerrainSettings { chunks_per_side, ..Default::default() };
-        let plain = MarsPlain::new(&gpu, OFFSCREEN_FORMAT, TerrainData::get(&gpu, settings))?;
+        let plain = MarsPlain::new(&gpu, OFFSCREEN_FORMAT, &[1], TerrainData::get(&gpu, settings))?;
         // Buffers made with contents go up through staging buffers of the
         // same size, freed once the queue has copied them: count after that.
         gpu.queue.submit([]);
@@ -144,8 +144,8 @@ mod tests {
     fn a_picture_holds_three_lists_of_four_bytes_a_rock() {
         let gpu = Gpu::headless(gpu_needs()).unwrap();
         let settings = TerrainSettings { chunks_per_side: 16, ..Default::default() };
-        let plain = MarsPlain::new(&gpu, OFFSCREEN_FORMAT, TerrainData::get(&gpu, settings)).unwrap();
-        let bytes = plain.viewpoint_bytes(&plain.viewpoint(&gpu.device));
+        let plain = MarsPlain::new(&gpu, OFFSCREEN_FORMAT, &[1], TerrainData::get(&gpu, settings)).unwrap();
+        let bytes = plain.viewpoint_bytes(&plain.viewpoint(&gpu.device, 1));
         // Three lists of 62,500 rocks, 4 bytes each, and on top a few
         // hundred bytes: the draws and their read-back copies, the uniform,
         // the alignment of each list, the CPU's draw list (20 bytes a group).

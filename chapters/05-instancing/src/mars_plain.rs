@@ -132,7 +132,7 @@ fn rock_pipeline(
     gpu: &Gpu,
     module: &wgpu::ShaderModule,
     layout: &wgpu::PipelineLayout,
-    format: wgpu::TextureFormat,
+    (format, samples): (wgpu::TextureFormat, u32),
     vertex_entry: &str,
     fragment_entry: &str,
 ) -> wgpu::RenderPipeline {
@@ -149,7 +149,7 @@ fn rock_pipeline(
         },
         primitive: wgpu::PrimitiveState { cull_mode: Some(wgpu::Face::Back), ..Default::default() },
         depth_stencil: depth_test(),
-        multisample: Default::default(),
+        multisample: common::multisampling::multisample(samples),
         fragment: Some(wgpu::FragmentState {
             module,
             entry_point: Some(fragment_entry),
@@ -219,6 +219,8 @@ pub struct PlainViewpoint {
     draw_list: Option<wgpu::Buffer>,
     /// Where the picture was last aimed from.
     picture: Option<Picture>,
+    /// Samples a pixel of the picture's pass: which pipelines draw it.
+    samples: u32,
 }
 // ANCHOR_END: plain_viewpoint
 
@@ -243,23 +245,31 @@ pub struct MarsPlain {
     /// `INDIRECT_FIRST_INSTANCE` feature); without it `Mode::Indirect` draws
     /// as `Mode::Instanced` does.
     indirect_ok: bool,
-    /// Rebuilt when fog.wgsl, rocks.wgsl, rock.wgsl or terrain.wgsl is saved (hot reload).
-    pipelines: Reloadable<Pipelines>,
+    /// For each sample count the plain's pictures are drawn with (one,
+    /// and chapter 07's four for the main pass beside its one-sample
+    /// pictures); rebuilt when fog.wgsl, rocks.wgsl, rock.wgsl or
+    /// terrain.wgsl is saved (hot reload).
+    pipelines: Reloadable<Vec<(u32, Pipelines)>>,
 }
 // ANCHOR_END: mars_plain
 
 impl MarsPlain {
     /// The plain of `terrain` (what `TerrainData::prepare` made), for
-    /// targets of `format`.
-    pub fn new(gpu: &Gpu, format: wgpu::TextureFormat, terrain: Arc<TerrainData>) -> anyhow::Result<Self> {
-        Self::with_capabilities(gpu, format, terrain, &gpu.adapter.get_downlevel_capabilities())
+    /// targets of `format` drawn with each of `samples` samples a pixel.
+    pub fn new(
+        gpu: &Gpu,
+        format: wgpu::TextureFormat,
+        samples: &[u32],
+        terrain: Arc<TerrainData>,
+    ) -> anyhow::Result<Self> {
+        Self::with_capabilities(gpu, (format, samples), terrain, &gpu.adapter.get_downlevel_capabilities())
     }
 
     /// `new`, as if the device had only `downlevel`'s capabilities: a test
     /// takes away what the GPU's culling needs to see the plain fall back.
     pub fn with_capabilities(
         gpu: &Gpu,
-        format: wgpu::TextureFormat,
+        (format, samples): (wgpu::TextureFormat, &[u32]),
         terrain: Arc<TerrainData>,
         downlevel: &wgpu::DownlevelCapabilities,
     ) -> anyhow::Result<Self> {
@@ -305,8 +315,12 @@ impl MarsPlain {
         let culled_layout = culling.as_ref().map(|(culling, _)| {
             layout("culled rocks", &[shared[0], shared[1], Some(&culling.draw_layout), Some(&culling.rocks_layout)])
         });
-        let pipelines =
-            Reloadable::new(gpu, move |gpu| Self::pipelines(gpu, &layouts, culled_layout.as_ref(), format))?;
+        let samples = samples.to_vec();
+        let pipelines = Reloadable::new(gpu, move |gpu| {
+            let each =
+                |&count: &u32| Ok((count, Self::pipelines(gpu, &layouts, culled_layout.as_ref(), (format, count))?));
+            samples.iter().map(each).collect::<Result<Vec<_>, ShaderError>>()
+        })?;
         let singles_group = Self::singles_group(device, &single_layout, &rocks);
         Ok(Self { terrain, rocks, fog, singles_group, culling, culling_missing, indirect_ok, pipelines })
     }
@@ -315,7 +329,7 @@ impl MarsPlain {
         gpu: &Gpu,
         layouts: &[wgpu::PipelineLayout; 2],
         culled_layout: Option<&wgpu::PipelineLayout>,
-        format: wgpu::TextureFormat,
+        format: (wgpu::TextureFormat, u32),
     ) -> Result<Pipelines, ShaderError> {
         let terrain = TerrainRenderer::pipeline(gpu, &fog_shader(), &layouts[0], format)?;
         let module = rocks_shader().module(gpu)?;
@@ -344,8 +358,17 @@ impl MarsPlain {
         })
     }
 
-    /// A new set of everything one more picture of the plain needs.
-    pub fn viewpoint(&self, device: &wgpu::Device) -> PlainViewpoint {
+    /// The pipelines for pictures of `samples` samples a pixel (the first
+    /// set where the plain was made for no such count).
+    fn pipelines_for(&self, samples: u32) -> Pipelines {
+        let all = self.pipelines.get();
+        let found = all.iter().find(|(count, _)| *count == samples).unwrap_or(&all[0]);
+        found.1.clone()
+    }
+
+    /// A new set of everything one more picture of the plain needs, for a
+    /// pass of `samples` samples a pixel.
+    pub fn viewpoint(&self, device: &wgpu::Device, samples: u32) -> PlainViewpoint {
         // As many rocks as the map can hold, so that regenerating the
         // terrain (which keeps the number of chunks) never outgrows the lists.
         let capacity = rocks_on_map(&self.terrain.field().settings) as u32;
@@ -363,6 +386,7 @@ impl MarsPlain {
             rocks: self.culling.as_ref().map(|(culling, _)| culling.lists(device, capacity)),
             draw_list,
             picture: None,
+            samples,
         }
     }
 
@@ -412,7 +436,7 @@ impl MarsPlain {
     pub fn regenerate(&mut self, gpu: &Gpu) {
         self.terrain.regenerate(gpu);
         self.rocks = RockField::get(gpu, self.terrain.field(), self.terrain.chunk_bounds());
-        let layout = self.pipelines.get().one_per_draw.get_bind_group_layout(2);
+        let layout = self.pipelines_for(1).one_per_draw.get_bind_group_layout(2);
         self.singles_group = Self::singles_group(&gpu.device, &layout, &self.rocks);
         if let Some((culling, group)) = &mut self.culling {
             *group = culling.rocks_group(&gpu.device, &self.rocks.instances);
@@ -519,13 +543,13 @@ impl MarsPlain {
         self.terrain.bind(pass, &viewpoint.ground);
         let mut calls = DrawCalls::default();
         if setup.terrain {
-            pass.set_pipeline(&self.pipelines.get().terrain);
+            pass.set_pipeline(&self.pipelines_for(viewpoint.samples).terrain);
             let drawn = self.terrain.draw(pass, &viewpoint.ground);
             (calls.terrain, calls.terrain_triangles) = (drawn.draws, drawn.triangles);
         }
         if let (true, Some((culling, group)), Some(lists)) = (self.culls_on_gpu(setup), &self.culling, &viewpoint.rocks)
         {
-            let pipelines = self.pipelines.get();
+            let pipelines = self.pipelines_for(viewpoint.samples);
             let Some(culled) = &pipelines.culled else { return calls };
             pass.set_pipeline(&culled[colouring(setup.mode)]);
             let rocks = RockSource { group, sphere: self.rocks.sphere, count: self.rocks_in_world(setup) };
@@ -582,7 +606,7 @@ impl MarsPlain {
         drawn: &RockRuns,
     ) -> u32 {
         let mesh = self.rocks.mesh();
-        let pipelines = self.pipelines.get();
+        let pipelines = self.pipelines_for(viewpoint.samples);
         pass.set_vertex_buffer(0, mesh.vertex_buffer.slice(..));
         pass.set_index_buffer(mesh.index_buffer.slice(..), wgpu::IndexFormat::Uint32);
         match (mode, &viewpoint.draw_list) {

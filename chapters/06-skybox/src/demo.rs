@@ -3,10 +3,9 @@
 //! chapter 05's plain lit by the sun and then the sky in the same pass.
 
 use common::book_figures::thousands;
-use common::texture::depth_view;
 use common::{
-    Camera, Chapter, ChapterFlag, FlagValues, FlyController, Frame, Gpu, Input, Target, View, ViewRow, anyhow, egui,
-    views_of, wgpu,
+    Camera, Chapter, ChapterFlag, FlagValues, FlyController, Frame, Gpu, Input, SceneTargets, Target, View, ViewRow,
+    anyhow, egui, views_of,
 };
 use fog::FogSettings;
 use instancing::{DrawCalls, MarsPlain, PlainViewpoint, Setup, plain_camera};
@@ -90,7 +89,8 @@ pub struct SkyboxChapter {
     /// The time of day of the last frame (0 midnight, 0.5 noon).
     phase: f32,
     viewpoint: (PlainViewpoint, SkyViewpoint),
-    depth: wgpu::TextureView,
+    /// The scene's samples and depth, resolved into the frame.
+    scene: SceneTargets,
     target: Target,
     draw_calls: DrawCalls,
 }
@@ -129,8 +129,10 @@ impl Chapter for SkyboxChapter {
     }
 
     fn new(gpu: &Gpu, target: Target, terrain: Self::Prepared) -> anyhow::Result<Self> {
-        let plain = MarsPlain::new(gpu, target.format, terrain)?;
-        let sky = Sky::new(gpu, target.format)?;
+        let scene = SceneTargets::new(gpu, target);
+        let samples = scene.samples();
+        let plain = MarsPlain::new(gpu, target.format, &[samples], terrain)?;
+        let sky = Sky::new(gpu, target.format, &[samples])?;
         Ok(Self {
             camera: plain_camera(plain.terrain.field(), target.aspect()),
             controller: FlyController { speed: 20.0, ..Default::default() },
@@ -140,8 +142,8 @@ impl Chapter for SkyboxChapter {
             settings: Settings::DEFAULT,
             day_seconds: 240.0,
             phase: Settings::DEFAULT.start_phase,
-            viewpoint: (plain.viewpoint(&gpu.device), sky.viewpoint(&gpu.device)),
-            depth: depth_view(&gpu.device, target.width, target.height),
+            viewpoint: (plain.viewpoint(&gpu.device, samples), sky.viewpoint(&gpu.device, samples)),
+            scene,
             plain,
             sky,
             target,
@@ -157,7 +159,7 @@ impl Chapter for SkyboxChapter {
     fn resize(&mut self, gpu: &Gpu, target: Target) {
         self.target = target;
         self.camera.aspect = target.aspect();
-        self.depth = depth_view(&gpu.device, target.width, target.height);
+        self.scene = SceneTargets::new(gpu, Target { samples: self.scene.samples(), ..target });
     }
 
     fn apply_view(&mut self, view: usize) {
@@ -198,7 +200,7 @@ impl Chapter for SkyboxChapter {
         self.plain.cull(gpu, frame.encoder, frame.timer, ground, rocks);
         // The clear colour is never seen: the sky covers whatever the plain leaves.
         let drawn = frame.drawn;
-        let mut pass = frame.scene_pass("plain and sky", terrain::SKY, &self.depth);
+        let mut pass = frame.multisampled_pass("plain and sky", terrain::SKY, &self.scene);
         self.draw_calls = self.plain.draw(&mut pass, ground, rocks);
         drawn.add("plain and sky", self.draw_calls.drawn() + self.sky.draw(&mut pass, sky));
     }

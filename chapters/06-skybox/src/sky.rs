@@ -95,7 +95,7 @@ fn sky_shader() -> ShaderFile {
 fn sky_pipeline(
     gpu: &Gpu,
     layout: &wgpu::PipelineLayout,
-    format: wgpu::TextureFormat,
+    (format, samples): (wgpu::TextureFormat, u32),
 ) -> Result<wgpu::RenderPipeline, ShaderError> {
     let module = sky_shader().module(gpu)?;
     // Test against the scene's depth, but leave it alone: the sky is at the
@@ -108,7 +108,8 @@ fn sky_pipeline(
         bias: Default::default(),
     };
     gpu.catch_validation(|| {
-        fullscreen::pipeline(&gpu.device, "sky", layout, &module, "fs_sky", format.into(), Some(depth))
+        let in_the_scene = (Some(depth), common::multisampling::multisample(samples));
+        fullscreen::in_scene(&gpu.device, "sky", layout, &module, "fs_sky", format.into(), in_the_scene)
     })
     .map_err(ShaderError)
 }
@@ -119,6 +120,8 @@ fn sky_pipeline(
 pub struct SkyViewpoint {
     uniform: wgpu::Buffer,
     bind_group: wgpu::BindGroup,
+    /// Samples a pixel of the picture's pass: which pipeline draws it.
+    samples: u32,
 }
 
 // ANCHOR: sky
@@ -130,13 +133,16 @@ pub struct Sky {
     /// Day and night horizon colours, measured from the cube maps.
     horizons: [[f32; 3]; 2],
     bind_group_layout: wgpu::BindGroupLayout,
-    /// Rebuilt when sky.wgsl is saved (hot reload).
-    pipeline: Reloadable<wgpu::RenderPipeline>,
+    /// One for each sample count the sky's pictures are drawn with;
+    /// rebuilt when sky.wgsl is saved (hot reload).
+    pipeline: Reloadable<Vec<(u32, wgpu::RenderPipeline)>>,
 }
 // ANCHOR_END: sky
 
 impl Sky {
-    pub fn new(gpu: &Gpu, format: wgpu::TextureFormat) -> anyhow::Result<Self> {
+    /// The sky, for pictures of `format` drawn with each of `samples`
+    /// samples a pixel.
+    pub fn new(gpu: &Gpu, format: wgpu::TextureFormat, samples: &[u32]) -> anyhow::Result<Self> {
         let device = &gpu.device;
         // Decoded once: for the cube maps and to measure their horizons.
         let (day_faces, night_faces) = (decode_faces(&DAY)?, decode_faces(&NIGHT)?);
@@ -172,11 +178,17 @@ impl Sky {
             bind_group_layouts: &[Some(&bind_group_layout)],
             immediate_size: 0,
         });
-        let pipeline = Reloadable::new(gpu, move |gpu| sky_pipeline(gpu, &layout, format))?;
+        let samples = samples.to_vec();
+        let pipeline = Reloadable::new(gpu, move |gpu| {
+            let each = |&count: &u32| Ok((count, sky_pipeline(gpu, &layout, (format, count))?));
+            samples.iter().map(each).collect::<Result<Vec<_>, ShaderError>>()
+        })?;
         Ok(Self { day, night, horizons, bind_group_layout, pipeline })
     }
 
-    pub fn viewpoint(&self, device: &wgpu::Device) -> SkyViewpoint {
+    /// The uniform for one more picture of the sky, drawn in a pass of
+    /// `samples` samples a pixel.
+    pub fn viewpoint(&self, device: &wgpu::Device, samples: u32) -> SkyViewpoint {
         let uniform = device.create_buffer_init(&wgpu::util::BufferInitDescriptor {
             label: Some("sky"),
             contents: &[0; std::mem::size_of::<SkyUniform>()],
@@ -192,7 +204,7 @@ impl Sky {
                 wgpu::BindGroupEntry { binding: 3, resource: wgpu::BindingResource::Sampler(&self.day.sampler) },
             ],
         });
-        SkyViewpoint { uniform, bind_group }
+        SkyViewpoint { uniform, bind_group, samples }
     }
 
     // ANCHOR: fog_colour
@@ -221,7 +233,9 @@ impl Sky {
     /// Draws the sky wherever the depth buffer still holds 1: call it after
     /// everything else in the pass.
     pub fn draw(&self, pass: &mut wgpu::RenderPass<'_>, viewpoint: &SkyViewpoint) -> Drawn {
-        pass.set_pipeline(&self.pipeline.get());
+        let pipelines = self.pipeline.get();
+        let found = pipelines.iter().find(|(count, _)| *count == viewpoint.samples).unwrap_or(&pipelines[0]);
+        pass.set_pipeline(&found.1);
         pass.set_bind_group(0, &viewpoint.bind_group, &[]);
         pass.draw(0..3, 0..1);
         Drawn::FULL_SCREEN

@@ -4,13 +4,14 @@
 //! chapter 06's sky and the water: three pictures of the scene a frame,
 //! then the water reading two of them.
 
+use std::sync::Arc;
+
 use common::book_figures::thousands;
 use common::chapter::scene_pass;
 use common::glam::{Vec2, Vec3, Vec4};
-use common::texture::depth_view;
 use common::{
-    Camera, Chapter, ChapterFlag, Drawn, FlagValues, FlyController, Frame, Gpu, Input, Orbit, PassTimer, Target, View,
-    ViewRow, anyhow, egui, views_of, wgpu,
+    Camera, Chapter, ChapterFlag, Drawn, FlagValues, FlyController, Frame, Gpu, Input, Orbit, PassTimer, SceneTargets,
+    Target, View, ViewRow, anyhow, egui, views_of, wgpu,
 };
 use fog::FogSettings;
 use instancing::{MarsPlain, PlainViewpoint, RocksDrawn, Setup, plain_camera};
@@ -176,14 +177,24 @@ pub struct WaterChapter {
     pub centre: Vec2,
     pub size: f32,
     eyes: [Eye; 3],
-    depth: wgpu::TextureView,
+    /// The main picture's samples and depth, resolved into the frame (an
+    /// `Arc`, so that a frame can hold it while it takes the picture).
+    scene: Arc<SceneTargets>,
     target: Target,
+}
+
+/// Where `take_picture` draws: one of the water's pictures (its colour
+/// and its depth, one sample a pixel: the water reads that depth), or the
+/// frame, through the scene's samples.
+enum DrawnInto<'a> {
+    Picture(&'a wgpu::TextureView, &'a wgpu::TextureView),
+    Frame(&'a SceneTargets, &'a wgpu::TextureView),
 }
 
 impl WaterChapter {
     // ANCHOR: picture
     /// Records the plain and the sky, seen from `camera` through eye `eye`,
-    /// into `colour` and `depth`, keeping only what `clip` keeps. Each
+    /// into `into`, keeping only what `clip` keeps. Each
     /// picture has its own eye, so its uniforms are not overwritten by the
     /// next picture's before the one submit at the end of the frame.
     #[allow(clippy::too_many_arguments)]
@@ -193,7 +204,7 @@ impl WaterChapter {
         encoder: &mut wgpu::CommandEncoder,
         timer: &PassTimer,
         (label, eye): (&'static str, usize),
-        (colour, depth): (&wgpu::TextureView, &wgpu::TextureView),
+        into: DrawnInto<'_>,
         camera: &Camera,
         clip: Vec4,
         phase: f32,
@@ -202,13 +213,19 @@ impl WaterChapter {
         // The picture's own height: the half-size reflection and refraction
         // see each rock half as many pixels across, and grade it so.
         let rocks = if self.settings.full_detail { self.rocks.at_full_detail() } else { self.rocks };
-        let detail = rocks.detail(colour.texture().height());
+        let height = match into {
+            DrawnInto::Picture(colour, _) | DrawnInto::Frame(_, colour) => colour.texture().height(),
+        };
+        let detail = rocks.detail(height);
         self.plain.aim(gpu, plain, camera, detail, sun_at(phase), clip);
         self.sky.aim(&gpu.queue, sky, camera, phase);
         // The rocks' compute pass, with this picture's clip plane: rocks
         // wholly on the cut side of the water are never drawn.
         self.plain.cull(gpu, encoder, timer, plain, rocks);
-        let mut pass = scene_pass(encoder, timer, label, colour, SKY, depth);
+        let mut pass = match into {
+            DrawnInto::Picture(colour, depth) => scene_pass(encoder, timer, label, colour, SKY, depth),
+            DrawnInto::Frame(scene, frame) => scene.pass(encoder, timer, label, frame, Some(SKY)),
+        };
         let calls = self.plain.draw(&mut pass, plain, rocks);
         *drawn = Some(calls.rocks_drawn);
         calls.drawn() + self.sky.draw(&mut pass, sky)
@@ -279,14 +296,21 @@ impl Chapter for WaterChapter {
 
     fn new(gpu: &Gpu, target: Target, terrain: Self::Prepared) -> anyhow::Result<Self> {
         let device = &gpu.device;
-        let plain = MarsPlain::new(gpu, target.format, terrain)?;
-        let sky = Sky::new(gpu, target.format)?;
+        let scene = Arc::new(SceneTargets::new(gpu, target));
+        // The reflection and refraction at one sample a pixel, the main
+        // picture at the scene's.
+        let counts = [1, scene.samples()];
+        let plain = MarsPlain::new(gpu, target.format, &counts, terrain)?;
+        let sky = Sky::new(gpu, target.format, &counts)?;
         let field = plain.terrain.field();
         let (centre, size, level) = find_lake(field, &plain_camera(field, target.aspect()));
         let settings = Settings::DEFAULT;
-        let water = WaterRenderer::new(gpu, &plain, centre, size, target, settings.water.resolution)?;
-        let eyes =
-            std::array::from_fn(|_| Eye { plain: plain.viewpoint(device), sky: sky.viewpoint(device), drawn: None });
+        let main = Target { samples: scene.samples(), ..target };
+        let water = WaterRenderer::new(gpu, &plain, centre, size, main, settings.water.resolution)?;
+        let eyes = std::array::from_fn(|eye| {
+            let samples = if eye == MAIN { scene.samples() } else { 1 };
+            Eye { plain: plain.viewpoint(device, samples), sky: sky.viewpoint(device, samples), drawn: None }
+        });
         let camera = lake_camera(field, centre, size, level, EYE_HEIGHT, target.aspect());
         Ok(Self {
             plain,
@@ -305,7 +329,7 @@ impl Chapter for WaterChapter {
             centre,
             size,
             eyes,
-            depth: depth_view(device, target.width, target.height),
+            scene,
             target,
         })
     }
@@ -318,7 +342,7 @@ impl Chapter for WaterChapter {
     fn resize(&mut self, gpu: &Gpu, target: Target) {
         self.target = target;
         self.camera.aspect = target.aspect();
-        self.depth = depth_view(&gpu.device, target.width, target.height);
+        self.scene = Arc::new(SceneTargets::new(gpu, Target { samples: self.scene.samples(), ..target }));
         self.water.resize_pictures(&gpu.device, target, self.settings.water.resolution);
     }
 
@@ -373,7 +397,7 @@ impl Chapter for WaterChapter {
         // 1. The reflection: from below the water, keeping what is above it.
         if pictures && display != Display::Refraction {
             let above = Vec4::new(0.0, 1.0, 0.0, -self.level + bias);
-            let targets = (&reflection.colour, &reflection.depth);
+            let targets = DrawnInto::Picture(&reflection.colour, &reflection.depth);
             let mirror = mirrored(&camera, self.level);
             let picture = self.take_picture(
                 gpu,
@@ -390,7 +414,7 @@ impl Chapter for WaterChapter {
         // 2. The refraction: from the camera, keeping what is below the water.
         if pictures && display != Display::Reflection {
             let below = Vec4::new(0.0, -1.0, 0.0, self.level + bias);
-            let targets = (&refraction.colour, &refraction.depth);
+            let targets = DrawnInto::Picture(&refraction.colour, &refraction.depth);
             let picture = self.take_picture(
                 gpu,
                 frame.encoder,
@@ -410,8 +434,8 @@ impl Chapter for WaterChapter {
         }
 
         // 3. The scene itself, whole.
-        let depth = self.depth.clone();
-        let targets = (frame.target, &depth);
+        let scene = self.scene.clone();
+        let targets = DrawnInto::Frame(&scene, frame.target);
         let picture = self.take_picture(
             gpu,
             frame.encoder,
@@ -426,22 +450,9 @@ impl Chapter for WaterChapter {
 
         // 4. The water on top, reading both pictures (or, in seed 003's style, its texture).
         self.water.aim(&gpu.queue, self.level, frame.time, &camera, self.settings.water);
-        let mut pass = frame.encoder.begin_render_pass(&wgpu::RenderPassDescriptor {
-            label: Some("water surface"),
-            color_attachments: &[Some(wgpu::RenderPassColorAttachment {
-                view: frame.target,
-                depth_slice: None,
-                resolve_target: None,
-                ops: wgpu::Operations { load: wgpu::LoadOp::Load, store: wgpu::StoreOp::Store },
-            })],
-            depth_stencil_attachment: Some(wgpu::RenderPassDepthStencilAttachment {
-                view: &depth,
-                depth_ops: Some(wgpu::Operations { load: wgpu::LoadOp::Load, store: wgpu::StoreOp::Store }),
-                stencil_ops: None,
-            }),
-            timestamp_writes: frame.timer.pass("water surface"),
-            ..Default::default()
-        });
+        // Drawn on the scene's samples and depth as the main pass left
+        // them, and resolved into the frame again.
+        let mut pass = scene.pass(frame.encoder, frame.timer, "water surface", frame.target, None);
         frame.drawn.add("water surface", self.water.draw(&mut pass, &self.plain, &self.eyes[MAIN].plain, style));
     }
     // ANCHOR_END: render

@@ -154,8 +154,9 @@ pub struct WaterRenderer {
 impl WaterRenderer {
     /// The water of a square lake `size` metres across around `centre`
     /// (x, z), for targets like `target`, its pictures `resolution` of the
-    /// target's size. The surface is drawn with `plain`'s groups 0 (the
-    /// terrain's viewpoint) and 1 (the fog).
+    /// target's size (and of one sample a pixel: the water reads their
+    /// depth). The surface is drawn with `plain`'s groups 0 (the terrain's
+    /// viewpoint) and 1 (the fog), in a pass of `target.samples` samples.
     pub fn new(
         gpu: &Gpu,
         plain: &MarsPlain,
@@ -233,7 +234,8 @@ impl WaterRenderer {
             bind_group_layouts: &[Some(&show_layout)],
             immediate_size: 0,
         });
-        let format = target.format;
+        // The surface is drawn in the scene's pass, with its samples.
+        let format = (target.format, target.samples);
         let pipelines =
             Reloadable::new(gpu, move |gpu| build_pipelines(gpu, &pipeline_layout, &show_pipeline_layout, format))?;
         let pictures_size = picture_size(target, resolution);
@@ -458,7 +460,7 @@ fn build_pipelines(
     gpu: &Gpu,
     layout: &wgpu::PipelineLayout,
     show_layout: &wgpu::PipelineLayout,
-    format: wgpu::TextureFormat,
+    (format, samples): (wgpu::TextureFormat, u32),
 ) -> Result<Pipelines, ShaderError> {
     let water = water_shader().module(gpu)?;
     let show = show_shader().module(gpu)?;
@@ -475,7 +477,7 @@ fn build_pipelines(
                 },
                 primitive: wgpu::PrimitiveState { cull_mode: Some(wgpu::Face::Back), ..Default::default() },
                 depth_stencil: depth_test(),
-                multisample: Default::default(),
+                multisample: common::multisampling::multisample(samples),
                 fragment: Some(wgpu::FragmentState {
                     module: &water,
                     entry_point: Some(fragment_entry),

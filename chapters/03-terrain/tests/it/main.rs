@@ -45,7 +45,7 @@ fn draw_terrain(
         bind_group_layouts: &[Some(&renderer.bind_group_layout)],
         immediate_size: 0,
     });
-    let pipeline = TerrainRenderer::pipeline(gpu, shader, &layout, target.format).unwrap();
+    let pipeline = TerrainRenderer::pipeline(gpu, shader, &layout, (target.format, 1)).unwrap();
     let mut viewpoint = renderer.viewpoint(&gpu.device);
     renderer.aim_seen_from(gpu, &mut viewpoint, eye, detail, Sun::AFTERNOON, KEEP_ALL, camera);
     let offscreen = Offscreen::new(&gpu.device, target);

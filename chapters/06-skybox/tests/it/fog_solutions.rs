@@ -158,7 +158,7 @@ fn render_fogged(shader: &ShaderFile, fog: FogSettings) -> image::RgbaImage {
         bind_group_layouts: &[Some(&terrain.bind_group_layout), Some(&air_layout)],
         immediate_size: 0,
     });
-    let pipeline = TerrainRenderer::pipeline(gpu, shader, &layout, target.format).unwrap();
+    let pipeline = TerrainRenderer::pipeline(gpu, shader, &layout, (target.format, 1)).unwrap();
     let camera = common::Camera { far: fog.far_plane(), ..start_camera(terrain.field(), target.aspect()) };
     let mut viewpoint = terrain.viewpoint(&gpu.device);
     terrain.aim(gpu, &mut viewpoint, &camera, terrain::Detail::lod(target.height), Sun::AFTERNOON, KEEP_ALL);

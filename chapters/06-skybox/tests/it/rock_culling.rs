@@ -325,7 +325,7 @@ fn without_compute_shaders_the_plain_culls_by_chunk_and_says_which_capability_is
     let mut lacking = gpu.adapter.get_downlevel_capabilities();
     lacking.flags -= wgpu::DownlevelFlags::COMPUTE_SHADERS;
     let terrain = terrain::TerrainData::get(gpu, TerrainSettings::default());
-    chapter.plain = MarsPlain::with_capabilities(gpu, OFFSCREEN_FORMAT, terrain, &lacking).unwrap();
+    chapter.plain = MarsPlain::with_capabilities(gpu, (OFFSCREEN_FORMAT, &[1]), terrain, &lacking).unwrap();
     let fallen_back = picture(gpu, &mut chapter, target, "default");
     assert_eq!(chapter.draw_calls, chunk_calls, "the default view draws the chunk groups, as cpu-culling does");
     assert_eq!(fallen_back, by_chunk);

@@ -35,7 +35,7 @@ fn exercise_1_at_midnight_the_sun_is_73_degrees_below_the_southern_horizon() {
 
 /// The sky alone (no plain), as `sky` draws it from `camera` at time of day `phase`.
 fn render_sky(gpu: &Gpu, sky: &Sky, camera: &Camera, phase: f32, target: Target) -> image::RgbaImage {
-    let viewpoint = sky.viewpoint(&gpu.device);
+    let viewpoint = sky.viewpoint(&gpu.device, 1);
     sky.aim(&gpu.queue, &viewpoint, camera, phase);
     let offscreen = Offscreen::new(&gpu.device, target);
     let depth = common::texture::depth_view(&gpu.device, target.width, target.height);
@@ -54,14 +54,14 @@ fn render_sky(gpu: &Gpu, sky: &Sky, camera: &Camera, phase: f32, target: Target)
 /// as edited, both built on it.
 fn skies(name: &str, original: &str, edit: &str) -> (Gpu, Sky, Sky) {
     let gpu = Gpu::headless(GpuNeeds::default()).expect("an adapter (lavapipe will do)");
-    let as_it_is = Sky::new(&gpu, OFFSCREEN_FORMAT).unwrap();
+    let as_it_is = Sky::new(&gpu, OFFSCREEN_FORMAT, &[1]).unwrap();
     let root = common::shader::scratch_copy(name).unwrap();
     let file = root.join("skybox/sky.wgsl");
     let text = std::fs::read_to_string(&file).unwrap();
     assert!(text.contains(original), "sky.wgsl changed: update the exercise's edit");
     std::fs::write(&file, text.replacen(original, edit, 1)).unwrap();
     gpu.read_shaders_from(Some(root.clone()));
-    let edited = Sky::new(&gpu, OFFSCREEN_FORMAT).unwrap();
+    let edited = Sky::new(&gpu, OFFSCREEN_FORMAT, &[1]).unwrap();
     std::fs::remove_dir_all(root).unwrap();
     (gpu, as_it_is, edited)
 }
