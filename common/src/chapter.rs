@@ -2,7 +2,7 @@
 //! window, render it headless to a PNG, benchmark it and snapshot-test it.
 
 use crate::args::UsageError;
-use crate::multisampling::SceneTargets;
+use crate::multisampling::{Antialiasing, SceneTargets};
 use crate::{Camera, CameraPlace, DrawCounts, Gpu, GpuNeeds, Input, PassTimer, Preparation};
 
 // For existing imports (`use common::chapter::{uniform_entry, …}`): the
@@ -27,6 +27,10 @@ pub struct View {
     /// tests then check the two look alike, where every other two views
     /// must look different. `None` for most views.
     pub same_picture_as: Option<&'static str>,
+    /// How this view smooths edges whatever the runner asks (`no-aa`
+    /// views: `Antialiasing::Off`); `None`, as most views, follows
+    /// `--antialiasing` and the overlay's switch.
+    pub antialiasing: Option<Antialiasing>,
 }
 
 /// What choosing a view does to the camera. Either way, what a view shows
@@ -43,11 +47,11 @@ pub enum ViewKind {
 
 impl View {
     pub const fn mode(name: &'static str, about: &'static str) -> Self {
-        Self { name, about, kind: ViewKind::Mode, snapshot: true, same_picture_as: None }
+        Self { name, about, kind: ViewKind::Mode, snapshot: true, same_picture_as: None, antialiasing: None }
     }
 
     pub const fn preset(name: &'static str, about: &'static str) -> Self {
-        Self { name, about, kind: ViewKind::Preset, snapshot: true, same_picture_as: None }
+        Self { name, about, kind: ViewKind::Preset, snapshot: true, same_picture_as: None, antialiasing: None }
     }
 
     /// A mode that exists to be measured by `--bench` (a workload, such as
@@ -56,7 +60,17 @@ impl View {
     /// be checked some other way (chapter 08 compares its naive loop with
     /// the culled one in a test).
     pub const fn bench(name: &'static str, about: &'static str) -> Self {
-        Self { name, about, kind: ViewKind::Mode, snapshot: false, same_picture_as: None }
+        Self { name, about, kind: ViewKind::Mode, snapshot: false, same_picture_as: None, antialiasing: None }
+    }
+
+    /// Samples a pixel this view is drawn with where the runner asks for
+    /// `asked`. A runner makes the chapter again when a newly chosen view
+    /// needs another count: pipelines are built for one.
+    pub const fn samples(&self, asked: Antialiasing) -> u32 {
+        match self.antialiasing {
+            Some(own) => own.samples(),
+            None => asked.samples(),
+        }
     }
 }
 
@@ -93,6 +107,13 @@ impl<S, P> ViewRow<S, P> {
     /// [`View::same_picture_as`]).
     pub const fn same_picture_as(mut self, view: &'static str) -> Self {
         self.view.same_picture_as = Some(view);
+        self
+    }
+
+    /// This view smooths edges as `antialiasing` says, whatever the
+    /// runner asks (see [`View::antialiasing`]).
+    pub const fn antialiasing(mut self, antialiasing: Antialiasing) -> Self {
+        self.view.antialiasing = Some(antialiasing);
         self
     }
 }

@@ -26,6 +26,15 @@ pub struct RenderRequest {
     pub antialiasing: Antialiasing,
 }
 
+impl RenderRequest {
+    /// The offscreen target for this request: its size, and the samples a
+    /// pixel its view is drawn with (its own, or `antialiasing`'s).
+    pub fn target<C: Chapter>(&self) -> Target {
+        let samples = C::VIEWS.get(self.view).map_or(self.antialiasing.samples(), |v| v.samples(self.antialiasing));
+        Target { format: OFFSCREEN_FORMAT, width: self.width, height: self.height, samples }
+    }
+}
+
 /// A texture to render into instead of a window.
 pub struct Offscreen {
     pub texture: wgpu::Texture,
@@ -198,12 +207,7 @@ pub fn capture<C: Chapter>(
 /// Makes chapter `C` for `request`'s size with `flags`, and starts it as
 /// every runner does ([`crate::chapter::start`]: the view, the camera).
 pub fn started<C: Chapter>(gpu: &Gpu, request: &RenderRequest, flags: &FlagValues) -> anyhow::Result<C> {
-    let target = Target {
-        format: OFFSCREEN_FORMAT,
-        width: request.width,
-        height: request.height,
-        samples: request.antialiasing.samples(),
-    };
+    let target = request.target::<C>();
     let mut chapter = crate::chapter::create::<C>(gpu, target, flags)?;
     crate::chapter::start(&mut chapter, request.view, request.camera)?;
     Ok(chapter)
@@ -220,12 +224,7 @@ pub fn render_image_with<C: Chapter>(
     request: &RenderRequest,
     flags: &FlagValues,
 ) -> anyhow::Result<image::RgbaImage> {
-    let target = Target {
-        format: OFFSCREEN_FORMAT,
-        width: request.width,
-        height: request.height,
-        samples: request.antialiasing.samples(),
-    };
+    let target = request.target::<C>();
     let mut chapter = started::<C>(gpu, request, flags)?;
     capture(gpu, &mut chapter, target, request.time, request.view)
 }
@@ -262,12 +261,7 @@ pub fn bench<C: Chapter>(
     frames: u32,
     flags: &FlagValues,
 ) -> anyhow::Result<BenchReport> {
-    let target = Target {
-        format: OFFSCREEN_FORMAT,
-        width: request.width,
-        height: request.height,
-        samples: request.antialiasing.samples(),
-    };
+    let target = request.target::<C>();
     let setup = Instant::now();
     let mut chapter = crate::chapter::create::<C>(gpu, target, flags)?;
     let setup_ms = setup.elapsed().as_secs_f64() * 1e3;
@@ -342,12 +336,7 @@ pub fn edit_to_frame<C: Chapter>(
     edits: usize,
     flags: &FlagValues,
 ) -> anyhow::Result<(&'static str, Stats)> {
-    let target = Target {
-        format: OFFSCREEN_FORMAT,
-        width: request.width,
-        height: request.height,
-        samples: request.antialiasing.samples(),
-    };
+    let target = request.target::<C>();
     let mut chapter = started::<C>(gpu, request, flags)?;
     let offscreen = Offscreen::new(&gpu.device, target);
     let file = crate::editor::main_file::<C>(gpu).context("the chapter builds no pipeline from WGSL")?;

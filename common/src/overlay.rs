@@ -191,9 +191,34 @@ pub struct Panel<'a, C: Chapter> {
     pub memory: MemoryUse,
     /// What each pass of the last frame drew, as the chapter counted it.
     pub drawn: &'a [PassCount],
+    /// How edges are smoothed where the view does not decide it, and
+    /// whether the adapter can multisample the picture's format.
+    pub antialiasing: &'a mut crate::Antialiasing,
+    pub can_multisample: bool,
 }
 
 impl<C: Chapter> Panel<'_, C> {
+    /// The anti-aliasing switch: one sample a pixel or multisampling
+    /// (chapter 02). Switching makes the chapter again, since pipelines
+    /// are built for one number of samples.
+    fn antialiasing_switch(&mut self, ui: &mut egui::Ui) {
+        use crate::Antialiasing;
+        let view = C::VIEWS[*self.view];
+        ui.horizontal(|ui| {
+            ui.label("edges:");
+            ui.add_enabled_ui(view.antialiasing.is_none(), |ui| {
+                let about = "switching makes the chapter again: its own controls return to where they start";
+                ui.radio_value(self.antialiasing, Antialiasing::Off, "1 sample").on_hover_text(about);
+                ui.radio_value(self.antialiasing, Antialiasing::Msaa, "MSAA 4×").on_hover_text(about);
+            });
+        });
+        if let Some(own) = view.antialiasing {
+            ui.small(format!("this view draws with {} sample(s) a pixel, whatever the switch says", own.samples()));
+        } else if *self.antialiasing == Antialiasing::Msaa && !self.can_multisample {
+            ui.small("this adapter cannot multisample the picture's format: one sample a pixel");
+        }
+    }
+
     /// Draws the chapter's window (time, frame times, memory, view, camera,
     /// the chapter's own controls, a shader error, the status line) and,
     /// when asked for, the key help. True when the shader panel's switch
@@ -222,6 +247,7 @@ impl<C: Chapter> Panel<'_, C> {
                 self.chapter.select_view(*self.view);
             }
             ui.small(C::VIEWS[*self.view].about);
+            self.antialiasing_switch(ui);
             triangle_lines(ui, self.drawn);
             if let Some(camera) = self.chapter.camera_mut() {
                 // The text `--camera` takes, so what is shown can be typed

@@ -89,8 +89,13 @@ struct Running<C: Chapter> {
     config: wgpu::SurfaceConfiguration,
     /// The format the chapter draws in: the surface's, seen as sRGB.
     scene_format: wgpu::TextureFormat,
-    /// How the scene's edges are smoothed (`--antialiasing`).
+    /// How the scene's edges are smoothed (`--antialiasing`, and the
+    /// overlay's switch), where the view does not decide it.
     antialiasing: crate::Antialiasing,
+    /// The samples a pixel the chapter's pipelines were made for.
+    chapter_samples: u32,
+    /// The chapter's own flags, to make it again with.
+    chapter_flags: crate::chapter::FlagValues,
     /// The surface's format without sRGB encoding, for the overlay.
     overlay_format: wgpu::TextureFormat,
     gpu: Gpu,
@@ -329,7 +334,7 @@ impl Opening {
             format: scene_format,
             width: config.width,
             height: config.height,
-            samples: args.antialiasing.samples(),
+            samples: C::VIEWS[view].samples(args.antialiasing),
         };
         // Shaders are read from the source tree from the start, so that an
         // edit saved before this run is what the first frame shows.
@@ -376,6 +381,8 @@ impl Opening {
             scene_format,
             overlay_format,
             antialiasing: args.antialiasing,
+            chapter_samples: target.samples,
+            chapter_flags: args.chapter_flags.clone(),
             gpu,
             chapter,
             overlay,
@@ -416,7 +423,7 @@ impl<C: Chapter> Running<C> {
             format: self.scene_format,
             width: self.config.width,
             height: self.config.height,
-            samples: self.antialiasing.samples(),
+            samples: C::VIEWS[self.view].samples(self.antialiasing),
         }
     }
 
@@ -438,6 +445,33 @@ impl<C: Chapter> Running<C> {
         self.config.height = size.height;
         self.surface.configure(&self.gpu.device, &self.config);
         self.chapter.resize(&self.gpu, self.target());
+    }
+
+    /// Makes the chapter again when the view or the overlay's switch asks
+    /// for another number of samples a pixel than its pipelines were made
+    /// for, in the same view and with the same camera. The chapter's own
+    /// controls return to where they start.
+    fn match_samples(&mut self) {
+        let target = self.target();
+        if target.samples == self.chapter_samples {
+            return;
+        }
+        let camera = self.chapter.camera_mut().map(|camera| *camera);
+        let prepared = C::prepare(&self.gpu).finish(&self.gpu);
+        match crate::chapter::create_prepared::<C>(&self.gpu, target, prepared, &self.chapter_flags) {
+            Ok(mut chapter) => {
+                chapter.select_view(self.view);
+                if let (Some(camera), Some(placed)) = (camera, chapter.camera_mut()) {
+                    *placed = camera;
+                }
+                self.chapter = chapter;
+                self.chapter_samples = target.samples;
+            }
+            Err(error) => {
+                self.status = format!("cannot draw with {} samples a pixel: {error:#}", target.samples);
+                self.chapter_samples = target.samples;
+            }
+        }
     }
 
     fn lock_pointer(&mut self, lock: bool) {
@@ -628,6 +662,12 @@ impl<C: Chapter> Running<C> {
                 adapter: gpu.adapter.get_info().name,
                 memory: self.memory,
                 drawn: &self.last_counts,
+                antialiasing: &mut self.antialiasing,
+                can_multisample: crate::multisampling::samples_for(
+                    &gpu.adapter,
+                    self.scene_format,
+                    crate::multisampling::SAMPLES,
+                ) > 1,
             };
             let hidden = self.overlay_hidden;
             overlay.draw(gpu, &mut encoder, &overlay_view, size, window, |ctx| {
@@ -650,6 +690,7 @@ impl<C: Chapter> Running<C> {
         self.gpu.queue.present(frame);
         self.editor.drew();
         self.answer(request);
+        self.match_samples();
         Ok(true)
     }
     // ANCHOR_END: frame

@@ -28,9 +28,18 @@ use snapshot::{Comparison, Rule, Tolerance};
 pub const WIDTH: u32 = 800;
 pub const HEIGHT: u32 = 450;
 
-/// Snapshots are rendered into this target.
+/// Snapshots are rendered into this target, multisampled as a learner's
+/// window is by default.
 pub fn target() -> Target {
     Target { format: OFFSCREEN_FORMAT, width: WIDTH, height: HEIGHT, samples: common::multisampling::SAMPLES }
+}
+
+/// [`target`], with the samples a pixel `view` is drawn with (a `no-aa`
+/// view's one): a chapter is made for one number of samples, so a view
+/// that asks for another is drawn by a chapter made for it, as every
+/// runner does.
+pub fn target_for(view: &View) -> Target {
+    Target { samples: view.samples(common::Antialiasing::default()), ..target() }
 }
 
 /// The README and the book's `SUMMARY.md` as the chapter records say they
@@ -173,11 +182,16 @@ impl Snapshots for Record {
         let gpu = self.gpu()?;
         let rules = Rules::new(&gpu)?;
         let mut chapter = (self.open)(&gpu, target())?;
+        let mut samples = target().samples;
         let mut results = Vec::new();
         let mut passes = Vec::new();
         let mut problems = Vec::new();
         let chosen = |name: &str| views.is_empty() || views.iter().any(|v| v == name);
         for (i, view) in self.views.iter().enumerate().filter(|(_, v)| v.snapshot && chosen(v.name)) {
+            if target_for(view).samples != samples {
+                samples = target_for(view).samples;
+                chapter = (self.open)(&gpu, target_for(view))?;
+            }
             chapter.show(i);
             chapter.reset_camera(i);
             let outcome = chapter.render_counted(&gpu, i, self.snapshot_time).map_err(|e| format!("{e:#}")).and_then(
@@ -208,7 +222,7 @@ impl Snapshots for Record {
         for (i, view) in self.views.iter().enumerate().filter(|(_, v)| v.snapshot && chosen(v.name)) {
             let path = reference_path(self.name, view.name);
             std::fs::create_dir_all(path.parent().expect("reference paths have a folder"))?;
-            let mut chapter = (self.open)(&gpu, target())?;
+            let mut chapter = (self.open)(&gpu, target_for(view))?;
             chapter.show(i);
             let picture = chapter.render(&gpu, i, self.snapshot_time)?.0;
             for stale in ["actual", "diff"] {
@@ -288,6 +302,18 @@ impl Snapshots for Record {
         for (i, view) in self.views.iter().enumerate() {
             problems.extend(camera_rules(self, live.as_mut(), i));
             if !view.snapshot {
+                continue;
+            }
+            // A view drawn with other samples a pixel gets a chapter made
+            // for it in every runner: nothing before it can leak into it.
+            if target_for(view).samples != target().samples {
+                let mut own = (self.open)(&gpu, target_for(view))?;
+                own.show(i);
+                let (picture, drawn) = own.render(&gpu, i, self.snapshot_time)?;
+                passes.push((view.name, drawn));
+                if let Err(e) = compare(self, i, &picture, &rules) {
+                    problems.push(format!("{}/{}: {e}", self.name, view.name));
+                }
                 continue;
             }
             live.show(i);

@@ -4,8 +4,8 @@
 
 use common::wgpu::util::DeviceExt as _;
 use common::{
-    Chapter, Drawn, Frame, Gpu, Preparation, Reloadable, SceneTargets, ShaderError, Target, View, ViewRow, anyhow,
-    egui, shader, views_of, wgpu,
+    Antialiasing, Chapter, Drawn, Frame, Gpu, Preparation, Reloadable, SceneTargets, ShaderError, Target, View,
+    ViewRow, anyhow, egui, shader, views_of, wgpu,
 };
 
 use crate::pipeline::build_pipeline;
@@ -31,8 +31,15 @@ impl Settings {
 pub enum CameraPreset {}
 
 /// Every view, with the settings it applies.
-pub const VIEW_TABLE: [ViewRow<Settings, CameraPreset>; 2] = [
+pub const VIEW_TABLE: [ViewRow<Settings, CameraPreset>; 3] = [
     ViewRow::mode("default", "colours interpolated across the triangle", Settings::DEFAULT),
+    ViewRow::mode(
+        "no-aa",
+        "the default view drawn with one sample a pixel: its edges as they are without multisampling",
+        Settings::DEFAULT,
+    )
+    .same_picture_as("default")
+    .antialiasing(Antialiasing::Off),
     ViewRow::mode(
         "flat",
         "interpolation off: one colour per triangle, from its first vertex",

@@ -5,8 +5,8 @@
 use std::sync::Arc;
 
 use common::{
-    Camera, Chapter, ChapterFlag, FlagValues, FlyController, Frame, Gpu, Input, Preparation, Reloadable, SceneTargets,
-    ShaderFile, Target, View, ViewRow, anyhow, egui, shader, views_of, wgpu,
+    Antialiasing, Camera, Chapter, ChapterFlag, FlagValues, FlyController, Frame, Gpu, Input, Preparation, Reloadable,
+    SceneTargets, ShaderFile, Target, View, ViewRow, anyhow, egui, shader, views_of, wgpu,
 };
 
 use crate::cameras::{close_up_camera, overhead_camera, start_camera};
@@ -50,8 +50,15 @@ impl CameraPreset {
 // camera sees. `quadtree` too: it shows that camera's patches from above.
 
 /// Every view, with the settings it applies and, for a preset, its camera.
-pub const VIEW_TABLE: [ViewRow<Settings, CameraPreset>; 7] = [
+pub const VIEW_TABLE: [ViewRow<Settings, CameraPreset>; 8] = [
     ViewRow::mode("default", "the terrain, coloured by height and slope, with its cliff", Settings::DEFAULT),
+    ViewRow::mode(
+        "no-aa",
+        "the default view drawn with one sample a pixel: its edges as they are without multisampling",
+        Settings::DEFAULT,
+    )
+    .same_picture_as("default")
+    .antialiasing(Antialiasing::Off),
     ViewRow::mode(
         "full-detail",
         "the same picture with every chunk in view at full detail: ten times the triangles",

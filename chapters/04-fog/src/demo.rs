@@ -3,8 +3,8 @@
 //! through the fog with the far plane pulled in to where it turns opaque.
 
 use common::{
-    Camera, Chapter, ChapterFlag, FlagValues, FlyController, Frame, Gpu, Input, Reloadable, SceneTargets, Target, View,
-    ViewRow, anyhow, egui, views_of, wgpu,
+    Antialiasing, Camera, Chapter, ChapterFlag, FlagValues, FlyController, Frame, Gpu, Input, Reloadable, SceneTargets,
+    Target, View, ViewRow, anyhow, egui, views_of, wgpu,
 };
 use terrain::ground::{self, Movement};
 use terrain::heightfield::{HeightField, TerrainSettings};
@@ -33,12 +33,19 @@ pub struct Settings {
 }
 
 /// Every view, with the settings it applies.
-pub const VIEW_TABLE: [ViewRow<Settings, CameraPreset>; 4] = [
+pub const VIEW_TABLE: [ViewRow<Settings, CameraPreset>; 5] = [
     ViewRow::mode(
         "default",
         "the terrain in a light haze, fading into the sky",
         Settings { fog: FogSettings::HAZE, full_detail: false },
     ),
+    ViewRow::mode(
+        "no-aa",
+        "the default view drawn with one sample a pixel: its edges as they are without multisampling",
+        Settings { fog: FogSettings::HAZE, full_detail: false },
+    )
+    .same_picture_as("default")
+    .antialiasing(Antialiasing::Off),
     ViewRow::mode(
         "no-fog",
         "the same view without fog: a hard edge where the world ends",

@@ -4,8 +4,8 @@
 
 use common::book_figures::thousands;
 use common::{
-    Camera, Chapter, ChapterFlag, FlagValues, FlyController, Frame, Gpu, Input, SceneTargets, Target, View, ViewRow,
-    anyhow, egui, views_of,
+    Antialiasing, Camera, Chapter, ChapterFlag, FlagValues, FlyController, Frame, Gpu, Input, SceneTargets, Target,
+    View, ViewRow, anyhow, egui, views_of,
 };
 use fog::FogSettings;
 use terrain::ground::{self, Movement};
@@ -31,12 +31,19 @@ impl CameraPreset {
 /// Every view, with the rocks it draws and how. The bench views leave the
 /// terrain out and draw every one of their rocks (the first of the buffer,
 /// nearest the start, not culled), so that their numbers are the rocks' alone.
-pub const VIEW_TABLE: [ViewRow<Setup, CameraPreset>; 12] = [
+pub const VIEW_TABLE: [ViewRow<Setup, CameraPreset>; 13] = [
     ViewRow::mode(
         "default",
         "the Mars plain: terrain, fog and a million rocks over the whole map, culled and graded rock by rock on the GPU",
         Setup::DEFAULT,
     ),
+    ViewRow::mode(
+        "no-aa",
+        "the default view drawn with one sample a pixel: its edges as they are without multisampling",
+        Setup::DEFAULT,
+    )
+    .same_picture_as("default")
+    .antialiasing(Antialiasing::Off),
     ViewRow::mode(
         "cpu-culling",
         "the same plain, the rocks culled by chunk group on the CPU and every one in view drawn at full detail",

@@ -42,7 +42,7 @@ fn flat_view_is_one_colour() {
             width: 160,
             height: 90,
             time: 0.0,
-            view: 1,
+            view: common::chapter::view_index::<Triangle>("flat").unwrap(),
             camera: None,
             antialiasing: common::Antialiasing::Off,
         },
