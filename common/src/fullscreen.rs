@@ -18,6 +18,28 @@ pub fn pipeline(
     target: wgpu::ColorTargetState,
     depth_stencil: Option<wgpu::DepthStencilState>,
 ) -> wgpu::RenderPipeline {
+    let pipeline = Pipeline { label, layout, module, fragment_entry, target, depth_stencil };
+    multisampled_pipeline(device, pipeline, Default::default())
+}
+
+/// [`pipeline`]'s arguments bar the device, for [`multisampled_pipeline`].
+pub struct Pipeline<'a> {
+    pub label: &'a str,
+    pub layout: &'a wgpu::PipelineLayout,
+    pub module: &'a wgpu::ShaderModule,
+    pub fragment_entry: &'a str,
+    pub target: wgpu::ColorTargetState,
+    pub depth_stencil: Option<wgpu::DepthStencilState>,
+}
+
+/// [`pipeline`] for a pass of `multisample`'s samples a pixel
+/// ([`crate::SceneTargets::multisample`]): a background drawn inside a
+/// multisampled scene pass (chapter 08's sky, chapter 11's atmosphere).
+pub fn multisampled_pipeline(
+    device: &wgpu::Device,
+    Pipeline { label, layout, module, fragment_entry, target, depth_stencil }: Pipeline<'_>,
+    multisample: wgpu::MultisampleState,
+) -> wgpu::RenderPipeline {
     device.create_render_pipeline(&wgpu::RenderPipelineDescriptor {
         label: Some(label),
         layout: Some(layout),
@@ -29,7 +51,7 @@ pub fn pipeline(
         },
         primitive: Default::default(),
         depth_stencil,
-        multisample: Default::default(),
+        multisample,
         fragment: Some(wgpu::FragmentState {
             module,
             entry_point: Some(fragment_entry),

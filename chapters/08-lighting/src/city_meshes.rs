@@ -138,11 +138,16 @@ pub(crate) struct Pipelines {
     pub(crate) phong: wgpu::RenderPipeline,
 }
 
-pub(crate) fn build_pipelines(gpu: &Gpu, layout: &wgpu::PipelineLayout) -> Result<Pipelines, ShaderError> {
+/// The three shadings, for an HDR pass of `multisample`'s samples a pixel
+/// ([`crate::HdrTarget::multisample`]).
+pub(crate) fn build_pipelines(
+    gpu: &Gpu,
+    layout: &wgpu::PipelineLayout,
+    multisample: wgpu::MultisampleState,
+) -> Result<Pipelines, ShaderError> {
     let module = city_shader().module(gpu)?;
     let buffers = [Some(Vertex::LAYOUT), Some(GpuInstance::LAYOUT)];
-    let mesh =
-        |entries| mesh_pipeline(&gpu.device, layout, &module, entries, &buffers, HDR_FORMAT.into(), Default::default());
+    let mesh = |entries| mesh_pipeline(&gpu.device, layout, &module, entries, &buffers, HDR_FORMAT.into(), multisample);
     gpu.catch_validation(|| Pipelines {
         flat: mesh(("vs_flat", "fs_flat")),
         gouraud: mesh(("vs_gouraud", "fs_gouraud")),

@@ -611,9 +611,10 @@ impl Chapter for LightingChapter {
             bind_group_layouts: &[Some(&scene_lights.layout), Some(&city_layout)],
             immediate_size: 0,
         });
-        let pipelines = Reloadable::new(gpu, move |gpu| build_pipelines(gpu, &layout))?;
-        let sky = CitySky::new(gpu, &scene_lights)?;
         let post = PostChain::new(gpu, target)?;
+        let multisample = post.hdr().multisample();
+        let pipelines = Reloadable::new(gpu, move |gpu| build_pipelines(gpu, &layout, multisample))?;
+        let sky = CitySky::new(gpu, &scene_lights, multisample)?;
         Ok(Self {
             camera: aerial_camera(target.aspect()),
             controller: FlyController { speed: 20.0, ..Default::default() },
@@ -726,15 +727,7 @@ impl Chapter for LightingChapter {
 
         // The scene, in HDR.
         {
-            let black = wgpu::Color::BLACK;
-            let mut pass = common::chapter::scene_pass(
-                frame.encoder,
-                frame.timer,
-                "scene",
-                &self.post.hdr().colour,
-                black,
-                &self.post.hdr().depth,
-            );
+            let mut pass = self.post.hdr().pass(frame.encoder, frame.timer, "scene", wgpu::Color::BLACK);
             pass.set_bind_group(0, &self.scene_lights.group, &[]);
             pass.set_bind_group(1, &self.city_group, &[]);
             let pipelines = self.pipelines.get();
@@ -855,7 +848,11 @@ impl Chapter for LightingChapter {
         format!(
             "{count} light{}; lights visited per covered pixel: {}; bloom in {:?}",
             if count == 1 { "" } else { "s" },
-            per_pixel.map_or("n/a".into(), |v| format!("{v:.2}")),
+            match (per_pixel, self.post.hdr().depth_texture()) {
+                (Some(v), _) => format!("{v:.2}"),
+                (None, Some(_)) => "n/a".into(),
+                (None, None) => format!("n/a at {} samples a pixel", self.post.hdr().scene.samples()),
+            },
             self.post.bloom().format
         )
     }
@@ -906,8 +903,8 @@ impl LightingChapter {
 }
 
 /// The average number of lights the loop visits per pixel that shows the
-/// city (not the sky) in the last frame: from its depth buffer, each
-/// pixel's cluster, and that cluster's list.
+/// city (not the sky) in the last frame: from its depth buffer (at one
+/// sample a pixel only), each pixel's cluster, and that cluster's list.
 fn lights_per_pixel(
     gpu: &Gpu,
     hdr: &HdrTarget,
@@ -922,8 +919,12 @@ fn lights_per_pixel(
     if !gpu.adapter.get_downlevel_capabilities().flags.contains(copies) {
         return None;
     }
-    let depths = common::headless::read_floats(gpu, &hdr.depth_texture).ok()?;
-    let (width, height) = (hdr.depth_texture.width(), hdr.depth_texture.height());
+    // With several samples a pixel there is no depth a pixel to copy out:
+    // a resolved depth is not a depth (an edge's average lies on neither
+    // surface). The figure is "n/a" then; `--antialiasing off` counts it.
+    let depth = hdr.depth_texture()?;
+    let depths = common::headless::read_floats(gpu, depth).ok()?;
+    let (width, height) = (depth.width(), depth.height());
     let (near, far) = (camera.near, camera.far);
     let (mut visited, mut pixels) = (0u64, 0u64);
     for (i, depth) in depths.iter().map(|d| d[0]).enumerate() {
