@@ -89,8 +89,8 @@ impl SceneTargets {
         // A single-sampled depth buffer can be read as a texture (chapter
         // 02's depth view) or copied out (chapter 08's stats); a
         // multisampled one would need a shader of its own, so views that
-        // read depth draw with one sample instead (chapter 08's stats say
-        // "n/a": a resolved depth is not a depth).
+        // read depth draw with one sample instead (a resolved depth is not
+        // a depth: chapter 08's stats draw the city again to count).
         let readable = if samples == 1 {
             wgpu::TextureUsages::TEXTURE_BINDING | wgpu::TextureUsages::COPY_SRC
         } else {
