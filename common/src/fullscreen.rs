@@ -18,19 +18,27 @@ pub fn pipeline(
     target: wgpu::ColorTargetState,
     depth_stencil: Option<wgpu::DepthStencilState>,
 ) -> wgpu::RenderPipeline {
-    in_scene(device, label, layout, module, fragment_entry, target, (depth_stencil, Default::default()))
+    let pipeline = Pipeline { label, layout, module, fragment_entry, target, depth_stencil };
+    multisampled_pipeline(device, pipeline, Default::default())
 }
 
-/// [`pipeline`] for a pass of `multisample`'s samples a pixel: a full-screen
-/// pass drawn inside the scene's pass (the sky, behind everything).
-pub fn in_scene(
+/// [`pipeline`]'s arguments bar the device, for [`multisampled_pipeline`].
+pub struct Pipeline<'a> {
+    pub label: &'a str,
+    pub layout: &'a wgpu::PipelineLayout,
+    pub module: &'a wgpu::ShaderModule,
+    pub fragment_entry: &'a str,
+    pub target: wgpu::ColorTargetState,
+    pub depth_stencil: Option<wgpu::DepthStencilState>,
+}
+
+/// [`pipeline`] for a pass of `multisample`'s samples a pixel
+/// ([`crate::SceneTargets::multisample`]): a background drawn inside a
+/// multisampled scene pass (chapter 08's sky, chapter 11's atmosphere).
+pub fn multisampled_pipeline(
     device: &wgpu::Device,
-    label: &str,
-    layout: &wgpu::PipelineLayout,
-    module: &wgpu::ShaderModule,
-    fragment_entry: &str,
-    target: wgpu::ColorTargetState,
-    (depth_stencil, multisample): (Option<wgpu::DepthStencilState>, wgpu::MultisampleState),
+    Pipeline { label, layout, module, fragment_entry, target, depth_stencil }: Pipeline<'_>,
+    multisample: wgpu::MultisampleState,
 ) -> wgpu::RenderPipeline {
     device.create_render_pipeline(&wgpu::RenderPipelineDescriptor {
         label: Some(label),

@@ -87,9 +87,15 @@ impl SceneTargets {
         let size =
             wgpu::Extent3d { width: target.width.max(1), height: target.height.max(1), depth_or_array_layers: 1 };
         // A single-sampled depth buffer can be read as a texture (chapter
-        // 02's depth view); a multisampled one would need a shader of its
-        // own, and views that read depth draw with one sample instead.
-        let readable = if samples == 1 { wgpu::TextureUsages::TEXTURE_BINDING } else { wgpu::TextureUsages::empty() };
+        // 02's depth view) or copied out (chapter 08's stats); a
+        // multisampled one would need a shader of its own, so views that
+        // read depth draw with one sample instead (a resolved depth is not
+        // a depth: chapter 08's stats draw the city again to count).
+        let readable = if samples == 1 {
+            wgpu::TextureUsages::TEXTURE_BINDING | wgpu::TextureUsages::COPY_SRC
+        } else {
+            wgpu::TextureUsages::empty()
+        };
         let depth = with_depth.then(|| {
             gpu.device
                 .create_texture(&wgpu::TextureDescriptor {

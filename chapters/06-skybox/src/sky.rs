@@ -108,8 +108,15 @@ fn sky_pipeline(
         bias: Default::default(),
     };
     gpu.catch_validation(|| {
-        let in_the_scene = (Some(depth), common::multisampling::multisample(samples));
-        fullscreen::in_scene(&gpu.device, "sky", layout, &module, "fs_sky", format.into(), in_the_scene)
+        let sky = fullscreen::Pipeline {
+            label: "sky",
+            layout,
+            module: &module,
+            fragment_entry: "fs_sky",
+            target: format.into(),
+            depth_stencil: Some(depth),
+        };
+        fullscreen::multisampled_pipeline(&gpu.device, sky, common::multisampling::multisample(samples))
     })
     .map_err(ShaderError)
 }

@@ -130,23 +130,34 @@ fn city_shader() -> ShaderFile {
     shader!("lighting/city.wgsl", imports: ["lighting/lights.wgsl"])
 }
 
-/// The city's three shadings. Clone (handles): a `Reloadable` hands out copies.
+/// The city's three shadings, and Phong's at one sample a pixel for the
+/// bench's count of lights per pixel (which needs one depth a pixel).
+/// Clone (handles): a `Reloadable` hands out copies.
 #[derive(Clone)]
 pub(crate) struct Pipelines {
     pub(crate) flat: wgpu::RenderPipeline,
     pub(crate) gouraud: wgpu::RenderPipeline,
     pub(crate) phong: wgpu::RenderPipeline,
+    pub(crate) one_sample: wgpu::RenderPipeline,
 }
 
-pub(crate) fn build_pipelines(gpu: &Gpu, layout: &wgpu::PipelineLayout) -> Result<Pipelines, ShaderError> {
+/// The three shadings, for an HDR pass of `multisample`'s samples a pixel
+/// ([`crate::HdrTarget::multisample`]), and Phong's at one.
+pub(crate) fn build_pipelines(
+    gpu: &Gpu,
+    layout: &wgpu::PipelineLayout,
+    multisample: wgpu::MultisampleState,
+) -> Result<Pipelines, ShaderError> {
     let module = city_shader().module(gpu)?;
     let buffers = [Some(Vertex::LAYOUT), Some(GpuInstance::LAYOUT)];
-    let mesh =
-        |entries| mesh_pipeline(&gpu.device, layout, &module, entries, &buffers, HDR_FORMAT.into(), Default::default());
+    let mesh = |entries, multisample| {
+        mesh_pipeline(&gpu.device, layout, &module, entries, &buffers, HDR_FORMAT.into(), multisample)
+    };
     gpu.catch_validation(|| Pipelines {
-        flat: mesh(("vs_flat", "fs_flat")),
-        gouraud: mesh(("vs_gouraud", "fs_gouraud")),
-        phong: mesh(("vs_phong", "fs_phong")),
+        flat: mesh(("vs_flat", "fs_flat"), multisample),
+        gouraud: mesh(("vs_gouraud", "fs_gouraud"), multisample),
+        phong: mesh(("vs_phong", "fs_phong"), multisample),
+        one_sample: mesh(("vs_phong", "fs_phong"), Default::default()),
     })
     .map_err(ShaderError)
 }

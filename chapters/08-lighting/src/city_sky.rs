@@ -32,7 +32,9 @@ pub struct CitySky {
 }
 
 impl CitySky {
-    pub fn new(gpu: &Gpu, lights: &SceneLights) -> Result<Self, ShaderError> {
+    /// The sky for an HDR pass of `multisample`'s samples a pixel
+    /// ([`crate::HdrTarget::multisample`]).
+    pub fn new(gpu: &Gpu, lights: &SceneLights, multisample: wgpu::MultisampleState) -> Result<Self, ShaderError> {
         let device = &gpu.device;
         let size = std::mem::size_of::<SkyUniform>();
         let group_layout = device.create_bind_group_layout(&wgpu::BindGroupLayoutDescriptor {
@@ -55,11 +57,15 @@ impl CitySky {
             bind_group_layouts: &[Some(&lights.layout), Some(&group_layout)],
             immediate_size: 0,
         });
-        let pipeline = Reloadable::new(gpu, move |gpu| Self::pipeline(gpu, &layout))?;
+        let pipeline = Reloadable::new(gpu, move |gpu| Self::pipeline(gpu, &layout, multisample))?;
         Ok(Self { uniform, group, pipeline })
     }
 
-    fn pipeline(gpu: &Gpu, layout: &wgpu::PipelineLayout) -> Result<wgpu::RenderPipeline, ShaderError> {
+    fn pipeline(
+        gpu: &Gpu,
+        layout: &wgpu::PipelineLayout,
+        multisample: wgpu::MultisampleState,
+    ) -> Result<wgpu::RenderPipeline, ShaderError> {
         let module =
             shader!("lighting/sky.wgsl", imports: ["lighting/lights.wgsl", "common/fullscreen.wgsl"]).module(gpu)?;
         // At the far plane, behind everything drawn before it.
@@ -71,7 +77,15 @@ impl CitySky {
             bias: Default::default(),
         };
         gpu.catch_validation(|| {
-            fullscreen::pipeline(&gpu.device, "sky", layout, &module, "fs_sky", HDR_FORMAT.into(), Some(depth))
+            let sky = fullscreen::Pipeline {
+                label: "sky",
+                layout,
+                module: &module,
+                fragment_entry: "fs_sky",
+                target: HDR_FORMAT.into(),
+                depth_stencil: Some(depth),
+            };
+            fullscreen::multisampled_pipeline(&gpu.device, sky, multisample)
         })
         .map_err(ShaderError)
     }

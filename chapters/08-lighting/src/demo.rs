@@ -611,9 +611,10 @@ impl Chapter for LightingChapter {
             bind_group_layouts: &[Some(&scene_lights.layout), Some(&city_layout)],
             immediate_size: 0,
         });
-        let pipelines = Reloadable::new(gpu, move |gpu| build_pipelines(gpu, &layout))?;
-        let sky = CitySky::new(gpu, &scene_lights)?;
         let post = PostChain::new(gpu, target)?;
+        let multisample = post.hdr().multisample();
+        let pipelines = Reloadable::new(gpu, move |gpu| build_pipelines(gpu, &layout, multisample))?;
+        let sky = CitySky::new(gpu, &scene_lights, multisample)?;
         Ok(Self {
             camera: aerial_camera(target.aspect()),
             controller: FlyController { speed: 20.0, ..Default::default() },
@@ -726,15 +727,7 @@ impl Chapter for LightingChapter {
 
         // The scene, in HDR.
         {
-            let black = wgpu::Color::BLACK;
-            let mut pass = common::chapter::scene_pass(
-                frame.encoder,
-                frame.timer,
-                "scene",
-                &self.post.hdr().colour,
-                black,
-                &self.post.hdr().depth,
-            );
+            let mut pass = self.post.hdr().pass(frame.encoder, frame.timer, "scene", wgpu::Color::BLACK);
             pass.set_bind_group(0, &self.scene_lights.group, &[]);
             pass.set_bind_group(1, &self.city_group, &[]);
             let pipelines = self.pipelines.get();
@@ -843,14 +836,19 @@ impl Chapter for LightingChapter {
     }
 
     fn stats(&mut self, gpu: &Gpu) -> String {
-        let per_pixel = lights_per_pixel(
-            gpu,
-            self.post.hdr(),
-            &self.camera,
-            &self.last_lists,
-            self.last_light_count,
-            self.settings.culling,
-        );
+        // With several samples a pixel the frame's depth buffer holds no
+        // one depth a pixel to count from (a resolved depth is not a
+        // depth): the last frame's city is drawn again at one sample.
+        let one_sample;
+        let hdr = match self.post.hdr().depth_texture() {
+            Some(_) => self.post.hdr(),
+            None => {
+                one_sample = self.redraw_at_one_sample(gpu);
+                &one_sample
+            }
+        };
+        let per_pixel =
+            lights_per_pixel(gpu, hdr, &self.camera, &self.last_lists, self.last_light_count, self.settings.culling);
         let count = self.last_light_count;
         format!(
             "{count} light{}; lights visited per covered pixel: {}; bloom in {:?}",
@@ -896,6 +894,24 @@ fn scenery(device: &wgpu::Device, city: &City) -> anyhow::Result<Scenery> {
 // ANCHOR_END: scenery
 
 impl LightingChapter {
+    /// The last frame's city (no sky: it writes no depth) drawn again into
+    /// an HDR target of one sample a pixel, for its depth.
+    fn redraw_at_one_sample(&self, gpu: &Gpu) -> HdrTarget {
+        let hdr = HdrTarget::new(gpu, Target { samples: 1, ..self.target });
+        let mut encoder = gpu.device.create_command_encoder(&Default::default());
+        {
+            let timer = common::PassTimer::off();
+            let mut pass = hdr.pass(&mut encoder, &timer, "one sample", wgpu::Color::BLACK);
+            pass.set_bind_group(0, &self.scene_lights.group, &[]);
+            pass.set_bind_group(1, &self.city_group, &[]);
+            pass.set_pipeline(&self.pipelines.get().one_sample);
+            let s = self.settings;
+            self.meshes.draw(&mut pass, s.shading == Shading::Flat, s.countryside);
+        }
+        gpu.queue.submit([encoder.finish()]);
+        hdr
+    }
+
     /// Puts the camera where `preset` says, for the cars and drones where
     /// the last frame had them (a riding camera follows them from there).
     fn place_camera(&mut self, preset: CameraPreset) {
@@ -906,8 +922,8 @@ impl LightingChapter {
 }
 
 /// The average number of lights the loop visits per pixel that shows the
-/// city (not the sky) in the last frame: from its depth buffer, each
-/// pixel's cluster, and that cluster's list.
+/// city (not the sky) in the last frame: from its depth buffer (of one
+/// sample a pixel), each pixel's cluster, and that cluster's list.
 fn lights_per_pixel(
     gpu: &Gpu,
     hdr: &HdrTarget,
@@ -922,8 +938,10 @@ fn lights_per_pixel(
     if !gpu.adapter.get_downlevel_capabilities().flags.contains(copies) {
         return None;
     }
-    let depths = common::headless::read_floats(gpu, &hdr.depth_texture).ok()?;
-    let (width, height) = (hdr.depth_texture.width(), hdr.depth_texture.height());
+    // One depth a pixel: `hdr` is of one sample (see `stats`).
+    let depth = hdr.depth_texture()?;
+    let depths = common::headless::read_floats(gpu, depth).ok()?;
+    let (width, height) = (depth.width(), depth.height());
     let (near, far) = (camera.near, camera.far);
     let (mut visited, mut pixels) = (0u64, 0u64);
     for (i, depth) in depths.iter().map(|d| d[0]).enumerate() {

@@ -1,6 +1,7 @@
 //! Post-processing: from the HDR picture a scene is drawn into to the frame
 //! on the screen. One piece, [`PostChain`], owns the three steps: the
-//! [`HdrTarget`] (colour in 16-bit floats, and depth), the [`Bloom`] chain
+//! [`HdrTarget`] (colour in 16-bit floats, drawn with several samples a
+//! pixel and resolved, and depth), the [`Bloom`] chain
 //! over its bright parts, and the [`ToneMap`] that adds the bloom, exposes
 //! and tone-maps into the target. Made with the target, resized with it;
 //! each frame the scene is drawn into [`PostChain::hdr`] and
@@ -8,45 +9,70 @@
 //! Chapters 08 to 11 finish their frames with it.
 
 use common::chapter::{FILTERABLE, sampler_entry, texture_entry, uniform_entry};
-use common::{Drawn, Frame, Gpu, Reloadable, ShaderError, Target, fullscreen, shader, wgpu};
+use common::{Drawn, Frame, Gpu, Reloadable, SceneTargets, ShaderError, Target, fullscreen, shader, wgpu};
 
 use crate::bloom::{Bloom, BloomSettings};
 
-/// The HDR picture the scene is drawn into, and its depth buffer (which
-/// chapter 08's `stats` reads back).
+/// The HDR picture the scene is drawn into: its samples and depth buffer
+/// ([`SceneTargets`], four samples a pixel unless the target asks for one
+/// or the adapter cannot multisample [`HDR_FORMAT`]), and the picture they
+/// are resolved into, which the bloom and the tone map read.
 pub struct HdrTarget {
+    /// The scene's samples and depth; every pipeline drawing in
+    /// [`HdrTarget::pass`] says [`SceneTargets::multisample`].
+    pub scene: SceneTargets,
+    /// The resolved picture, one sample a pixel.
     pub colour: wgpu::TextureView,
-    pub depth_texture: wgpu::Texture,
-    pub depth: wgpu::TextureView,
 }
 
 /// 16-bit floats per channel: room for light far brighter than white.
 pub const HDR_FORMAT: wgpu::TextureFormat = wgpu::TextureFormat::Rgba16Float;
 
 impl HdrTarget {
-    pub fn new(device: &wgpu::Device, width: u32, height: u32) -> Self {
-        let texture = |label, format, usage| {
-            device.create_texture(&wgpu::TextureDescriptor {
-                label: Some(label),
-                size: wgpu::Extent3d { width, height, depth_or_array_layers: 1 },
-                mip_level_count: 1,
-                sample_count: 1,
-                dimension: wgpu::TextureDimension::D2,
-                format,
-                usage,
-                view_formats: &[],
-            })
-        };
-        let attach = wgpu::TextureUsages::RENDER_ATTACHMENT;
-        // Copied out only by tests, which read the light itself.
-        let readable = wgpu::TextureUsages::TEXTURE_BINDING | wgpu::TextureUsages::COPY_SRC;
-        let colour = texture("hdr", HDR_FORMAT, attach | readable);
-        let depth_texture = texture("depth", common::texture::DEPTH_FORMAT, attach | wgpu::TextureUsages::COPY_SRC);
-        Self {
-            colour: colour.create_view(&Default::default()),
-            depth: depth_texture.create_view(&Default::default()),
-            depth_texture,
-        }
+    /// The HDR picture for `target`'s size and sample count.
+    pub fn new(gpu: &Gpu, target: Target) -> Self {
+        let (width, height) = (target.width.max(1), target.height.max(1));
+        let colour = gpu.device.create_texture(&wgpu::TextureDescriptor {
+            label: Some("hdr"),
+            size: wgpu::Extent3d { width, height, depth_or_array_layers: 1 },
+            mip_level_count: 1,
+            sample_count: 1,
+            dimension: wgpu::TextureDimension::D2,
+            format: HDR_FORMAT,
+            // Copied out only by tests, which read the light itself.
+            usage: wgpu::TextureUsages::RENDER_ATTACHMENT
+                | wgpu::TextureUsages::TEXTURE_BINDING
+                | wgpu::TextureUsages::COPY_SRC,
+            view_formats: &[],
+        });
+        let scene = SceneTargets::new(gpu, Target { format: HDR_FORMAT, ..target });
+        Self { scene, colour: colour.create_view(&Default::default()) }
+    }
+
+    /// Begins the scene's pass: the samples cleared to `clear` and depth
+    /// to the far plane, resolved into [`HdrTarget::colour`] at its end.
+    pub fn pass<'e>(
+        &self,
+        encoder: &'e mut wgpu::CommandEncoder,
+        timer: &common::PassTimer,
+        label: &'static str,
+        clear: wgpu::Color,
+    ) -> wgpu::RenderPass<'e> {
+        self.scene.pass(encoder, timer, label, &self.colour, Some(clear))
+    }
+
+    /// The pipeline state for drawing in [`HdrTarget::pass`].
+    pub fn multisample(&self) -> wgpu::MultisampleState {
+        self.scene.multisample()
+    }
+
+    /// The depth buffer as data (chapter 08's stats, the tests), where it
+    /// is one: at one sample a pixel. A multisampled depth buffer cannot be
+    /// copied out, and no resolve makes it one depth a pixel (an average of
+    /// an edge's depths is a depth of neither surface), so with several
+    /// samples this is `None`.
+    pub fn depth_texture(&self) -> Option<&wgpu::Texture> {
+        (self.scene.samples() == 1).then(|| self.scene.depth().map(|view| view.texture())).flatten()
     }
 }
 
@@ -102,21 +128,24 @@ impl PostChain {
 
     /// The chain for `target`: its size, and the format the frame ends in.
     pub fn new(gpu: &Gpu, target: Target) -> Result<Self, ShaderError> {
-        let hdr = HdrTarget::new(&gpu.device, target.width, target.height);
+        let hdr = HdrTarget::new(gpu, target);
         let bloom = Bloom::new(gpu, target.width, target.height)?;
         let tone_map = ToneMap::new(gpu, target.format, &hdr.colour, bloom.output())?;
         Ok(Self { hdr, bloom, tone_map })
     }
 
     /// Makes the pictures again for `target`'s size (its format stays the
-    /// one given to `new`).
+    /// one given to `new`, and its samples a pixel too: the pipelines
+    /// drawing into [`PostChain::hdr`] were made for them).
     pub fn resize(&mut self, gpu: &Gpu, target: Target) {
-        self.hdr = HdrTarget::new(&gpu.device, target.width, target.height);
+        let samples = self.hdr.scene.samples();
+        self.hdr = HdrTarget::new(gpu, Target { samples, ..target });
         self.bloom.resize(&gpu.device, target.width, target.height);
         self.tone_map.set_inputs(&gpu.device, &self.hdr.colour, self.bloom.output());
     }
 
-    /// Where the scene is drawn: the HDR colour and its depth buffer.
+    /// Where the scene is drawn: the HDR samples and depth buffer, and the
+    /// colour they are resolved into.
     pub fn hdr(&self) -> &HdrTarget {
         &self.hdr
     }

@@ -507,9 +507,10 @@ impl Chapter for TexturesChapter {
         let texture_report =
             TextureReport { materials: materials.list.len(), texels: materials.texels, load_ms, mip_ms };
         let scene_lights = SceneLights::new(device);
-        let renderer = TexturedRenderer::new(gpu, &scene_lights, &materials)?;
-        let sky = CitySky::new(gpu, &scene_lights)?;
         let post = PostChain::new(gpu, target)?;
+        let multisample = post.hdr().multisample();
+        let renderer = TexturedRenderer::new(gpu, &scene_lights, &materials, multisample)?;
+        let sky = CitySky::new(gpu, &scene_lights, multisample)?;
         let instances = device.create_buffer(&wgpu::BufferDescriptor {
             label: Some("instances"),
             size: 64 * std::mem::size_of::<ModelInstance>() as u64,
@@ -682,14 +683,7 @@ impl Chapter for TexturesChapter {
 
         // The scene, in HDR, then the sky behind it.
         {
-            let mut pass = common::chapter::scene_pass(
-                frame.encoder,
-                frame.timer,
-                "scene",
-                &self.post.hdr().colour,
-                wgpu::Color::BLACK,
-                &self.post.hdr().depth,
-            );
+            let mut pass = self.post.hdr().pass(frame.encoder, frame.timer, "scene", wgpu::Color::BLACK);
             pass.set_bind_group(0, &self.scene_lights.group, &[]);
             let list = DrawList { materials: &self.materials, instances: &self.instances, draws };
             let surfaces = SurfaceOptions {

@@ -93,7 +93,14 @@ impl DrawList<'_> {
 // ANCHOR_END: draw_list
 
 impl TexturedRenderer {
-    pub fn new(gpu: &Gpu, lights: &SceneLights, materials: &Materials) -> Result<Self, ShaderError> {
+    /// The renderer for an HDR pass of `multisample`'s samples a pixel
+    /// ([`lighting::HdrTarget::multisample`]).
+    pub fn new(
+        gpu: &Gpu,
+        lights: &SceneLights,
+        materials: &Materials,
+        multisample: wgpu::MultisampleState,
+    ) -> Result<Self, ShaderError> {
         let device = &gpu.device;
         let layout = device.create_bind_group_layout(&wgpu::BindGroupLayoutDescriptor {
             label: Some("view"),
@@ -127,17 +134,20 @@ impl TexturedRenderer {
             bind_group_layouts: &[Some(&lights.layout), Some(&materials.layout), Some(&layout)],
             immediate_size: 0,
         });
-        let pipelines = Reloadable::new(gpu, move |gpu| Self::pipelines(gpu, &pipeline_layout))?;
+        let pipelines = Reloadable::new(gpu, move |gpu| Self::pipelines(gpu, &pipeline_layout, multisample))?;
         Ok(Self { pipelines, options, sampler_groups, anisotropy })
     }
 
-    fn pipelines(gpu: &Gpu, layout: &wgpu::PipelineLayout) -> Result<Pipelines, ShaderError> {
+    fn pipelines(
+        gpu: &Gpu,
+        layout: &wgpu::PipelineLayout,
+        multisample: wgpu::MultisampleState,
+    ) -> Result<Pipelines, ShaderError> {
         let module = shader!("textures/textured.wgsl", imports: ["lighting/lights.wgsl", "textures/surface.wgsl"])
             .module(gpu)?;
         let buffers = [Some(TexturedVertex::LAYOUT), Some(ModelInstance::LAYOUT)];
-        let pipeline = |entries| {
-            mesh_pipeline(&gpu.device, layout, &module, entries, &buffers, HDR_FORMAT.into(), Default::default())
-        };
+        let pipeline =
+            |entries| mesh_pipeline(&gpu.device, layout, &module, entries, &buffers, HDR_FORMAT.into(), multisample);
         gpu.catch_validation(|| Pipelines {
             normal_mapped: pipeline(("vs_main", "fs_normal_mapped")),
             plain: pipeline(("vs_main", "fs_plain")),

@@ -415,6 +415,8 @@ impl Chapter for ShadowsChapter {
 
     fn new(gpu: &Gpu, target: Target, (): ()) -> anyhow::Result<Self> {
         let device = &gpu.device;
+        let post = PostChain::new(gpu, target)?;
+        let multisample = post.hdr().multisample();
         let level = game::level();
         let read: obj::ReadFile = &scene::read;
         let mut warnings = Vec::new();
@@ -440,7 +442,7 @@ impl Chapter for ShadowsChapter {
             lantern: upload_model(&mut up, &mut materials, &scene::lantern_model(&level), "lantern"),
             player: upload_model(&mut up, &mut materials, &player.model, "player"),
         };
-        let parallax = Parallax::new(gpu, &mut up, &scene_lights, &level)?;
+        let parallax = Parallax::new(gpu, &mut up, &scene_lights, &level, multisample)?;
         up.finish();
         warnings.append(&mut materials.warnings);
         for warning in &warnings {
@@ -448,11 +450,17 @@ impl Chapter for ShadowsChapter {
         }
         let shadow_map = ShadowMap::new(gpu, shadow_map::DEFAULT_SIZE)?;
         let point_shadow = PointShadow::new(gpu, point_shadow::DEFAULT_FACE_SIZE)?;
-        let renderer = ShadowedRenderer::with_point_light(gpu, &scene_lights, &materials, &shadow_map, &point_shadow)?;
+        let renderer = ShadowedRenderer::with_point_light(
+            gpu,
+            &scene_lights,
+            &materials,
+            &shadow_map,
+            &point_shadow,
+            multisample,
+        )?;
         let map_view = shadow_map::MapView::new(gpu, target.format)?;
         let cube_view = CubeView::new(gpu, target.format, &point_shadow)?;
-        let sky = CitySky::new(gpu, &scene_lights)?;
-        let post = PostChain::new(gpu, target)?;
+        let sky = CitySky::new(gpu, &scene_lights, multisample)?;
         let solids = level.solids();
         let bounds = scene::level_bounds(&level);
         let (instances, draws) = Self::level_instances(&level, &Game::new(&level));
@@ -628,14 +636,7 @@ impl Chapter for ShadowsChapter {
 
         // The last pass: the camera's view, each fragment asking the maps.
         {
-            let mut pass = common::chapter::scene_pass(
-                frame.encoder,
-                frame.timer,
-                "scene",
-                &self.post.hdr().colour,
-                wgpu::Color::BLACK,
-                &self.post.hdr().depth,
-            );
+            let mut pass = self.post.hdr().pass(frame.encoder, frame.timer, "scene", wgpu::Color::BLACK);
             pass.set_bind_group(0, &self.scene_lights.group, &[]);
             let mut drawn = self.renderer.draw(&mut pass, &self.shadow_map, &list, s.show == Show::Sunlit);
             if s.show == Show::Scene {

@@ -68,7 +68,15 @@ pub struct Parallax {
 }
 
 impl Parallax {
-    pub fn new(gpu: &Gpu, up: &mut Uploader, lights: &SceneLights, level: &Level) -> anyhow::Result<Self> {
+    /// The layers for an HDR pass of `multisample`'s samples a pixel
+    /// ([`lighting::HdrTarget::multisample`]).
+    pub fn new(
+        gpu: &Gpu,
+        up: &mut Uploader,
+        lights: &SceneLights,
+        level: &Level,
+        multisample: wgpu::MultisampleState,
+    ) -> anyhow::Result<Self> {
         let device = &gpu.device;
         let layout = device.create_bind_group_layout(&wgpu::BindGroupLayoutDescriptor {
             label: Some("layer"),
@@ -123,7 +131,7 @@ impl Parallax {
             bind_group_layouts: &[Some(&lights.layout), Some(&layout)],
             immediate_size: 0,
         });
-        let pipeline = Reloadable::new(gpu, move |gpu| Self::pipeline(gpu, &pipeline_layout))?;
+        let pipeline = Reloadable::new(gpu, move |gpu| Self::pipeline(gpu, &pipeline_layout, multisample))?;
         Ok(Self { pipeline, groups, uniform, vertices })
     }
 
@@ -156,7 +164,11 @@ impl Parallax {
     }
     // ANCHOR_END: planes
 
-    fn pipeline(gpu: &Gpu, layout: &wgpu::PipelineLayout) -> Result<wgpu::RenderPipeline, ShaderError> {
+    fn pipeline(
+        gpu: &Gpu,
+        layout: &wgpu::PipelineLayout,
+        multisample: wgpu::MultisampleState,
+    ) -> Result<wgpu::RenderPipeline, ShaderError> {
         let module = shader!("shadows/layers.wgsl", imports: ["lighting/lights.wgsl"]).module(gpu)?;
         let buffer = wgpu::VertexBufferLayout {
             array_stride: std::mem::size_of::<LayerVertex>() as u64,
@@ -171,7 +183,7 @@ impl Parallax {
                 ("vs_layer", "fs_layer"),
                 &[Some(buffer)],
                 HDR_FORMAT.into(),
-                Default::default(),
+                multisample,
             )
         })
         .map_err(ShaderError)

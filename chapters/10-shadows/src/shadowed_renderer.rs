@@ -31,14 +31,17 @@ pub struct ShadowedRenderer {
 // ANCHOR_END: renderer
 
 impl ShadowedRenderer {
-    /// The scene lit by the sun, shadowed, and by `lights`' other lights, unshadowed.
+    /// The scene lit by the sun, shadowed, and by `lights`' other lights,
+    /// unshadowed; for an HDR pass of `multisample`'s samples a pixel
+    /// ([`lighting::HdrTarget::multisample`]).
     pub fn new(
         gpu: &Gpu,
         lights: &SceneLights,
         materials: &Materials,
         shadow: &ShadowMap,
+        multisample: wgpu::MultisampleState,
     ) -> Result<Self, ShaderError> {
-        Self::build(gpu, lights, materials, shadow, None)
+        Self::build(gpu, lights, materials, shadow, None, multisample)
     }
 
     /// [`ShadowedRenderer::new`], with one more point light shadowed by
@@ -50,8 +53,9 @@ impl ShadowedRenderer {
         materials: &Materials,
         shadow: &ShadowMap,
         point: &PointShadow,
+        multisample: wgpu::MultisampleState,
     ) -> Result<Self, ShaderError> {
-        Self::build(gpu, lights, materials, shadow, Some(point))
+        Self::build(gpu, lights, materials, shadow, Some(point), multisample)
     }
 
     fn build(
@@ -60,6 +64,7 @@ impl ShadowedRenderer {
         materials: &Materials,
         shadow: &ShadowMap,
         point: Option<&PointShadow>,
+        multisample: wgpu::MultisampleState,
     ) -> Result<Self, ShaderError> {
         let device = &gpu.device;
         let mut layout_entries = vec![sampler_entry(0)];
@@ -90,7 +95,7 @@ impl ShadowedRenderer {
         // Without a point light, entry points that never touch the cube's
         // bindings, which this layout does not have.
         let entries = if point.is_some() { ("fs_lantern", "fs_lantern_sunlit") } else { ("fs_main", "fs_sunlit") };
-        let pipelines = Reloadable::new(gpu, move |gpu| Self::pipelines(gpu, &pipeline_layout, entries))?;
+        let pipelines = Reloadable::new(gpu, move |gpu| Self::pipelines(gpu, &pipeline_layout, entries, multisample))?;
         Ok(Self { pipelines, sampler_group })
     }
 
@@ -98,6 +103,7 @@ impl ShadowedRenderer {
         gpu: &Gpu,
         layout: &wgpu::PipelineLayout,
         (picture, sunlit): (&str, &str),
+        multisample: wgpu::MultisampleState,
     ) -> Result<(wgpu::RenderPipeline, wgpu::RenderPipeline), ShaderError> {
         let module = shader!(
             "shadows/scene.wgsl",
@@ -106,15 +112,7 @@ impl ShadowedRenderer {
         .module(gpu)?;
         let buffers = [Some(TexturedVertex::LAYOUT), Some(ModelInstance::LAYOUT)];
         let pipeline = |fragment| {
-            mesh_pipeline(
-                &gpu.device,
-                layout,
-                &module,
-                ("vs_main", fragment),
-                &buffers,
-                HDR_FORMAT.into(),
-                Default::default(),
-            )
+            mesh_pipeline(&gpu.device, layout, &module, ("vs_main", fragment), &buffers, HDR_FORMAT.into(), multisample)
         };
         gpu.catch_validation(|| (pipeline(picture), pipeline(sunlit))).map_err(ShaderError)
     }

@@ -202,17 +202,28 @@ pub struct Sky {
 // ANCHOR_END: sky
 
 impl Sky {
-    pub fn new(gpu: &Gpu, lights: &wgpu::BindGroupLayout, atmosphere: &Atmosphere) -> Result<Self, ShaderError> {
+    /// The sky for an HDR pass of `multisample`'s samples a pixel
+    /// ([`lighting::HdrTarget::multisample`]).
+    pub fn new(
+        gpu: &Gpu,
+        lights: &wgpu::BindGroupLayout,
+        atmosphere: &Atmosphere,
+        multisample: wgpu::MultisampleState,
+    ) -> Result<Self, ShaderError> {
         let layout = gpu.device.create_pipeline_layout(&wgpu::PipelineLayoutDescriptor {
             label: Some("sky"),
             bind_group_layouts: &[Some(lights), Some(&atmosphere.layout)],
             immediate_size: 0,
         });
-        let pipeline = Reloadable::new(gpu, move |gpu| Self::pipeline(gpu, &layout))?;
+        let pipeline = Reloadable::new(gpu, move |gpu| Self::pipeline(gpu, &layout, multisample))?;
         Ok(Self { pipeline })
     }
 
-    fn pipeline(gpu: &Gpu, layout: &wgpu::PipelineLayout) -> Result<wgpu::RenderPipeline, ShaderError> {
+    fn pipeline(
+        gpu: &Gpu,
+        layout: &wgpu::PipelineLayout,
+        multisample: wgpu::MultisampleState,
+    ) -> Result<wgpu::RenderPipeline, ShaderError> {
         let module = shader!(
             "voronoi-water/sky.wgsl",
             imports: ["common/fullscreen.wgsl", "voronoi-water/atmosphere.wgsl"]
@@ -225,15 +236,15 @@ impl Sky {
             ..common::texture::depth_test().expect("a depth test")
         };
         gpu.catch_validation(|| {
-            fullscreen::pipeline(
-                &gpu.device,
-                "sky",
+            let sky = fullscreen::Pipeline {
+                label: "sky",
                 layout,
-                &module,
-                "fs_sky",
-                lighting::HDR_FORMAT.into(),
-                Some(depth),
-            )
+                module: &module,
+                fragment_entry: "fs_sky",
+                target: lighting::HDR_FORMAT.into(),
+                depth_stencil: Some(depth),
+            };
+            fullscreen::multisampled_pipeline(&gpu.device, sky, multisample)
         })
         .map_err(ShaderError)
     }

@@ -401,15 +401,17 @@ impl Chapter for VoronoiWaterChapter {
     fn new(gpu: &Gpu, target: Target, (): ()) -> anyhow::Result<Self> {
         let device = &gpu.device;
         let settings = Settings::SUNSET;
+        let post = PostChain::new(gpu, target)?;
+        let multisample = post.hdr().multisample();
         let voronoi = Voronoi::new(gpu, settings.texture_size, settings.texture_size)?;
         let water = WaterTexture::new(gpu, settings.texture_size)?;
         let show = water_texture::Show::new(gpu, &water, target.format)?;
         let atmosphere = Atmosphere::new(gpu)?;
         let scene_lights = SceneLights::new(device);
         let shadow_map = ShadowMap::new(gpu, 1024)?;
-        let sea = SeaRenderer::new(gpu, &scene_lights, &atmosphere, &shadow_map, sea::sea_waves())?;
-        let islands = IslandRenderer::new(gpu, &scene_lights, &atmosphere)?;
-        let sky = Sky::new(gpu, &scene_lights.layout, &atmosphere)?;
+        let sea = SeaRenderer::new(gpu, &scene_lights, &atmosphere, &shadow_map, sea::sea_waves(), multisample)?;
+        let islands = IslandRenderer::new(gpu, &scene_lights, &atmosphere, multisample)?;
+        let sky = Sky::new(gpu, &scene_lights.layout, &atmosphere, multisample)?;
         // The boat: chapter 09's model, materials and loader.
         let loaded = obj::load(std::path::Path::new("models/boat/boat.obj"), &read_builtin)?;
         // Its sail and sailor: two more models, through the same loader.
@@ -424,14 +426,13 @@ impl Chapter for VoronoiWaterChapter {
         let sail = upload_model(&mut up, &mut materials, &rig.sail, "sail");
         let sailor = upload_model(&mut up, &mut materials, &rig.sailor, "sailor");
         up.finish();
-        let boat_renderer = ShadowedRenderer::new(gpu, &scene_lights, &materials, &shadow_map)?;
+        let boat_renderer = ShadowedRenderer::new(gpu, &scene_lights, &materials, &shadow_map, multisample)?;
         let boat_instance = device.create_buffer(&wgpu::BufferDescriptor {
             label: Some("boat"),
             size: std::mem::size_of::<ModelInstance>() as u64,
             usage: wgpu::BufferUsages::VERTEX | wgpu::BufferUsages::COPY_DST,
             mapped_at_creation: false,
         });
-        let post = PostChain::new(gpu, target)?;
         Ok(Self {
             settings,
             orbit: SUNSET_ORBIT,
@@ -579,14 +580,7 @@ impl Chapter for VoronoiWaterChapter {
         self.sea.write(gpu, self.water.water(), &SeaSettings { origin, time, textured: s.textured_sea });
         self.islands.write(gpu, pose.helm.position);
         {
-            let mut pass = common::chapter::scene_pass(
-                frame.encoder,
-                frame.timer,
-                "scene",
-                &self.post.hdr().colour,
-                wgpu::Color::BLACK,
-                &self.post.hdr().depth,
-            );
+            let mut pass = self.post.hdr().pass(frame.encoder, frame.timer, "scene", wgpu::Color::BLACK);
             pass.set_bind_group(0, &self.scene_lights.group, &[]);
             let mut drawn = self.sky.draw(&mut pass, &self.atmosphere);
             drawn += self.islands.draw(&mut pass, &self.atmosphere);

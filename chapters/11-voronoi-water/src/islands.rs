@@ -106,7 +106,14 @@ pub struct IslandRenderer {
 // ANCHOR_END: piece
 
 impl IslandRenderer {
-    pub fn new(gpu: &Gpu, lights: &SceneLights, atmosphere: &Atmosphere) -> Result<Self, ShaderError> {
+    /// The islands for an HDR pass of `multisample`'s samples a pixel
+    /// ([`lighting::HdrTarget::multisample`]).
+    pub fn new(
+        gpu: &Gpu,
+        lights: &SceneLights,
+        atmosphere: &Atmosphere,
+        multisample: wgpu::MultisampleState,
+    ) -> Result<Self, ShaderError> {
         let device = &gpu.device;
         let (mut vertices, mut indices, mut ranges) = (Vec::new(), Vec::new(), Vec::new());
         for (k, island) in ISLANDS.iter().enumerate() {
@@ -136,11 +143,15 @@ impl IslandRenderer {
             bind_group_layouts: &[Some(&lights.layout), Some(&atmosphere.layout)],
             immediate_size: 0,
         });
-        let pipeline = Reloadable::new(gpu, move |gpu| Self::pipeline(gpu, &layout))?;
+        let pipeline = Reloadable::new(gpu, move |gpu| Self::pipeline(gpu, &layout, multisample))?;
         Ok(Self { vertices, indices, ranges, offsets, pipeline })
     }
 
-    fn pipeline(gpu: &Gpu, layout: &wgpu::PipelineLayout) -> Result<wgpu::RenderPipeline, ShaderError> {
+    fn pipeline(
+        gpu: &Gpu,
+        layout: &wgpu::PipelineLayout,
+        multisample: wgpu::MultisampleState,
+    ) -> Result<wgpu::RenderPipeline, ShaderError> {
         let module = shader!(
             "voronoi-water/islands.wgsl",
             imports: ["lighting/lights.wgsl", "voronoi-water/atmosphere.wgsl"]
@@ -166,7 +177,7 @@ impl IslandRenderer {
                 ("vs_island", "fs_island"),
                 &buffers,
                 HDR_FORMAT.into(),
-                Default::default(),
+                multisample,
             )
         })
         .map_err(ShaderError)

@@ -161,12 +161,15 @@ pub struct SeaRenderer {
 // ANCHOR_END: piece
 
 impl SeaRenderer {
+    /// The sea for an HDR pass of `multisample`'s samples a pixel
+    /// ([`lighting::HdrTarget::multisample`]); the tests' probe draws at one.
     pub fn new(
         gpu: &Gpu,
         lights: &SceneLights,
         atmosphere: &Atmosphere,
         shadow: &ShadowMap,
         waves: [Wave; 8],
+        multisample: wgpu::MultisampleState,
     ) -> Result<Self, ShaderError> {
         let device = &gpu.device;
         let group_layout = device.create_bind_group_layout(&wgpu::BindGroupLayoutDescriptor {
@@ -214,7 +217,7 @@ impl SeaRenderer {
             (buffer, data.len() as u32)
         };
         let middle = GRID_VERTICES / 2 - 1 - SMALL_GRID_CELLS / 2;
-        let pipelines = Reloadable::new(gpu, move |gpu| Self::pipelines(gpu, &layout))?;
+        let pipelines = Reloadable::new(gpu, move |gpu| Self::pipelines(gpu, &layout, multisample))?;
         Ok(Self {
             waves,
             uniform,
@@ -231,6 +234,7 @@ impl SeaRenderer {
     fn pipelines(
         gpu: &Gpu,
         layout: &wgpu::PipelineLayout,
+        multisample: wgpu::MultisampleState,
     ) -> Result<([wgpu::RenderPipeline; 2], Option<wgpu::RenderPipeline>), ShaderError> {
         let device = &gpu.device;
         let module = shader!(
@@ -243,8 +247,7 @@ impl SeaRenderer {
             ]
         )
         .module(gpu)?;
-        let lit =
-            || mesh_pipeline(device, layout, &module, ("vs_sea", "fs_sea"), &[], HDR_FORMAT.into(), Default::default());
+        let lit = || mesh_pipeline(device, layout, &module, ("vs_sea", "fs_sea"), &[], HDR_FORMAT.into(), multisample);
         let wire = || {
             device.create_render_pipeline(&wgpu::RenderPipelineDescriptor {
                 label: Some("sea edges"),
@@ -263,7 +266,7 @@ impl SeaRenderer {
                     depth_compare: Some(wgpu::CompareFunction::LessEqual),
                     ..common::texture::depth_test().expect("a depth test")
                 }),
-                multisample: Default::default(),
+                multisample,
                 fragment: Some(wgpu::FragmentState {
                     module: &module,
                     entry_point: Some("fs_wire"),

@@ -95,7 +95,11 @@ fn hdr_light(gpu: &Gpu, chapter: &mut LightingChapter, view: &str) -> (Vec<[f32;
     chapter.select_view(index);
     capture(gpu, chapter, target, LightingChapter::SNAPSHOT_TIME, index).unwrap();
     let light = read_floats(gpu, chapter.post.hdr().colour.texture()).unwrap();
-    let depth = read_floats(gpu, &chapter.post.hdr().depth_texture).unwrap().iter().map(|d| d[0]).collect();
+    let depth = read_floats(gpu, chapter.post.hdr().depth_texture().expect("one sample a pixel"))
+        .unwrap()
+        .iter()
+        .map(|d| d[0])
+        .collect();
     (light, depth)
 }
 

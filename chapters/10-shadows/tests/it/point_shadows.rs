@@ -196,7 +196,8 @@ impl TinyScene {
         let point = PointShadow::new(gpu, point_shadow::DEFAULT_FACE_SIZE).unwrap();
         let light = Light { position: LIGHT, colour: Vec3::ONE, range: 12.0, kind: LightKind::Point };
         point.write(gpu, &light, settings);
-        let renderer = ShadowedRenderer::with_point_light(gpu, &lights, &materials, &sun, &point).unwrap();
+        let renderer =
+            ShadowedRenderer::with_point_light(gpu, &lights, &materials, &sun, &point, Default::default()).unwrap();
         let Offscreen { texture: target, view } =
             Offscreen::new(device, Target { format: HDR_FORMAT, width: WIDTH, height: HEIGHT, samples: 1 });
         let depth = common::texture::depth_view(device, WIDTH, HEIGHT);

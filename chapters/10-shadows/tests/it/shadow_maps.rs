@@ -75,7 +75,7 @@ fn a_box_above_a_plane_casts_the_shadow_geometry_predicts() {
     let options = LoopOptions { culling: false, highlight: Highlight::BlinnPhong, heat_map: false };
     lights.write(&gpu, &camera, &day, &[], &Default::default(), options);
     let mut shadow = ShadowMap::new(&gpu, settings.size).unwrap();
-    let renderer = ShadowedRenderer::new(&gpu, &lights, &materials, &shadow).unwrap();
+    let renderer = ShadowedRenderer::new(&gpu, &lights, &materials, &shadow, Default::default()).unwrap();
     let instances = wgpu::util::DeviceExt::create_buffer_init(
         device,
         &wgpu::util::BufferInitDescriptor {
