@@ -61,9 +61,10 @@ pub const VIEW_TABLE: [ViewRow<Settings, CameraPreset>; 8] = [
     .antialiasing(Antialiasing::Off),
     ViewRow::mode(
         "full-detail",
-        "the same picture with every chunk in view at full detail: ten times the triangles",
+        "the same picture with every chunk in view at full detail: many times the triangles",
         Settings { lod: false, ..Settings::DEFAULT },
-    ),
+    )
+    .same_picture_as("default"),
     ViewRow::mode(
         "lod-levels",
         "a colour per level of detail, blending into the next where the mesh morphs",
