@@ -101,3 +101,24 @@ fn four_samples_follow_the_edge_more_than_twice_as_closely_as_one() {
     assert!(smoothed < aliased / 2.0, "{smoothed} against {aliased}");
     assert!(smoothed_shades >= 5, "{smoothed_shades} shades: none, a quarter, a half, three quarters, all");
 }
+
+/// The `no-aa` view is drawn with one sample whatever the run asks for,
+/// as the default view is with `--antialiasing off`; the default view with
+/// four samples is another picture.
+#[test]
+fn the_no_aa_view_draws_one_sample_whatever_the_run_asks() {
+    let gpu = Gpu::headless(Triangle::gpu_needs()).unwrap();
+    let view = |name| common::chapter::view_index::<Triangle>(name).unwrap();
+    let picture = |view, antialiasing| {
+        let request = RenderRequest { width: 96, height: 54, time: 0.0, view, camera: None, antialiasing };
+        render_image::<Triangle>(&gpu, &request).unwrap()
+    };
+    let one_sample = picture(view("default"), Antialiasing::Off);
+    // Compared with `==`: a failed `assert_eq!` would print every pixel.
+    assert!(picture(view("no-aa"), Antialiasing::Msaa) == one_sample, "no-aa, asked for four samples, drew four");
+    assert!(
+        picture(view("no-aa"), Antialiasing::Off) == one_sample,
+        "no-aa, asked for one sample, drew another picture"
+    );
+    assert!(picture(view("default"), Antialiasing::Msaa) != one_sample, "the default view with four samples drew one");
+}
