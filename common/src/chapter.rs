@@ -110,6 +110,18 @@ impl<S, P> ViewRow<S, P> {
         self
     }
 
+    /// The `no-aa` view: `twin`'s picture, whose settings are `settings`,
+    /// drawn with one sample a pixel, to compare with multisampling.
+    pub const fn no_aa(twin: &'static str, settings: S) -> Self {
+        Self::mode(
+            "no-aa",
+            "the first view drawn with one sample a pixel: its edges as they are without multisampling",
+            settings,
+        )
+        .same_picture_as(twin)
+        .antialiasing(Antialiasing::Off)
+    }
+
     /// This view smooths edges as `antialiasing` says, whatever the
     /// runner asks (see [`View::antialiasing`]).
     pub const fn antialiasing(mut self, antialiasing: Antialiasing) -> Self {

@@ -94,6 +94,8 @@ struct Running<C: Chapter> {
     antialiasing: crate::Antialiasing,
     /// The samples a pixel the chapter's pipelines were made for.
     chapter_samples: u32,
+    /// Whether the adapter can multisample the scene's format (asked once).
+    can_multisample: bool,
     /// The chapter's own flags, to make it again with.
     chapter_flags: crate::chapter::FlagValues,
     /// The surface's format without sRGB encoding, for the overlay.
@@ -382,6 +384,11 @@ impl Opening {
             overlay_format,
             antialiasing: args.antialiasing,
             chapter_samples: target.samples,
+            can_multisample: crate::multisampling::samples_for(
+                &gpu.adapter,
+                scene_format,
+                crate::multisampling::SAMPLES,
+            ) > 1,
             chapter_flags: args.chapter_flags.clone(),
             gpu,
             chapter,
@@ -663,11 +670,7 @@ impl<C: Chapter> Running<C> {
                 memory: self.memory,
                 drawn: &self.last_counts,
                 antialiasing: &mut self.antialiasing,
-                can_multisample: crate::multisampling::samples_for(
-                    &gpu.adapter,
-                    self.scene_format,
-                    crate::multisampling::SAMPLES,
-                ) > 1,
+                can_multisample: self.can_multisample,
             };
             let hidden = self.overlay_hidden;
             overlay.draw(gpu, &mut encoder, &overlay_view, size, window, |ctx| {

@@ -4,8 +4,8 @@
 
 use common::wgpu::util::DeviceExt as _;
 use common::{
-    Antialiasing, Chapter, Drawn, Frame, Gpu, Preparation, Reloadable, SceneTargets, ShaderError, Target, View,
-    ViewRow, anyhow, egui, shader, views_of, wgpu,
+    Chapter, Drawn, Frame, Gpu, Preparation, Reloadable, SceneTargets, ShaderError, Target, View, ViewRow, anyhow,
+    egui, shader, views_of, wgpu,
 };
 
 use crate::pipeline::build_pipeline;
@@ -33,13 +33,7 @@ pub enum CameraPreset {}
 /// Every view, with the settings it applies.
 pub const VIEW_TABLE: [ViewRow<Settings, CameraPreset>; 3] = [
     ViewRow::mode("default", "colours interpolated across the triangle", Settings::DEFAULT),
-    ViewRow::mode(
-        "no-aa",
-        "the default view drawn with one sample a pixel: its edges as they are without multisampling",
-        Settings::DEFAULT,
-    )
-    .same_picture_as("default")
-    .antialiasing(Antialiasing::Off),
+    ViewRow::no_aa("default", Settings::DEFAULT),
     ViewRow::mode(
         "flat",
         "interpolation off: one colour per triangle, from its first vertex",

@@ -5,8 +5,8 @@
 use common::glam::{Mat4, Vec3};
 use common::wgpu::util::DeviceExt as _;
 use common::{
-    Antialiasing, Camera, Chapter, Drawn, FlyController, Frame, Gpu, Input, Mesh, Preparation, Reloadable,
-    SceneTargets, ShaderError, Target, View, ViewRow, anyhow, egui, fullscreen, primitives, shader, views_of, wgpu,
+    Camera, Chapter, Drawn, FlyController, Frame, Gpu, Input, Mesh, Preparation, Reloadable, SceneTargets, ShaderError,
+    Target, View, ViewRow, anyhow, egui, fullscreen, primitives, shader, views_of, wgpu,
 };
 
 use crate::depth_display::{depth_group, depth_group_layout};
@@ -51,13 +51,7 @@ impl CameraPreset {
 /// Every view, with the settings it applies.
 pub const VIEW_TABLE: [ViewRow<Settings, CameraPreset>; 5] = [
     ViewRow::mode("default", "the field of primitives, lit by a fixed sun", Settings::DEFAULT),
-    ViewRow::mode(
-        "no-aa",
-        "the default view drawn with one sample a pixel: its edges as they are without multisampling",
-        Settings::DEFAULT,
-    )
-    .same_picture_as("default")
-    .antialiasing(Antialiasing::Off),
+    ViewRow::no_aa("default", Settings::DEFAULT),
     ViewRow::mode(
         "depth",
         "the depth buffer as distance: black near, white at 25 m",

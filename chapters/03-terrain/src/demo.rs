@@ -5,8 +5,8 @@
 use std::sync::Arc;
 
 use common::{
-    Antialiasing, Camera, Chapter, ChapterFlag, FlagValues, FlyController, Frame, Gpu, Input, Preparation, Reloadable,
-    SceneTargets, ShaderFile, Target, View, ViewRow, anyhow, egui, shader, views_of, wgpu,
+    Camera, Chapter, ChapterFlag, FlagValues, FlyController, Frame, Gpu, Input, Preparation, Reloadable, SceneTargets,
+    ShaderFile, Target, View, ViewRow, anyhow, egui, shader, views_of, wgpu,
 };
 
 use crate::cameras::{close_up_camera, overhead_camera, start_camera};
@@ -52,13 +52,7 @@ impl CameraPreset {
 /// Every view, with the settings it applies and, for a preset, its camera.
 pub const VIEW_TABLE: [ViewRow<Settings, CameraPreset>; 8] = [
     ViewRow::mode("default", "the terrain, coloured by height and slope, with its cliff", Settings::DEFAULT),
-    ViewRow::mode(
-        "no-aa",
-        "the default view drawn with one sample a pixel: its edges as they are without multisampling",
-        Settings::DEFAULT,
-    )
-    .same_picture_as("default")
-    .antialiasing(Antialiasing::Off),
+    ViewRow::no_aa("default", Settings::DEFAULT),
     ViewRow::mode(
         "full-detail",
         "the same picture with every chunk in view at full detail: many times the triangles",

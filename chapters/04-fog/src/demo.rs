@@ -3,8 +3,8 @@
 //! through the fog with the far plane pulled in to where it turns opaque.
 
 use common::{
-    Antialiasing, Camera, Chapter, ChapterFlag, FlagValues, FlyController, Frame, Gpu, Input, Reloadable, SceneTargets,
-    Target, View, ViewRow, anyhow, egui, views_of, wgpu,
+    Camera, Chapter, ChapterFlag, FlagValues, FlyController, Frame, Gpu, Input, Reloadable, SceneTargets, Target, View,
+    ViewRow, anyhow, egui, views_of, wgpu,
 };
 use terrain::ground::{self, Movement};
 use terrain::heightfield::{HeightField, TerrainSettings};
@@ -39,13 +39,7 @@ pub const VIEW_TABLE: [ViewRow<Settings, CameraPreset>; 5] = [
         "the terrain in a light haze, fading into the sky",
         Settings { fog: FogSettings::HAZE, full_detail: false },
     ),
-    ViewRow::mode(
-        "no-aa",
-        "the default view drawn with one sample a pixel: its edges as they are without multisampling",
-        Settings { fog: FogSettings::HAZE, full_detail: false },
-    )
-    .same_picture_as("default")
-    .antialiasing(Antialiasing::Off),
+    ViewRow::no_aa("default", Settings { fog: FogSettings::HAZE, full_detail: false }),
     ViewRow::mode(
         "no-fog",
         "the same view without fog: a hard edge where the world ends",

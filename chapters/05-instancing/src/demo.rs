@@ -4,8 +4,8 @@
 
 use common::book_figures::thousands;
 use common::{
-    Antialiasing, Camera, Chapter, ChapterFlag, FlagValues, FlyController, Frame, Gpu, Input, SceneTargets, Target,
-    View, ViewRow, anyhow, egui, views_of,
+    Camera, Chapter, ChapterFlag, FlagValues, FlyController, Frame, Gpu, Input, SceneTargets, Target, View, ViewRow,
+    anyhow, egui, views_of,
 };
 use fog::FogSettings;
 use terrain::ground::{self, Movement};
@@ -37,13 +37,7 @@ pub const VIEW_TABLE: [ViewRow<Setup, CameraPreset>; 13] = [
         "the Mars plain: terrain, fog and a million rocks over the whole map, culled and graded rock by rock on the GPU",
         Setup::DEFAULT,
     ),
-    ViewRow::mode(
-        "no-aa",
-        "the default view drawn with one sample a pixel: its edges as they are without multisampling",
-        Setup::DEFAULT,
-    )
-    .same_picture_as("default")
-    .antialiasing(Antialiasing::Off),
+    ViewRow::no_aa("default", Setup::DEFAULT),
     ViewRow::mode(
         "cpu-culling",
         "the same plain, the rocks culled by chunk group on the CPU and every one in view drawn at full detail",

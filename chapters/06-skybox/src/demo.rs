@@ -4,8 +4,8 @@
 
 use common::book_figures::thousands;
 use common::{
-    Antialiasing, Camera, Chapter, ChapterFlag, FlagValues, FlyController, Frame, Gpu, Input, SceneTargets, Target,
-    View, ViewRow, anyhow, egui, views_of,
+    Camera, Chapter, ChapterFlag, FlagValues, FlyController, Frame, Gpu, Input, SceneTargets, Target, View, ViewRow,
+    anyhow, egui, views_of,
 };
 use fog::FogSettings;
 use instancing::{DrawCalls, MarsPlain, PlainViewpoint, Setup, plain_camera};
@@ -49,13 +49,7 @@ impl CameraPreset {
 /// Every view, with the time of day it starts at and, for a preset, its camera.
 pub const VIEW_TABLE: [ViewRow<Settings, CameraPreset>; 5] = [
     ViewRow::mode("day", "mid-morning: the sun high in the east, the plain in full light", Settings::DEFAULT),
-    ViewRow::mode(
-        "no-aa",
-        "the day view drawn with one sample a pixel: its edges as they are without multisampling",
-        Settings::DEFAULT,
-    )
-    .same_picture_as("day")
-    .antialiasing(Antialiasing::Off),
+    ViewRow::no_aa("day", Settings::DEFAULT),
     ViewRow::preset(
         "dusk",
         "facing west as the sun sets in its blue Martian halo",

@@ -10,8 +10,8 @@ use common::book_figures::thousands;
 use common::chapter::scene_pass;
 use common::glam::{Vec2, Vec3, Vec4};
 use common::{
-    Antialiasing, Camera, Chapter, ChapterFlag, Drawn, FlagValues, FlyController, Frame, Gpu, Input, Orbit, PassTimer,
-    SceneTargets, Target, View, ViewRow, anyhow, egui, views_of, wgpu,
+    Camera, Chapter, ChapterFlag, Drawn, FlagValues, FlyController, Frame, Gpu, Input, Orbit, PassTimer, SceneTargets,
+    Target, View, ViewRow, anyhow, egui, views_of, wgpu,
 };
 use fog::FogSettings;
 use instancing::{MarsPlain, PlainViewpoint, RocksDrawn, Setup, plain_camera};
@@ -74,13 +74,7 @@ pub const VIEW_TABLE: [ViewRow<Settings, CameraPreset>; 8] = [
         "the lake: reflection and refraction mixed by Fresnel, ripples and waves",
         Settings::DEFAULT,
     ),
-    ViewRow::mode(
-        "no-aa",
-        "the default view drawn with one sample a pixel: its edges as they are without multisampling",
-        Settings::DEFAULT,
-    )
-    .same_picture_as("default")
-    .antialiasing(Antialiasing::Off),
+    ViewRow::no_aa("default", Settings::DEFAULT),
     ViewRow::mode(
         "reflection",
         "the reflection picture, full screen: the scene above the water, from below it",
