@@ -34,6 +34,16 @@ fn parse_camera(text: &str) -> Result<CameraPlace, String> {
     text.parse()
 }
 
+/// `--antialiasing`'s values for a chapter with or without a post chain,
+/// so that `post` in a chapter without one is an error listing the others.
+fn antialiasing_parser(post_chain: bool) -> impl clap::builder::TypedValueParser<Value = Antialiasing> {
+    use clap::ValueEnum as _;
+    use clap::builder::TypedValueParser as _;
+    let offered: Vec<_> = Antialiasing::offered(post_chain).filter_map(|a| a.to_possible_value()).collect();
+    clap::builder::PossibleValuesParser::new(offered)
+        .map(|name| Antialiasing::from_str(&name, true).expect("a name the parser offered"))
+}
+
 /// Flags shared by every chapter (`--help` prints them).
 #[derive(Parser, Debug, Clone)]
 pub struct Args {
@@ -49,7 +59,8 @@ pub struct Args {
     #[arg(long, value_name = "SECONDS", value_parser = parse_time, allow_negative_numbers = true)]
     pub time: Option<f32>,
 
-    /// How edges are smoothed: off, or msaa (4 samples a pixel where the adapter can).
+    /// How edges are smoothed: off, msaa (4 samples a pixel where the adapter can), and in chapters
+    /// 08 to 11 post (FXAA over the finished picture) or both.
     #[arg(long, value_enum, value_name = "HOW", default_value = "msaa")]
     pub antialiasing: Antialiasing,
 
@@ -110,7 +121,8 @@ impl Args {
         let mut command = Self::command()
             .name(C::NAME)
             .about(format!("{}: opens a window; with --screenshot or --bench, renders headless.", C::TITLE))
-            .mut_arg("view", |arg| arg.value_parser(clap::builder::PossibleValuesParser::new(names)));
+            .mut_arg("view", |arg| arg.value_parser(clap::builder::PossibleValuesParser::new(names)))
+            .mut_arg("antialiasing", |arg| arg.value_parser(antialiasing_parser(C::POST_ANTIALIASING)));
         for flag in C::FLAGS {
             let arg = clap::Arg::new(flag.name).long(flag.name).help(flag.help);
             command = command.arg(if flag.is_switch() {

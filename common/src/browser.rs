@@ -134,7 +134,7 @@ async fn still_picture<C: Chapter>(args: &Args) -> anyhow::Result<()> {
 
     let view = args.view_index::<C>();
     let time = args.time.unwrap_or(C::SNAPSHOT_TIME);
-    let target = Target { format: scene_format, width, height, samples: args.antialiasing.samples() };
+    let target = Target { format: scene_format, width, height, samples: C::VIEWS[view].samples(args.antialiasing) };
     let mut chapter = crate::chapter::create_prepared::<C>(&gpu, target, prepared, &args.chapter_flags)?;
     crate::chapter::start(&mut chapter, view, args.camera)?;
     let frame = match surface.get_current_texture() {
@@ -143,7 +143,7 @@ async fn still_picture<C: Chapter>(args: &Args) -> anyhow::Result<()> {
     };
     let frame_view =
         frame.texture.create_view(&wgpu::TextureViewDescriptor { format: Some(scene_format), ..Default::default() });
-    crate::headless::draw_frame(&gpu, &mut chapter, &frame_view, time, view, &PassTimer::off());
+    crate::headless::draw_frame(&gpu, &mut chapter, &frame_view, (time, view), args.antialiasing, &PassTimer::off());
     gpu.queue.present(frame);
     log::info!("{} {} at {time} s on {}", C::NAME, C::VIEWS[view].name, gpu.describe());
     set_state("adapter", &gpu.describe());

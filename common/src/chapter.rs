@@ -67,9 +67,15 @@ impl View {
     /// `asked`. A runner makes the chapter again when a newly chosen view
     /// needs another count: pipelines are built for one.
     pub const fn samples(&self, asked: Antialiasing) -> u32 {
+        self.smoothing(asked).samples()
+    }
+
+    /// How this view smooths edges where the runner asks for `asked`: its
+    /// own setting if it has one, else `asked`.
+    pub const fn smoothing(&self, asked: Antialiasing) -> Antialiasing {
         match self.antialiasing {
-            Some(own) => own.samples(),
-            None => asked.samples(),
+            Some(own) => own,
+            None => asked,
         }
     }
 }
@@ -209,6 +215,11 @@ pub struct Frame<'a> {
     /// by. The overlay shows it and `--bench` prints it. A chapter that
     /// counts nothing shows no counts.
     pub drawn: &'a DrawCounts,
+    /// How this frame's edges are smoothed: the view's own setting, or the
+    /// run's. Its samples were fixed when the chapter was made
+    /// ([`Target::samples`]); the post-process pass is decided frame by
+    /// frame, by chapters with [`Chapter::POST_ANTIALIASING`].
+    pub antialiasing: Antialiasing,
 }
 
 impl Frame<'_> {
@@ -294,6 +305,11 @@ pub trait Chapter: Sized + 'static {
     /// The WGSL file (under `shaders/`) the shader panel opens on, where
     /// `shaders/NAME/NAME.wgsl` or `shaders/NAME/scene.wgsl` is not it.
     const MAIN_SHADER: Option<&'static str> = None;
+    /// True where the chapter finishes its frames with a post-process
+    /// anti-aliasing pass when [`Frame::antialiasing`] asks for one
+    /// (chapters 08 to 11, through chapter 08's post chain): `--antialiasing`
+    /// and the overlay then offer `post` and `both`.
+    const POST_ANTIALIASING: bool = false;
     /// Chapter-specific keys for the F1 help, as (key, what it does).
     const KEYS: &'static [(&'static str, &'static str)] = &[];
     /// Flags of this chapter's own; their values reach [`Chapter::apply_flags`].

@@ -30,7 +30,7 @@ impl RenderRequest {
     /// The offscreen target for this request: its size, and the samples a
     /// pixel its view is drawn with (its own, or `antialiasing`'s).
     pub fn target<C: Chapter>(&self) -> Target {
-        let samples = C::VIEWS.get(self.view).map_or(self.antialiasing.samples(), |v| v.samples(self.antialiasing));
+        let samples = C::VIEWS.get(self.view).map_or(self.antialiasing, |v| v.smoothing(self.antialiasing)).samples();
         Target { format: OFFSCREEN_FORMAT, width: self.width, height: self.height, samples }
     }
 }
@@ -173,19 +173,21 @@ pub fn read_texture(gpu: &Gpu, texture: &wgpu::Texture) -> anyhow::Result<image:
 }
 // ANCHOR_END: readback
 
-/// Records and submits one frame of `chapter` into `target`; returns what
-/// each pass drew, as the chapter counted it.
+/// Records and submits one frame of `chapter` into `target`, its edges
+/// smoothed as the view says or else as `asked`; returns what each pass
+/// drew, as the chapter counted it.
 pub fn draw_frame<C: Chapter>(
     gpu: &Gpu,
     chapter: &mut C,
     target: &wgpu::TextureView,
-    time: f32,
-    view: usize,
+    (time, view): (f32, usize),
+    asked: Antialiasing,
     timer: &PassTimer,
 ) -> Vec<PassCount> {
     let mut encoder = gpu.device.create_command_encoder(&wgpu::CommandEncoderDescriptor { label: Some(C::NAME) });
     let drawn = DrawCounts::new();
-    chapter.render(gpu, &mut Frame { encoder: &mut encoder, target, time, view, timer, drawn: &drawn });
+    let antialiasing = C::VIEWS.get(view).map_or(asked, |v| v.smoothing(asked));
+    chapter.render(gpu, &mut Frame { encoder: &mut encoder, target, time, view, timer, drawn: &drawn, antialiasing });
     timer.resolve(&mut encoder);
     gpu.queue.submit([encoder.finish()]);
     drawn.take()
@@ -196,11 +198,11 @@ pub fn capture<C: Chapter>(
     gpu: &Gpu,
     chapter: &mut C,
     target: Target,
-    time: f32,
-    view: usize,
+    (time, view): (f32, usize),
+    asked: Antialiasing,
 ) -> anyhow::Result<image::RgbaImage> {
     let offscreen = Offscreen::new(&gpu.device, target);
-    draw_frame(gpu, chapter, &offscreen.view, time, view, &PassTimer::off());
+    draw_frame(gpu, chapter, &offscreen.view, (time, view), asked, &PassTimer::off());
     read_texture(gpu, &offscreen.texture)
 }
 
@@ -226,7 +228,7 @@ pub fn render_image_with<C: Chapter>(
 ) -> anyhow::Result<image::RgbaImage> {
     let target = request.target::<C>();
     let mut chapter = started::<C>(gpu, request, flags)?;
-    capture(gpu, &mut chapter, target, request.time, request.view)
+    capture(gpu, &mut chapter, target, (request.time, request.view), request.antialiasing)
 }
 
 /// Frame-time figures for one chapter view.
@@ -284,7 +286,8 @@ pub fn bench<C: Chapter>(
             memory[k] = MemoryUse::now(&gpu.device);
         }
         let start = Instant::now();
-        drawn = draw_frame(gpu, &mut chapter, &offscreen.view, request.time, request.view, &timer);
+        drawn =
+            draw_frame(gpu, &mut chapter, &offscreen.view, (request.time, request.view), request.antialiasing, &timer);
         gpu.device.poll(wgpu::PollType::wait_indefinitely()).context("waiting for the frame")?;
         let elapsed = start.elapsed().as_secs_f64() * 1e3;
         let timed = timer.read(gpu);
@@ -352,7 +355,14 @@ pub fn edit_to_frame<C: Chapter>(
         if let Some(error) = editor.error() {
             bail!("editing {file} failed: {}", error.message);
         }
-        draw_frame(gpu, &mut chapter, &offscreen.view, request.time, request.view, &PassTimer::off());
+        draw_frame(
+            gpu,
+            &mut chapter,
+            &offscreen.view,
+            (request.time, request.view),
+            request.antialiasing,
+            &PassTimer::off(),
+        );
         gpu.device.poll(wgpu::PollType::wait_indefinitely()).context("waiting for the frame")?;
         samples.push(start.elapsed().as_secs_f64() * 1e3);
     }

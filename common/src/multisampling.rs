@@ -16,6 +16,10 @@ use crate::{Gpu, Target};
 pub const SAMPLES: u32 = 4;
 
 /// How edges are smoothed: `--antialiasing`, and the overlay's switch.
+/// Multisampling is chapter 02's; the post-process pass (FXAA) is chapter
+/// 08's, run by the post chain that chapters 08 to 11 share, so only they
+/// offer [`Antialiasing::Post`] and [`Antialiasing::Both`]
+/// ([`crate::Chapter::POST_ANTIALIASING`]).
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq, clap::ValueEnum)]
 pub enum Antialiasing {
     /// One sample a pixel: every edge a staircase.
@@ -23,15 +27,44 @@ pub enum Antialiasing {
     /// [`SAMPLES`] samples a pixel, resolved at the end of the scene pass.
     #[default]
     Msaa,
+    /// One sample a pixel, then a pass over the finished picture that
+    /// finds its edges and blends across them (FXAA, chapter 08).
+    Post,
+    /// Multisampling, then the post-process pass as well.
+    Both,
 }
 
 impl Antialiasing {
+    /// Every setting, in the overlay's order.
+    pub const ALL: [Self; 4] = [Self::Off, Self::Msaa, Self::Post, Self::Both];
+
     /// The samples a pixel this asks for.
     pub const fn samples(self) -> u32 {
         match self {
-            Self::Off => 1,
-            Self::Msaa => SAMPLES,
+            Self::Off | Self::Post => 1,
+            Self::Msaa | Self::Both => SAMPLES,
         }
+    }
+
+    /// Whether the finished picture goes through the post-process pass.
+    pub const fn post(self) -> bool {
+        matches!(self, Self::Post | Self::Both)
+    }
+
+    /// What the overlay's switch calls it.
+    pub const fn label(self) -> &'static str {
+        match self {
+            Self::Off => "1 sample",
+            Self::Msaa => "MSAA 4×",
+            Self::Post => "FXAA",
+            Self::Both => "both",
+        }
+    }
+
+    /// The settings a chapter offers: all four with a post chain, else
+    /// the two without the post-process pass.
+    pub fn offered(post_chain: bool) -> impl Iterator<Item = Self> {
+        Self::ALL.into_iter().filter(move |a| post_chain || !a.post())
     }
 }
 

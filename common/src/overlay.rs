@@ -199,22 +199,28 @@ pub struct Panel<'a, C: Chapter> {
 
 impl<C: Chapter> Panel<'_, C> {
     /// The anti-aliasing switch: one sample a pixel or multisampling
-    /// (chapter 02). Switching makes the chapter again, since pipelines
-    /// are built for one number of samples.
+    /// (chapter 02), and in chapters with a post chain the post-process
+    /// pass, alone or after multisampling (chapter 08). Switching the
+    /// samples makes the chapter again, since pipelines are built for one
+    /// number of samples; switching the post pass does not.
     fn antialiasing_switch(&mut self, ui: &mut egui::Ui) {
-        use crate::Antialiasing;
         let view = C::VIEWS[*self.view];
         ui.horizontal(|ui| {
             ui.label("edges:");
             ui.add_enabled_ui(view.antialiasing.is_none(), |ui| {
-                let about = "switching makes the chapter again: its own controls return to where they start";
-                ui.radio_value(self.antialiasing, Antialiasing::Off, "1 sample").on_hover_text(about);
-                ui.radio_value(self.antialiasing, Antialiasing::Msaa, "MSAA 4×").on_hover_text(about);
+                for choice in crate::Antialiasing::offered(C::POST_ANTIALIASING) {
+                    let about = if choice.samples() == self.antialiasing.samples() {
+                        "the post-process pass switches from one frame to the next"
+                    } else {
+                        "another number of samples makes the chapter again: its own controls return to where they start"
+                    };
+                    ui.radio_value(self.antialiasing, choice, choice.label()).on_hover_text(about);
+                }
             });
         });
         if let Some(own) = view.antialiasing {
-            ui.small(format!("this view draws with {} sample(s) a pixel, whatever the switch says", own.samples()));
-        } else if *self.antialiasing == Antialiasing::Msaa && !self.can_multisample {
+            ui.small(format!("this view draws as \"{}\" says, whatever the switch says", own.label()));
+        } else if self.antialiasing.samples() > 1 && !self.can_multisample {
             ui.small("this adapter cannot multisample the picture's format: one sample a pixel");
         }
     }

@@ -541,8 +541,9 @@ impl<C: Chapter> Running<C> {
         }
         let path = PathBuf::from(format!("{}-{}-{:.2}s.png", C::NAME, C::VIEWS[self.view].name, self.time));
         let target = self.target();
-        let result = crate::headless::capture(&self.gpu, &mut self.chapter, target, self.time, self.view)
-            .and_then(|image| image.save(&path).with_context(|| format!("cannot write {}", path.display())));
+        let result =
+            crate::headless::capture(&self.gpu, &mut self.chapter, target, (self.time, self.view), self.antialiasing)
+                .and_then(|image| image.save(&path).with_context(|| format!("cannot write {}", path.display())));
         self.status = match result {
             Ok(()) => format!("saved {}", path.display()),
             Err(error) => format!("screenshot failed: {error:#}"),
@@ -646,6 +647,7 @@ impl<C: Chapter> Running<C> {
                 view: self.view,
                 timer: &timer,
                 drawn: &counts,
+                antialiasing: C::VIEWS[self.view].smoothing(self.antialiasing),
             },
         );
         self.last_counts = counts.take();

@@ -261,7 +261,8 @@ impl<C: Chapter> AnyChapter for Instance<C> {
         debug_assert!(view < C::VIEWS.len());
         let offscreen = Offscreen::new(&gpu.device, self.target);
         let timer = PassTimer::off();
-        let counted = draw_frame(gpu, &mut self.chapter, &offscreen.view, time, view, &timer);
+        let counted =
+            draw_frame(gpu, &mut self.chapter, &offscreen.view, (time, view), common::Antialiasing::default(), &timer);
         let mut passes = timer.take_labels();
         passes.extend(timer.take_cpu().into_iter().map(|(label, _)| label));
         Ok((read_texture(gpu, &offscreen.texture)?, passes, counted))

@@ -588,7 +588,8 @@ mod tests {
         target: Target,
     ) {
         let view = view_index::<WaterChapter>("textured-waves").unwrap();
-        let picture = |chapter: &mut WaterChapter| capture(gpu, chapter, target, 0.0, view).unwrap();
+        let picture =
+            |chapter: &mut WaterChapter| capture(gpu, chapter, target, (0.0, view), Default::default()).unwrap();
         let changed = |a: &common::image::RgbaImage, b: &common::image::RgbaImage| {
             a.pixels().zip(b.pixels()).filter(|(p, q)| p != q).count()
         };

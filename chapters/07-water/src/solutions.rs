@@ -69,7 +69,7 @@ fn pass_time_saved(resolution: f32) -> f32 {
 fn lake_at(gpu: &Gpu, chapter: &mut WaterChapter, resolution: f32) -> common::image::RgbaImage {
     let target = Target { format: OFFSCREEN_FORMAT, width: 320, height: 180, samples: 1 };
     chapter.settings.water.resolution = resolution;
-    capture(gpu, chapter, target, 0.0, 0).unwrap()
+    capture(gpu, chapter, target, (0.0, 0), Default::default()).unwrap()
 }
 // ANCHOR_END: quarter
 

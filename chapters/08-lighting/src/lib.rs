@@ -24,7 +24,9 @@ pub mod clusters;
 pub mod scene_lights;
 // The bright light, blurred wide.
 pub mod bloom;
-// From the HDR picture to the screen: HDR target, bloom, tone map.
+// Smoothing the finished picture's edges: FXAA.
+pub mod fxaa;
+// From the HDR picture to the screen: HDR target, bloom, tone map, FXAA.
 pub mod post;
 // The sky over the city.
 pub mod city_sky;
@@ -44,5 +46,6 @@ pub use demo::{
     aerial_camera, beacons, billboard, billboard_camera, drone_camera, follow_camera, frame_lights, hill_camera,
     landscape_camera, lollipop_camera, rooftop_camera, skyline_camera, sphere_camera, street_camera,
 };
+pub use fxaa::Fxaa;
 pub use post::{HDR_FORMAT, HdrTarget, PostChain, PostOutput, PostSettings, ToneMap};
 pub use scene_lights::{Highlight, LoopOptions, MAX_LIGHTS, SceneLights};

@@ -1,17 +1,21 @@
 //! Post-processing: from the HDR picture a scene is drawn into to the frame
-//! on the screen. One piece, [`PostChain`], owns the three steps: the
+//! on the screen. One piece, [`PostChain`], owns the steps: the
 //! [`HdrTarget`] (colour in 16-bit floats, drawn with several samples a
 //! pixel and resolved, and depth), the [`Bloom`] chain
-//! over its bright parts, and the [`ToneMap`] that adds the bloom, exposes
-//! and tone-maps into the target. Made with the target, resized with it;
-//! each frame the scene is drawn into [`PostChain::hdr`] and
+//! over its bright parts, the [`ToneMap`] that adds the bloom, exposes
+//! and tone-maps, and, when the frame asks for it, the [`Fxaa`] pass that
+//! smooths the finished picture's edges. Made with the target, resized
+//! with it; each frame the scene is drawn into [`PostChain::hdr`] and
 //! [`PostChain::finish`] turns it into what [`PostSettings`] names.
 //! Chapters 08 to 11 finish their frames with it.
+
+use std::sync::OnceLock;
 
 use common::chapter::{FILTERABLE, sampler_entry, texture_entry, uniform_entry};
 use common::{Drawn, Frame, Gpu, Reloadable, SceneTargets, ShaderError, Target, fullscreen, shader, wgpu};
 
 use crate::bloom::{Bloom, BloomSettings};
+use crate::fxaa::Fxaa;
 
 /// The HDR picture the scene is drawn into: its samples and depth buffer
 /// ([`SceneTargets`], four samples a pixel unless the target asks for one
@@ -113,13 +117,19 @@ pub struct PostSettings {
 // ANCHOR_END: output
 
 // ANCHOR: post
-/// The HDR target, the bloom over it and the tone map into the frame's
-/// target, for pictures of one size. In: the scene, drawn into
-/// [`PostChain::hdr`]; [`PostSettings`]. Out: the frame in `frame.target`.
+/// The HDR target, the bloom over it, the tone map and the FXAA pass into
+/// the frame's target, for pictures of one size. In: the scene, drawn into
+/// [`PostChain::hdr`]; [`PostSettings`]; `frame.antialiasing`. Out: the
+/// frame in `frame.target`.
 pub struct PostChain {
     hdr: HdrTarget,
     bloom: Bloom,
     tone_map: ToneMap,
+    fxaa: Fxaa,
+    target: Target,
+    /// The tone-mapped picture FXAA reads, made the first time a frame
+    /// asks for FXAA (most frames do not), and again after a resize.
+    tone_mapped: OnceLock<(wgpu::TextureView, wgpu::BindGroup)>,
 }
 
 impl PostChain {
@@ -131,7 +141,8 @@ impl PostChain {
         let hdr = HdrTarget::new(gpu, target);
         let bloom = Bloom::new(gpu, target.width, target.height)?;
         let tone_map = ToneMap::new(gpu, target.format, &hdr.colour, bloom.output())?;
-        Ok(Self { hdr, bloom, tone_map })
+        let fxaa = Fxaa::new(gpu, target.format)?;
+        Ok(Self { hdr, bloom, tone_map, fxaa, target, tone_mapped: OnceLock::new() })
     }
 
     /// Makes the pictures again for `target`'s size (its format stays the
@@ -142,6 +153,8 @@ impl PostChain {
         self.hdr = HdrTarget::new(gpu, Target { samples, ..target });
         self.bloom.resize(&gpu.device, target.width, target.height);
         self.tone_map.set_inputs(&gpu.device, &self.hdr.colour, self.bloom.output());
+        self.target = Target { samples, ..target };
+        self.tone_mapped = OnceLock::new();
     }
 
     /// Where the scene is drawn: the HDR samples and depth buffer, and the
@@ -157,14 +170,46 @@ impl PostChain {
 
     /// Records the end of the frame: the bloom over the HDR picture (if
     /// `settings` asks for it and the output shows it), then the tone map
-    /// into `frame.target`; both counted in `frame.drawn`.
+    /// into `frame.target`, or, when `frame.antialiasing` asks for the
+    /// post-process pass, into a picture of its own that FXAA reads and
+    /// smooths into `frame.target`; each counted in `frame.drawn`. A raw
+    /// HDR output is data, not a picture, and FXAA leaves it alone.
     pub fn finish(&self, gpu: &Gpu, frame: &mut Frame, settings: &PostSettings) {
         let bloom = settings.bloom.filter(|_| settings.output != PostOutput::RawHdr);
         if let Some(bloom) = &bloom {
             frame.drawn.extend([self.bloom.render(gpu, frame.encoder, frame.timer, &self.hdr.colour, bloom)]);
         }
         let strength = bloom.map_or(0.0, |b| b.strength);
-        self.tone_map.draw(gpu, frame, settings.exposure, strength, settings.output);
+        if !frame.antialiasing.post() || settings.output == PostOutput::RawHdr {
+            let target = frame.target;
+            self.tone_map.draw(gpu, frame, target, settings.exposure, strength, settings.output);
+            return;
+        }
+        let (tone_mapped, fxaa_input) = self.tone_mapped.get_or_init(|| {
+            let picture = self.picture(gpu, "tone mapped");
+            let input = self.fxaa.input(&gpu.device, &picture);
+            (picture, input)
+        });
+        self.tone_map.draw(gpu, frame, tone_mapped, settings.exposure, strength, settings.output);
+        self.fxaa.draw(frame, fxaa_input);
+    }
+
+    /// A single-sampled picture of the target's size and format that a
+    /// pass can draw into and the next read.
+    fn picture(&self, gpu: &Gpu, label: &str) -> wgpu::TextureView {
+        let Target { format, width, height, .. } = self.target;
+        gpu.device
+            .create_texture(&wgpu::TextureDescriptor {
+                label: Some(label),
+                size: wgpu::Extent3d { width: width.max(1), height: height.max(1), depth_or_array_layers: 1 },
+                mip_level_count: 1,
+                sample_count: 1,
+                dimension: wgpu::TextureDimension::D2,
+                format,
+                usage: wgpu::TextureUsages::RENDER_ATTACHMENT | wgpu::TextureUsages::TEXTURE_BINDING,
+                view_formats: &[],
+            })
+            .create_view(&Default::default())
     }
 }
 // ANCHOR_END: post
@@ -280,13 +325,21 @@ impl ToneMap {
         self.group = Self::group(device, &self.layout, &self.sampler, &self.uniform, hdr, bloom);
     }
 
-    /// Draws `output` into `frame.target`, the bloom weighted by
-    /// `bloom_strength` and the light scaled by `exposure`; counted in
-    /// `frame.drawn` as "tone map".
-    pub fn draw(&self, gpu: &Gpu, frame: &mut Frame, exposure: f32, bloom_strength: f32, output: PostOutput) {
+    /// Draws `output` into `into` (a picture of the format the tone map was
+    /// made for), the bloom weighted by `bloom_strength` and the light
+    /// scaled by `exposure`; counted in `frame.drawn` as "tone map".
+    pub fn draw(
+        &self,
+        gpu: &Gpu,
+        frame: &mut Frame,
+        into: &wgpu::TextureView,
+        exposure: f32,
+        bloom_strength: f32,
+        output: PostOutput,
+    ) {
         let uniform = CompositeUniform { exposure, bloom_strength, mode: output.shader_mode(), _padding: 0 };
         gpu.queue.write_buffer(&self.uniform, 0, bytemuck::bytes_of(&uniform));
-        let mut pass = fullscreen::pass(frame.encoder, frame.timer, "tone map", frame.target, None);
+        let mut pass = fullscreen::pass(frame.encoder, frame.timer, "tone map", into, None);
         pass.set_pipeline(&self.pipeline.get());
         pass.set_bind_group(0, &self.group, &[]);
         pass.draw(0..3, 0..1);

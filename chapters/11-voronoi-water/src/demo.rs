@@ -371,6 +371,7 @@ impl Chapter for VoronoiWaterChapter {
     const BROWSER_TOLERANCE: common::Tolerance = common::Tolerance { mean: 0.042, outliers: 0.002, patch: 0.25 };
     const TITLE: &'static str = "11 · Voronoi water";
     const VIEWS: &'static [View] = &views_of(&VIEW_TABLE);
+    const POST_ANTIALIASING: bool = true;
     const SNAPSHOT_TIME: f32 = SNAPSHOT_TIME;
     const BENCH_FRAMES: u32 = 10;
     const BENCH_BASELINE: Option<&'static str> = Some("cones-64-512");

@@ -30,7 +30,8 @@ fn graded_rocks_look_like_every_rock_at_full_detail() {
     let mut chapter: InstancingChapter = common::chapter::create(&gpu, target, &Default::default()).unwrap();
     let mut picture = |culling| {
         chapter.setup = Setup { culling, ..Setup::DEFAULT };
-        let picture = capture(&gpu, &mut chapter, target, InstancingChapter::SNAPSHOT_TIME, 0).unwrap();
+        let picture =
+            capture(&gpu, &mut chapter, target, (InstancingChapter::SNAPSHOT_TIME, 0), Default::default()).unwrap();
         (picture, chapter.draw_calls.rocks)
     };
     let ((graded, calls), (full, _), (by_chunk, runs)) =
@@ -62,7 +63,7 @@ fn the_lake_with_graded_rocks_looks_like_the_lake_with_every_rock_at_full_detail
     let mut chapter: WaterChapter = common::chapter::create(&gpu, target, &Default::default()).unwrap();
     let mut picture = |culling| {
         chapter.rocks = Setup { culling, ..Setup::DEFAULT };
-        capture(&gpu, &mut chapter, target, WaterChapter::SNAPSHOT_TIME, 0).unwrap()
+        capture(&gpu, &mut chapter, target, (WaterChapter::SNAPSHOT_TIME, 0), Default::default()).unwrap()
     };
     // Graded last, so that the counts below are the graded frame's.
     let (full, graded) = (picture(Culling::PerRockFullDetail), picture(Culling::PerRock));
@@ -98,7 +99,8 @@ fn culling_leaves_out_no_rock_a_pixel_shows() {
     let mut chapter: InstancingChapter = common::chapter::create(&gpu, target, &Default::default()).unwrap();
     let mut picture = |culling| {
         chapter.setup = Setup { culling, ..Setup::DEFAULT };
-        let picture = capture(&gpu, &mut chapter, target, InstancingChapter::SNAPSHOT_TIME, 0).unwrap();
+        let picture =
+            capture(&gpu, &mut chapter, target, (InstancingChapter::SNAPSHOT_TIME, 0), Default::default()).unwrap();
         (picture, chapter.stats(&gpu))
     };
     let (all, all_stats) = picture(Culling::Off);

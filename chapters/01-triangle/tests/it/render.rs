@@ -75,7 +75,7 @@ fn one_frame_draws_one_triangle() {
     let mut chapter = common::chapter::create::<Triangle>(&gpu, target, &Default::default()).unwrap();
     let offscreen = Offscreen::new(&gpu.device, target);
     let timer = PassTimer::off();
-    let drawn = draw_frame(&gpu, &mut chapter, &offscreen.view, 0.0, 0, &timer);
+    let drawn = draw_frame(&gpu, &mut chapter, &offscreen.view, (0.0, 0), Default::default(), &timer);
     let triangles = (triangle::vertex::TRIANGLE.len() / 3) as u64;
     assert_eq!(triangles, 1);
     assert_eq!(drawn, [PassCount { pass: "triangle", drawn: Drawn { draws: 1, triangles } }]);

@@ -145,7 +145,7 @@ fn exercise_3_clip_position_holds_pixel_coordinates() {
     assert!(original.contains(FS_MAIN), "triangle.wgsl changed: update FS_MAIN");
     std::fs::write(root.join("triangle/triangle.wgsl"), original.replacen(FS_MAIN, BY_POSITION, 1)).unwrap();
     assert_eq!(gpu.reload_shaders(&["triangle/triangle.wgsl"]), Ok(1));
-    let picture = capture(&gpu, &mut chapter, target, 0.0, 0).unwrap();
+    let picture = capture(&gpu, &mut chapter, target, (0.0, 0), Default::default()).unwrap();
 
     // Red is x / 1280 and green y / 720: read the pixel position back from
     // the colour near each corner. Clip (0, 0.7) is pixel (640, 108);
@@ -179,7 +179,7 @@ fn exercise_4_a_typo_is_reported_at_its_line_and_the_last_good_pipeline_draws_on
     gpu.read_shaders_from(Some(root.clone()));
     let target = Target { format: OFFSCREEN_FORMAT, width: 64, height: 64, samples: 1 };
     let mut chapter = Triangle::new(&gpu, target, ()).unwrap();
-    let good = capture(&gpu, &mut chapter, target, 0.0, 0).unwrap();
+    let good = capture(&gpu, &mut chapter, target, (0.0, 0), Default::default()).unwrap();
 
     let broken = original.replacen(FS_MAIN, TYPO, 1);
     std::fs::write(root.join("triangle/triangle.wgsl"), &broken).unwrap();
@@ -199,7 +199,7 @@ fn exercise_4_a_typo_is_reported_at_its_line_and_the_last_good_pipeline_draws_on
         assert!(page.contains(&quoted), "page 01 should quote `{quoted}`, as naga reports it");
     }
     // Meanwhile the window draws with the last pipeline that built.
-    assert_eq!(capture(&gpu, &mut chapter, target, 0.0, 0).unwrap(), good);
+    assert_eq!(capture(&gpu, &mut chapter, target, (0.0, 0), Default::default()).unwrap(), good);
 
     // The fix reloads.
     std::fs::write(root.join("triangle/triangle.wgsl"), &original).unwrap();

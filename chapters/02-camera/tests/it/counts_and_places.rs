@@ -32,7 +32,7 @@ fn the_scene_pass_counts_every_mesh_it_draws() {
         let view = view_index::<CameraChapter>(name).unwrap();
         chapter.select_view(view);
         let timer = PassTimer::off();
-        let drawn = draw_frame(&gpu, &mut chapter, &offscreen.view, 1.0, view, &timer);
+        let drawn = draw_frame(&gpu, &mut chapter, &offscreen.view, (1.0, view), Default::default(), &timer);
         let mut want = vec![PassCount { pass: "scene", drawn: expected }];
         want.extend(extra.map(|drawn| PassCount { pass: "depth view", drawn }));
         assert_eq!(drawn, want, "{name}");

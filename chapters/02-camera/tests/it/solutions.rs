@@ -153,7 +153,7 @@ fn exercise_3_the_model_matrix_tilts_the_stretched_rows_normals_by_up_to_43_degr
     let render = |gpu: &Gpu| {
         let mut chapter: CameraChapter = common::chapter::create(gpu, target, &Default::default()).unwrap();
         chapter.select_view(normals);
-        capture(gpu, &mut chapter, target, CameraChapter::SNAPSHOT_TIME, normals).unwrap()
+        capture(gpu, &mut chapter, target, (CameraChapter::SNAPSHOT_TIME, normals), Default::default()).unwrap()
     };
     let right = render(&gpu);
     let root = common::shader::scratch_copy("camera-exercise-3").unwrap();

@@ -25,7 +25,7 @@ fn exercise_1_one_call_per_rock_draws_the_same_picture() {
     let mut picture = |view: &str| {
         let view = common::chapter::view_index::<InstancingChapter>(view).unwrap();
         chapter.select_view(view);
-        let picture = capture(gpu, &mut chapter, target, 0.0, view).unwrap();
+        let picture = capture(gpu, &mut chapter, target, (0.0, view), Default::default()).unwrap();
         (picture, chapter.draw_calls.rocks)
     };
     // The two bench views: 10,000 rocks without the terrain, one call each

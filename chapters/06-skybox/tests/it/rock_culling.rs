@@ -24,7 +24,7 @@ use terrain::heightfield::{CHUNK_QUADS, TerrainSettings};
 fn picture<C: Chapter>(gpu: &common::Gpu, chapter: &mut C, target: Target, view: &str) -> common::image::RgbaImage {
     let view = common::chapter::view_index::<C>(view).unwrap();
     chapter.select_view(view);
-    capture(gpu, chapter, target, 0.0, view).unwrap()
+    capture(gpu, chapter, target, (0.0, view), Default::default()).unwrap()
 }
 
 #[test]
@@ -354,7 +354,7 @@ fn the_default_views_of_05_and_06_draw_a_tenth_of_the_rock_triangles_culling_by_
         chapter.select_view(view);
         // The rocks alone: the terrain changes no count and costs lavapipe seconds.
         chapter.setup.terrain = false;
-        capture(gpu, &mut chapter, target, 0.0, view).unwrap();
+        capture(gpu, &mut chapter, target, (0.0, view), Default::default()).unwrap();
         let line = chapter.stats(gpu);
         let drawn = chapter.plain.rocks_drawn_now(gpu, chapter.viewpoint(), chapter.setup);
         assert_eq!(rock_triangles(&line), drawn.triangles, "the stats line gives the count: `{line}`");

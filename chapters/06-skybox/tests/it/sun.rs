@@ -17,7 +17,7 @@ fn the_sun_is_drawn_where_the_light_comes_from() {
         let light = sun_at(phase).direction;
         let eye = chapter.camera.position;
         chapter.camera = Camera { far: 3000.0, ..Camera::looking_at(eye, eye + light, target.aspect()) };
-        let image = capture(gpu, &mut chapter, target, 0.0, 0).unwrap();
+        let image = capture(gpu, &mut chapter, target, (0.0, 0), Default::default()).unwrap();
         let (x, y, _) = image
             .enumerate_pixels()
             .max_by_key(|(_, _, p)| u32::from(p[0]) + u32::from(p[1]) + u32::from(p[2]))

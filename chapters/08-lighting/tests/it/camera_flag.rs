@@ -24,11 +24,11 @@ fn a_placed_camera_stops_riding() {
     let time = LightingChapter::SNAPSHOT_TIME;
 
     let mut riding = started::<LightingChapter>(&gpu, &request(None), &Default::default()).unwrap();
-    capture(&gpu, &mut riding, target, time, view).unwrap();
+    capture(&gpu, &mut riding, target, (time, view), Default::default()).unwrap();
     let on_the_car = CameraPlace::of(riding.camera_mut().unwrap());
     assert!(on_the_car.position.distance(place.position) > 10.0, "the car is elsewhere: {on_the_car}");
 
     let mut placed = started::<LightingChapter>(&gpu, &request(Some(place)), &Default::default()).unwrap();
-    capture(&gpu, &mut placed, target, time, view).unwrap();
+    capture(&gpu, &mut placed, target, (time, view), Default::default()).unwrap();
     assert_eq!(CameraPlace::of(placed.camera_mut().unwrap()), place, "drawn from where --camera put it");
 }

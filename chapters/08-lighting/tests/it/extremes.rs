@@ -28,8 +28,10 @@ impl Night {
     fn draw(&mut self, gpu: &Gpu, settings: Settings, case: &str) {
         self.chapter.settings = settings;
         let Self { chapter, offscreen } = self;
-        gpu.catch_validation(|| draw_frame(gpu, chapter, &offscreen.view, 6.0, 1, &PassTimer::off()))
-            .unwrap_or_else(|e| panic!("{case}: {e}"));
+        gpu.catch_validation(|| {
+            draw_frame(gpu, chapter, &offscreen.view, (6.0, 1), Default::default(), &PassTimer::off())
+        })
+        .unwrap_or_else(|e| panic!("{case}: {e}"));
         let bloom = read_floats(gpu, chapter.post.bloom().output().texture()).unwrap();
         assert!(bloom.iter().flatten().all(|v| v.is_finite()), "{case}: the bloom holds a NaN or an infinity");
     }

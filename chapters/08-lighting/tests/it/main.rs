@@ -1,7 +1,7 @@
 //! Chapter 08's integration tests, one binary: the bloom chain, `--camera`
 //! on a riding view, light extremes, the three shading models and the three terms of the light,
-//! the worked solutions to the page's exercises, and the tone map pass
-//! against its Rust mirror.
+//! the worked solutions to the page's exercises, the tone map pass
+//! against its Rust mirror, and FXAA on edges whose coverage is known.
 //!
 //! One test binary per crate: each links wgpu, naga, egui and winit, so
 //! every extra file here would be another link of all of them.
@@ -9,6 +9,7 @@
 mod bloom;
 mod camera_flag;
 mod extremes;
+mod fxaa;
 mod shading;
 mod solutions;
 mod tone_map;

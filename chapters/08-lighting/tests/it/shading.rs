@@ -27,7 +27,7 @@ fn render(gpu: &Gpu, chapter: &mut LightingChapter, view: &str, highlights: bool
     chapter.settings.highlights = highlights;
     chapter.settings.exposure = exposure;
     chapter.settings.bloom_on = false;
-    capture(gpu, chapter, target, LightingChapter::SNAPSHOT_TIME, index).unwrap()
+    capture(gpu, chapter, target, (LightingChapter::SNAPSHOT_TIME, index), Default::default()).unwrap()
 }
 
 /// The pixels inside a disc around the picture's centre, well inside the
@@ -93,7 +93,7 @@ fn hdr_light(gpu: &Gpu, chapter: &mut LightingChapter, view: &str) -> (Vec<[f32;
     let target = Target { format: OFFSCREEN_FORMAT, width: SIZE.0, height: SIZE.1, samples: 1 };
     let index = view_index::<LightingChapter>(view).unwrap();
     chapter.select_view(index);
-    capture(gpu, chapter, target, LightingChapter::SNAPSHOT_TIME, index).unwrap();
+    capture(gpu, chapter, target, (LightingChapter::SNAPSHOT_TIME, index), Default::default()).unwrap();
     let light = read_floats(gpu, chapter.post.hdr().colour.texture()).unwrap();
     let depth = read_floats(gpu, chapter.post.hdr().depth_texture().expect("one sample a pixel"))
         .unwrap()

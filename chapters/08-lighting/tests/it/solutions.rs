@@ -318,7 +318,7 @@ fn exercises_3_to_5_on_the_night_city() {
         // The city alone, as these exercises ask about its lights: the
         // countryside adds pixels that none of them reaches.
         chapter.settings.countryside = false;
-        let picture = capture(&gpu, chapter, target, time, index).unwrap();
+        let picture = capture(&gpu, chapter, target, (time, index), Default::default()).unwrap();
         let depths = read_floats(&gpu, chapter.post.hdr().depth_texture().expect("one sample a pixel")).unwrap();
         (picture, covered_pixels(&camera, &depths, size.0))
     };

@@ -3,7 +3,7 @@
 //! HDR values in, read back as 32-bit floats, at several exposures.
 
 use common::headless::read_floats;
-use common::{DrawCounts, Frame, Gpu, GpuNeeds, PassTimer, wgpu};
+use common::{Antialiasing, DrawCounts, Frame, Gpu, GpuNeeds, PassTimer, wgpu};
 use lighting::post::{PostOutput, ToneMap, aces_fit};
 
 /// Grey light values, each exactly representable in 16-bit floats (the
@@ -51,9 +51,16 @@ fn the_tone_map_pass_draws_aces_fit_of_the_exposed_light() {
     for exposure in [1.0, 0.25, 4.0] {
         let mut encoder = gpu.device.create_command_encoder(&Default::default());
         let (timer, drawn) = (PassTimer::off(), DrawCounts::new());
-        let mut frame =
-            Frame { encoder: &mut encoder, target: &target_view, time: 0.0, view: 0, timer: &timer, drawn: &drawn };
-        tone_map.draw(&gpu, &mut frame, exposure, 0.0, PostOutput::Picture);
+        let mut frame = Frame {
+            encoder: &mut encoder,
+            target: &target_view,
+            time: 0.0,
+            view: 0,
+            timer: &timer,
+            drawn: &drawn,
+            antialiasing: Antialiasing::Off,
+        };
+        tone_map.draw(&gpu, &mut frame, &target_view, exposure, 0.0, PostOutput::Picture);
         gpu.queue.submit([encoder.finish()]);
         let drawn = read_floats(&gpu, &target).unwrap();
         for (&light, texel) in LIGHT.iter().zip(&drawn) {

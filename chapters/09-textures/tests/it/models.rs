@@ -215,7 +215,8 @@ fn a_missing_texture_is_one_warning_and_a_visible_checker() {
     let view = common::chapter::view_index::<TexturesChapter>("car").unwrap();
     chapter.select_view(view);
     let target = Target { format: OFFSCREEN_FORMAT, width: 320, height: 180, samples: 1 };
-    let picture = capture(&gpu, &mut chapter, target, TexturesChapter::SNAPSHOT_TIME, view).unwrap();
+    let picture =
+        capture(&gpu, &mut chapter, target, (TexturesChapter::SNAPSHOT_TIME, view), Default::default()).unwrap();
     let magenta = picture.pixels().filter(|p| p[0] > 120 && p[2] > 120 && p[1] < 90).count();
     assert!(magenta > 200, "the checker shows: {magenta} magenta pixels");
 }
@@ -265,10 +266,11 @@ fn a_million_triangles_load_and_render() {
     let view = common::chapter::view_index::<TexturesChapter>("car").unwrap();
     chapter.select_view(view);
     let target = Target { format: OFFSCREEN_FORMAT, width: 160, height: 90, samples: 1 };
-    let with = capture(&gpu, &mut chapter, target, TexturesChapter::SNAPSHOT_TIME, view).unwrap();
+    let with = capture(&gpu, &mut chapter, target, (TexturesChapter::SNAPSHOT_TIME, view), Default::default()).unwrap();
     // The same picture with the model taken off the stage: the middle changes.
     chapter.featured.placement = common::glam::Mat4::from_translation(Vec3::new(0.0, -1000.0, 0.0));
-    let without = capture(&gpu, &mut chapter, target, TexturesChapter::SNAPSHOT_TIME, view).unwrap();
+    let without =
+        capture(&gpu, &mut chapter, target, (TexturesChapter::SNAPSHOT_TIME, view), Default::default()).unwrap();
     let changed = with.pixels().zip(without.pixels()).filter(|(a, b)| a.0 != b.0).count();
     assert!(changed > 160 * 90 / 10, "the sphere covers the middle of the picture: {changed} pixels changed");
     let _ = std::fs::remove_dir_all(dir);
@@ -390,7 +392,8 @@ fn vertex_colours_are_drawn() {
         let facts = chapter.featured.facts();
         assert!(facts.contains("it has vertex colours"), "{name}: the model's facts say so: {facts}");
         chapter.select_view(view);
-        let picture = capture(&gpu, &mut chapter, target, TexturesChapter::SNAPSHOT_TIME, view).unwrap();
+        let picture =
+            capture(&gpu, &mut chapter, target, (TexturesChapter::SNAPSHOT_TIME, view), Default::default()).unwrap();
         reddish.push(picture.pixels().filter(|p| i32::from(p[0]) > 2 * i32::from(p[1]) + 20).count());
     }
     assert!(reddish[0] > reddish[1] + 100, "the red cube is red: {reddish:?} reddish pixels (red, white)");

@@ -57,7 +57,7 @@ fn render(gpu: &Gpu, chapter: &mut TexturesChapter, shading: Shading) -> image::
     chapter.select_view(view);
     chapter.settings.shading = shading;
     chapter.settings.bloom = false;
-    capture(gpu, chapter, target, TexturesChapter::SNAPSHOT_TIME, view).unwrap()
+    capture(gpu, chapter, target, (TexturesChapter::SNAPSHOT_TIME, view), Default::default()).unwrap()
 }
 
 /// For every face of `model` placed by `placement` that faces `camera`, the

@@ -23,7 +23,14 @@ fn each_pass_counts_the_level_it_draws() {
     chapter.select_view(view);
     let offscreen = Offscreen::new(&gpu.device, target);
     let timer = PassTimer::off();
-    let drawn = draw_frame(&gpu, &mut chapter, &offscreen.view, ShadowsChapter::SNAPSHOT_TIME, view, &timer);
+    let drawn = draw_frame(
+        &gpu,
+        &mut chapter,
+        &offscreen.view,
+        (ShadowsChapter::SNAPSHOT_TIME, view),
+        Default::default(),
+        &timer,
+    );
 
     let level = game::level();
     let read: obj::ReadFile = &scene::read;

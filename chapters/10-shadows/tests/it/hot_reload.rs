@@ -20,7 +20,7 @@ fn a_broken_caster_shader_keeps_the_last_good_shadow_pass() {
     gpu.read_shaders_from(Some(root.clone()));
     let target = Target { format: OFFSCREEN_FORMAT, width: 160, height: 90, samples: 1 };
     let mut chapter = ShadowsChapter::new(&gpu, target, ()).unwrap();
-    let good = capture(&gpu, &mut chapter, target, 5.7, 0).unwrap();
+    let good = capture(&gpu, &mut chapter, target, (5.7, 0), Default::default()).unwrap();
 
     for broken in [
         original.replace("place(vertex, instance).world", "place(vertex, instance)"),
@@ -29,18 +29,22 @@ fn a_broken_caster_shader_keeps_the_last_good_shadow_pass() {
         std::fs::write(&file, broken).unwrap();
         let error = gpu.reload_shaders(&[CASTER]).unwrap_err();
         assert!(error.0.contains("caster.wgsl") || error.0.contains("vs_caster"), "{error}");
-        assert_eq!(capture(&gpu, &mut chapter, target, 5.7, 0).unwrap(), good, "the last good pipeline keeps drawing");
+        assert_eq!(
+            capture(&gpu, &mut chapter, target, (5.7, 0), Default::default()).unwrap(),
+            good,
+            "the last good pipeline keeps drawing"
+        );
     }
     // A new bias needs a new pipeline, which the broken file cannot make:
     // the last good one keeps drawing, with the bias it was made with.
     let bias = chapter.settings.shadow.bias;
     chapter.settings.shadow.bias = Bias::TOO_MUCH;
-    assert_eq!(capture(&gpu, &mut chapter, target, 5.7, 0).unwrap(), good);
+    assert_eq!(capture(&gpu, &mut chapter, target, (5.7, 0), Default::default()).unwrap(), good);
     chapter.settings.shadow.bias = bias;
 
     std::fs::write(&file, original).unwrap();
     let rebuilt = gpu.reload_shaders(&[CASTER]).unwrap();
     assert!(rebuilt >= 1, "nothing was built from {CASTER}");
-    assert_eq!(capture(&gpu, &mut chapter, target, 5.7, 0).unwrap(), good);
+    assert_eq!(capture(&gpu, &mut chapter, target, (5.7, 0), Default::default()).unwrap(), good);
     let _ = std::fs::remove_dir_all(&root);
 }

@@ -367,13 +367,13 @@ fn the_lantern_hangs_in_the_tunnel_and_its_cube_costs_what_the_page_says() {
     let mut chapter = ShadowsChapter::new(&gpu, target, ()).unwrap();
     let view = common::chapter::view_index::<ShadowsChapter>("lantern").unwrap();
     chapter.select_view(view);
-    capture(&gpu, &mut chapter, target, ShadowsChapter::SNAPSHOT_TIME, view).unwrap();
+    capture(&gpu, &mut chapter, target, (ShadowsChapter::SNAPSHOT_TIME, view), Default::default()).unwrap();
     let cost = chapter.cube_cost;
     eprintln!("the lantern's cube: {cost:?}");
     assert_eq!((cost.passes, cost.draw_calls, cost.triangles), (6, CUBE_DRAW_CALLS, CUBE_TRIANGLES));
     // Without its shadow, no passes at all.
     chapter.settings.lantern.filter = PointFilter::Off;
-    capture(&gpu, &mut chapter, target, ShadowsChapter::SNAPSHOT_TIME, view).unwrap();
+    capture(&gpu, &mut chapter, target, (ShadowsChapter::SNAPSHOT_TIME, view), Default::default()).unwrap();
     assert_eq!(chapter.cube_cost.passes, 0);
 }
 

@@ -177,7 +177,7 @@ fn shadowed_lit_faces(gpu: &Gpu, view: &str) -> (usize, usize) {
     let mut chapter = ShadowsChapter::new(gpu, target, ()).unwrap();
     let index = common::chapter::view_index::<ShadowsChapter>(view).unwrap();
     chapter.settings = shadows::Settings { show: Show::Sunlit, ..shadows::VIEW_TABLE[index].settings };
-    let image = capture(gpu, &mut chapter, target, ShadowsChapter::SNAPSHOT_TIME, index).unwrap();
+    let image = capture(gpu, &mut chapter, target, (ShadowsChapter::SNAPSHOT_TIME, index), Default::default()).unwrap();
     let facing = image.pixels().filter(|p| p[1] > 128).count();
     let dark = image.pixels().filter(|p| p[1] > 128 && p[0] < 128).count();
     (dark, facing)
@@ -205,7 +205,7 @@ fn the_scripted_run_gives_the_same_bytes_however_it_was_reached() {
         let mut chapter = ShadowsChapter::new(&gpu, target, ()).unwrap();
         let mut last = None;
         for &time in times {
-            last = Some(capture(&gpu, &mut chapter, target, time, 0).unwrap());
+            last = Some(capture(&gpu, &mut chapter, target, (time, 0), Default::default()).unwrap());
         }
         last.unwrap()
     };
@@ -244,7 +244,7 @@ fn a_key_takes_over_from_the_demo_and_every_key_at_once_breaks_nothing() {
     let gpu = Gpu::headless(ShadowsChapter::gpu_needs()).unwrap();
     let target = Target { format: OFFSCREEN_FORMAT, width: 160, height: 90, samples: 1 };
     let mut chapter = ShadowsChapter::new(&gpu, target, ()).unwrap();
-    let demo = capture(&gpu, &mut chapter, target, 0.0, 0).unwrap();
+    let demo = capture(&gpu, &mut chapter, target, (0.0, 0), Default::default()).unwrap();
     let mut input = Input::default();
     chapter.update(&input, 1.0 / 60.0);
     assert!(chapter.played_by_keys().is_none(), "no key, still the demo");
@@ -255,7 +255,11 @@ fn a_key_takes_over_from_the_demo_and_every_key_at_once_breaks_nothing() {
     }
     let game = *chapter.played_by_keys().expect("D took over");
     assert!(game.player.aabb.min.x > game::level().spawn.x + 2.0, "ran right: {:?}", game.player.aabb);
-    assert_ne!(demo.as_raw(), capture(&gpu, &mut chapter, target, 0.0, 0).unwrap().as_raw(), "the camera followed");
+    assert_ne!(
+        demo.as_raw(),
+        capture(&gpu, &mut chapter, target, (0.0, 0), Default::default()).unwrap().as_raw(),
+        "the camera followed"
+    );
     // Every key at once, frames of every length, a window hidden for an hour.
     for key in [KeyCode::KeyA, KeyCode::ArrowLeft, KeyCode::ArrowRight, KeyCode::Space, KeyCode::KeyW, KeyCode::ArrowUp]
     {

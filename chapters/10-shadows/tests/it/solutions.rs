@@ -35,7 +35,7 @@ struct Sunlit {
 fn sunlit(gpu: &Gpu, chapter: &mut ShadowsChapter, settings: Settings, time: f32) -> Sunlit {
     let target = Target { format: OFFSCREEN_FORMAT, width: 320, height: 180, samples: 1 };
     chapter.settings = Settings { show: Show::Sunlit, ..settings };
-    let image = capture(gpu, chapter, target, time, 0).unwrap();
+    let image = capture(gpu, chapter, target, (time, 0), Default::default()).unwrap();
     let pixels: Vec<_> = image.pixels().collect();
     Sunlit {
         facing: pixels.iter().filter(|p| p[1] > 128).count(),

@@ -111,7 +111,7 @@ fn a_broken_shader_of_any_piece_keeps_the_last_good_picture() {
     gpu.read_shaders_from(Some(root.clone()));
     let target = Target { format: OFFSCREEN_FORMAT, width: 160, height: 90, samples: 1 };
     let mut chapter = VoronoiWaterChapter::new(&gpu, target, ()).unwrap();
-    let good = capture(&gpu, &mut chapter, target, 20.0, 0).unwrap();
+    let good = capture(&gpu, &mut chapter, target, (20.0, 0), Default::default()).unwrap();
 
     for file in FILES {
         let path = root.join(file);
@@ -120,13 +120,13 @@ fn a_broken_shader_of_any_piece_keeps_the_last_good_picture() {
         std::fs::write(&path, format!("{original}\nfn broken_by_the_test(\n")).unwrap();
         let error = gpu.reload_shaders(&[file]).unwrap_err();
         assert!(error.0.contains(file), "the error does not name {file}:\n{error}");
-        let picture = capture(&gpu, &mut chapter, target, 20.0, 0).unwrap();
+        let picture = capture(&gpu, &mut chapter, target, (20.0, 0), Default::default()).unwrap();
         assert!(picture == good, "{file}: the last good pipelines must keep drawing");
         std::fs::write(&path, original).unwrap();
         let rebuilt = gpu.reload_shaders(&[file]).unwrap_or_else(|e| panic!("{file} restored:\n{e}"));
         assert!(rebuilt >= 1, "nothing was rebuilt from {file}");
     }
-    assert!(capture(&gpu, &mut chapter, target, 20.0, 0).unwrap() == good);
+    assert!(capture(&gpu, &mut chapter, target, (20.0, 0), Default::default()).unwrap() == good);
 
     // And nothing else: no other file has a pipeline of this chapter built from it.
     let mut all = Vec::new();

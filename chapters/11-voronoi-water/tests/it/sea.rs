@@ -14,7 +14,7 @@ use voronoi_water::{Play, VoronoiWaterChapter};
 fn probe(gpu: &Gpu, chapter: &mut VoronoiWaterChapter, position: Vec2, time: f32) -> Vec<[f32; 4]> {
     chapter.play = Play::Keys(Helm { position, heading: 0.3, speed: 0.0 });
     let target = Target { format: OFFSCREEN_FORMAT, width: 64, height: 36, samples: 1 };
-    capture(gpu, chapter, target, time, 0).unwrap();
+    capture(gpu, chapter, target, (time, 0), Default::default()).unwrap();
     chapter.sea.probe(gpu, &chapter.scene_lights, &chapter.atmosphere, &chapter.shadow_map).unwrap()
 }
 
@@ -121,6 +121,6 @@ fn a_million_seconds_in_the_waves_are_still_waves() {
     // And the picture renders.
     chapter.play = Play::Course;
     let target = Target { format: OFFSCREEN_FORMAT, width: 64, height: 36, samples: 1 };
-    let picture = capture(&gpu, &mut chapter, target, 1e6, 0).unwrap();
+    let picture = capture(&gpu, &mut chapter, target, (1e6, 0), Default::default()).unwrap();
     assert!(picture.pixels().any(|p| p[2] > 40), "a sea at 10⁶ s");
 }

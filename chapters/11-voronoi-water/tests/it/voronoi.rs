@@ -39,7 +39,7 @@ fn every_pixel_of_the_cells_view_holds_its_nearest_site() {
     let software = gpu.adapter.get_info().device_type == common::wgpu::DeviceType::Cpu;
     for time in [3.0, 1234.5] {
         let target = Target { format: OFFSCREEN_FORMAT, width: WIDTH, height: HEIGHT, samples: 1 };
-        let picture = capture(&gpu, &mut chapter, target, time, view).unwrap();
+        let picture = capture(&gpu, &mut chapter, target, (time, view), Default::default()).unwrap();
         let sites = sites::positions(time);
         // The exact cones' depth is the distance in f32 (a depth of 0..1,
         // steps near 10⁻⁷ of the cone's radius; the interpolated offset
@@ -95,10 +95,10 @@ fn jump_flooding_agrees_with_the_cones() {
     let view = common::chapter::view_index::<VoronoiWaterChapter>("cells").unwrap();
     let target = Target { format: OFFSCREEN_FORMAT, width: WIDTH, height: HEIGHT, samples: 1 };
     let time = 3.0;
-    let cones = ids_of(&capture(&gpu, &mut chapter, target, time, view).unwrap());
+    let cones = ids_of(&capture(&gpu, &mut chapter, target, (time, view), Default::default()).unwrap());
     let mut misses = |extra_pass| {
         chapter.settings.voronoi = VoronoiSettings { method: Method::JumpFlooding, extra_pass, ..Default::default() };
-        let flooded = ids_of(&capture(&gpu, &mut chapter, target, time, view).unwrap());
+        let flooded = ids_of(&capture(&gpu, &mut chapter, target, (time, view), Default::default()).unwrap());
         cones.iter().zip(&flooded).filter(|(a, b)| a != b).count()
     };
     let (plain, plus_one) = (misses(false), misses(true));
