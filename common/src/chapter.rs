@@ -80,6 +80,9 @@ impl View {
     }
 }
 
+/// What every `no-aa` view shows.
+const NO_AA_ABOUT: &str = "the first view drawn with one sample a pixel: its edges as they are without multisampling";
+
 // ANCHOR: view_table
 /// One row of a chapter's view table, the one place a view is named: the
 /// [`View`], the chapter's settings that choosing it applies (`S`, all of
@@ -119,13 +122,12 @@ impl<S, P> ViewRow<S, P> {
     /// The `no-aa` view: `twin`'s picture, whose settings are `settings`,
     /// drawn with one sample a pixel, to compare with multisampling.
     pub const fn no_aa(twin: &'static str, settings: S) -> Self {
-        Self::mode(
-            "no-aa",
-            "the first view drawn with one sample a pixel: its edges as they are without multisampling",
-            settings,
-        )
-        .same_picture_as(twin)
-        .antialiasing(Antialiasing::Off)
+        Self::mode("no-aa", NO_AA_ABOUT, settings).same_picture_as(twin).antialiasing(Antialiasing::Off)
+    }
+
+    /// [`ViewRow::no_aa`] for a `twin` that is a preset: from its `camera`.
+    pub const fn no_aa_from(twin: &'static str, settings: S, camera: P) -> Self {
+        Self::preset("no-aa", NO_AA_ABOUT, settings, camera).same_picture_as(twin).antialiasing(Antialiasing::Off)
     }
 
     /// This view smooths edges as `antialiasing` says, whatever the

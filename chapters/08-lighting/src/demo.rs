@@ -7,8 +7,8 @@ use common::chapter::storage_entry;
 use common::glam::{Mat4, Vec2, Vec3};
 use common::wgpu::util::DeviceExt as _;
 use common::{
-    Camera, Chapter, FlyController, Frame, Gpu, Input, Preparation, Reloadable, Target, View, ViewRow, anyhow, egui,
-    views_of, wgpu, winit::keyboard::KeyCode,
+    Antialiasing, Camera, Chapter, FlyController, Frame, Gpu, Input, Preparation, Reloadable, Target, View, ViewRow,
+    anyhow, egui, views_of, wgpu, winit::keyboard::KeyCode,
 };
 
 use crate::billboard::Billboard;
@@ -26,7 +26,7 @@ use crate::scene_lights::{Highlight, LoopOptions, MAX_LIGHTS, SceneLights};
 
 // ANCHOR: views
 /// Every view, once: what it shows, and for a preset where the camera goes.
-pub const VIEW_TABLE: [ViewRow<Settings, CameraPreset>; 31] = [
+pub const VIEW_TABLE: [ViewRow<Settings, CameraPreset>; 33] = [
     ViewRow::mode("day", "the city at noon, from above", Settings::DAY),
     ViewRow::mode("night", "the city at night: street lamps, lit buildings, headlights, bloom", Settings::NIGHT),
     ViewRow::preset(
@@ -146,6 +146,14 @@ pub const VIEW_TABLE: [ViewRow<Settings, CameraPreset>; 31] = [
         Settings { time_of_day: TimeOfDay::Evening, ..Settings::DAY },
         CameraPreset::MovingParts,
     ),
+    ViewRow::no_aa("day", Settings::DAY),
+    ViewRow::mode(
+        "fxaa",
+        "the first view with one sample a pixel and FXAA over the finished picture instead of multisampling",
+        Settings::DAY,
+    )
+    .same_picture_as("day")
+    .antialiasing(Antialiasing::Post),
     ViewRow::bench("lights-1", "bench: the night city with 1 light, culled", Settings::bench(1, true)),
     ViewRow::bench("lights-16", "bench: 16 lights, culled per cluster", Settings::bench(16, true)),
     ViewRow::bench("lights-64", "bench: 64 lights, culled per cluster", Settings::bench(64, true)),

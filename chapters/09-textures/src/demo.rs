@@ -30,7 +30,7 @@ use crate::textured_renderer::{Draw, DrawList, SurfaceOptions, TexturedRenderer,
 
 // ANCHOR: views
 /// Every view, once: what it shows, and for a preset where the camera goes.
-pub const VIEW_TABLE: [ViewRow<Settings, CameraPreset>; 15] = [
+pub const VIEW_TABLE: [ViewRow<Settings, CameraPreset>; 16] = [
     ViewRow::mode("day", "the textured city at noon, from above", Settings::DAY),
     ViewRow::mode(
         "night",
@@ -115,6 +115,7 @@ pub const VIEW_TABLE: [ViewRow<Settings, CameraPreset>; 15] = [
         Settings { sampler: SamplerMode::Anisotropic, ..Settings::LAB },
         CameraPreset::Lab,
     ),
+    ViewRow::no_aa("day", Settings::DAY),
 ];
 // ANCHOR_END: views
 

@@ -32,7 +32,7 @@ use crate::shadowed_renderer::ShadowedRenderer;
 // ANCHOR: views
 /// Every view, once, with what it shows. All but `lantern` are modes: the
 /// side camera follows the player whatever the view.
-pub const VIEW_TABLE: [ViewRow<Settings, CameraPreset>; 15] = [
+pub const VIEW_TABLE: [ViewRow<Settings, CameraPreset>; 16] = [
     ViewRow::mode(
         "default",
         "the game mid-jump, with soft shadows that harden where they touch (PCSS)",
@@ -92,6 +92,7 @@ pub const VIEW_TABLE: [ViewRow<Settings, CameraPreset>; 15] = [
         "the background layers tinted by depth: red near, green middle, blue far",
         Settings { tint_layers: true, ..Settings::DEFAULT },
     ),
+    ViewRow::no_aa("default", Settings::DEFAULT),
     ViewRow::bench("map-1024", "Poisson filtering with a 1024² shadow map", Settings::filtered(Filter::Poisson, 1024)),
     ViewRow::bench("map-4096", "Poisson filtering with a 4096² shadow map", Settings::filtered(Filter::Poisson, 4096)),
     ViewRow::bench(

@@ -175,12 +175,19 @@ impl Parallax {
             step_mode: wgpu::VertexStepMode::Vertex,
             attributes: &wgpu::vertex_attr_array![0 => Float32x3, 1 => Float32x2, 2 => Uint32],
         };
+        // A cut-out at one sample a pixel; with more, alpha to coverage
+        // (layers.wgsl says why).
+        let (fragment, multisample) = if multisample.count > 1 {
+            ("fs_layer_coverage", wgpu::MultisampleState { alpha_to_coverage_enabled: true, ..multisample })
+        } else {
+            ("fs_layer", multisample)
+        };
         gpu.catch_validation(|| {
             common::chapter::mesh_pipeline(
                 &gpu.device,
                 layout,
                 &module,
-                ("vs_layer", "fs_layer"),
+                ("vs_layer", fragment),
                 &[Some(buffer)],
                 HDR_FORMAT.into(),
                 multisample,

@@ -29,7 +29,7 @@ use crate::water_texture::{self, Picture, Processing, WaterTexture};
 
 // ANCHOR: views
 /// Every view, once: what it shows, and for a preset where the camera goes.
-pub const VIEW_TABLE: [ViewRow<Settings, CameraPreset>; 25] = [
+pub const VIEW_TABLE: [ViewRow<Settings, CameraPreset>; 26] = [
     ViewRow::preset(
         "default",
         "sunset: the boat sails into the sun over the Voronoi sea",
@@ -102,6 +102,7 @@ pub const VIEW_TABLE: [ViewRow<Settings, CameraPreset>; 25] = [
         Settings::SUNSET,
         CameraPreset::Sail,
     ),
+    ViewRow::no_aa_from("default", Settings::SUNSET, CameraPreset::Sunset),
     ViewRow::bench("cones-64-512", "64 sites by cones at 512²", Settings::diagram(Method::Cones, 64, 512)),
     ViewRow::bench("jfa-64-512", "64 sites by jump flooding at 512²", Settings::diagram(Method::JumpFlooding, 64, 512)),
     ViewRow::bench("cones-1024-512", "1,024 sites by cones at 512²", Settings::diagram(Method::Cones, 1024, 512)),
