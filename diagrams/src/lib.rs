@@ -48,6 +48,7 @@ pub fn all() -> Vec<(&'static str, String)> {
         ("tone-curves.svg", lighting::tone_curves()),
         ("bloom-knee.svg", lighting::bloom_knee()),
         ("downsample-taps.svg", lighting::downsample_taps()),
+        ("fxaa.svg", lighting::fxaa()),
         ("tangent-from-uvs.svg", textures::tangent_from_uvs()),
         ("texel-footprint.svg", textures::texel_footprint()),
         ("footprints.svg", textures::footprints()),

@@ -5,7 +5,7 @@
 
 use common::glam::Vec2;
 
-use crate::kit::{ACCENT, Axes, BLUE, INK, MUTED, Svg};
+use crate::kit::{ACCENT, Axes, BLUE, INK, MUTED, PAPER, Svg};
 
 /// Chapter 08: how a point light falls off, from `lighting::lights::attenuation`,
 /// against the city project's constant–linear–quadratic formula.
@@ -414,6 +414,121 @@ pub fn lambert_cosine() -> String {
         "The same light over more area: each square metre gets cos θ as much.",
         11.0,
         "middle",
+        INK,
+    );
+    svg.finish()
+}
+
+/// Chapter 08: FXAA on a straight edge four pixels a step. The pixels are
+/// drawn as one sample at each centre sees them; for each complete step
+/// of the staircase, the blend FXAA gives each pixel beside it, ½ − d / L
+/// at the end where the staircase turns towards that pixel's side, worked
+/// out here from the staircase alone, and under it the share of the other
+/// surface the edge really leaves in the pixel, integrated from the edge's
+/// equation.
+pub fn fxaa() -> String {
+    let (cell, columns, rows) = (60.0, 12usize, 4usize);
+    let origin = Vec2::new(40.0, 70.0);
+    // The edge, in pixels with y down: the blue surface lies below it.
+    let edge = |x: f32| 3.25 - x / 4.0;
+    let blue_at_centre = |column: usize, row: usize| row as f32 + 0.5 > edge(column as f32 + 0.5);
+    // The share of pixel (column, row) below the edge, over 256 strips.
+    let blue_share = |column: usize, row: usize| {
+        (0..256)
+            .map(|k| (row as f32 + 1.0 - edge(column as f32 + (k as f32 + 0.5) / 256.0)).clamp(0.0, 1.0))
+            .sum::<f32>()
+            / 256.0
+    };
+    let at = |x: f32, y: f32| origin + Vec2::new(x, y) * cell;
+    let mut svg = Svg::new(40.0 + cell * columns as f32 + 40.0, origin.y + cell * rows as f32 + 60.0);
+    for row in 0..rows {
+        for column in 0..columns {
+            let fill = if blue_at_centre(column, row) { "#b9cde6" } else { PAPER };
+            let p = at(column as f32, row as f32);
+            svg.rect(p.x, p.y, cell, cell, fill, MUTED);
+        }
+    }
+    // Each step: a run of columns where the row above is white and the row
+    // below blue. The pixel beside the end where the staircase turns
+    // towards its side holds up to half of the other surface.
+    let mut walked = false;
+    for upper in 0..rows - 1 {
+        let on_step = |column: usize| !blue_at_centre(column, upper) && blue_at_centre(column, upper + 1);
+        let mut first = 0;
+        while first < columns {
+            if !on_step(first) {
+                first += 1;
+                continue;
+            }
+            let mut last = first;
+            while last + 1 < columns && on_step(last + 1) {
+                last += 1;
+            }
+            // Only steps whose both ends lie inside the picture.
+            if first > 0 && last + 1 < columns {
+                let length = (last - first + 1) as f32;
+                // Beyond the left end the lower row turns white; beyond the
+                // right end the upper row turns blue.
+                let left_turns_lower = !blue_at_centre(first - 1, upper + 1);
+                let right_turns_upper = blue_at_centre(last + 1, upper);
+                for column in first..=last {
+                    let to_left = column as f32 + 0.5 - first as f32;
+                    let to_right = last as f32 + 1.0 - (column as f32 + 0.5);
+                    let (distance, lower_blends) =
+                        if to_left < to_right { (to_left, left_turns_lower) } else { (to_right, !right_turns_upper) };
+                    let blend = (0.5 - distance / length).max(0.0);
+                    for (row, blends, exact) in [
+                        (upper, !lower_blends, blue_share(column, upper)),
+                        (upper + 1, lower_blends, 1.0 - blue_share(column, upper + 1)),
+                    ] {
+                        let shown = if blends { blend } else { 0.0 };
+                        let centre = at(column as f32 + 0.5, row as f32 + 0.5);
+                        svg.text(centre + Vec2::new(0.0, -2.0), &format!("{shown:.2}"), 12.0, "middle", INK);
+                        svg.text(centre + Vec2::new(0.0, 14.0), &format!("{exact:.2}"), 10.0, "middle", MUTED);
+                    }
+                }
+                // The walk, drawn once: from the middle of the step both
+                // ways, half a pixel across, to its ends.
+                if !walked {
+                    let y = upper as f32 + 1.0;
+                    let start = (first as f32 + last as f32 + 1.0) / 2.0 - 0.5;
+                    svg.arrow(at(start, y), at(first as f32, y), ACCENT);
+                    svg.arrow(at(start, y), at(last as f32 + 1.0, y), ACCENT);
+                    svg.circle(at(start, y), 3.5, ACCENT);
+                    walked = true;
+                }
+            }
+            first = last + 1;
+        }
+    }
+    svg.line(at(0.0, edge(0.0)), at(columns as f32, edge(columns as f32)), BLUE, 2.0);
+    svg.text(
+        Vec2::new(origin.x, 28.0),
+        "A straight edge (blue line) drawn with one sample a pixel: steps of four pixels. From a pixel on a step,",
+        11.0,
+        "start",
+        INK,
+    );
+    svg.text(
+        Vec2::new(origin.x, 46.0),
+        "FXAA walks both ways along it (red) to the step's ends, and blends in ½ − d/L of the pixel across.",
+        11.0,
+        "start",
+        INK,
+    );
+    let below = origin.y + cell * rows as f32 + 26.0;
+    svg.text(
+        Vec2::new(origin.x, below),
+        "Large: the blend FXAA works out from the staircase alone. Small: the share of the other side the edge",
+        11.0,
+        "start",
+        INK,
+    );
+    svg.text(
+        Vec2::new(origin.x, below + 18.0),
+        "really leaves in the pixel, integrated from its equation. For a straight edge they agree.",
+        11.0,
+        "start",
         INK,
     );
     svg.finish()

@@ -126,3 +126,15 @@ fn the_camera_flag_is_checked_with_the_others() {
     let help = Args::parse_from_for::<Triangle>(["triangle", "--help"]).unwrap_err().to_string();
     assert!(help.contains("--camera <X,Y,Z,YAW,PITCH>"), "{help}");
 }
+
+/// `--antialiasing` offers the post-process pass only in chapters that
+/// have a post chain (08 to 11): here `post` is an error that names the
+/// values this chapter takes.
+#[test]
+fn the_antialiasing_flag_names_the_values_this_chapter_takes() {
+    use common::args::Args;
+    let parse = |value: &str| Args::parse_from_for::<Triangle>(["triangle", "--antialiasing", value]);
+    assert_eq!(parse("off").unwrap().antialiasing, common::Antialiasing::Off);
+    let error = parse("post").unwrap_err().to_string();
+    assert!(error.contains("invalid value 'post'") && error.contains("[possible values: off, msaa]"), "{error}");
+}

@@ -159,6 +159,18 @@ fn fxaa_dims_a_line_one_pixel_wide() {
     let peak = drawn[row + line as usize];
     let beside = drawn[row + line as usize + 1];
     eprintln!("a one-pixel line after FXAA: its pixel {peak:.3} of 1, the one beside it {beside:.3}");
-    assert!((0.3..0.8).contains(&peak), "the line's pixel keeps {peak} of its light");
+    assert!((0.3..=0.8).contains(&peak), "the line's pixel keeps {peak} of its light");
     assert!(beside < 0.2, "the pixel beside the line has {beside}");
+}
+
+/// Chapters with the post chain take all four settings of `--antialiasing`,
+/// multisampling by default.
+#[test]
+fn the_antialiasing_flag_offers_the_post_pass_here() {
+    use common::args::Args;
+    let parse = |args: &[&str]| Args::parse_from_for::<lighting::LightingChapter>(args).unwrap().antialiasing;
+    assert_eq!(parse(&["lighting"]), Antialiasing::Msaa);
+    for (value, expected) in [("off", Antialiasing::Off), ("post", Antialiasing::Post), ("both", Antialiasing::Both)] {
+        assert_eq!(parse(&["lighting", "--antialiasing", value]), expected, "{value}");
+    }
 }
