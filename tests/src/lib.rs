@@ -432,11 +432,16 @@ fn views_told_apart(record: &Record) -> Vec<String> {
 }
 
 /// How far a `no-aa` view, one sample a pixel, may be from the multisampled
-/// view it draws again: the same picture, with every edge stepped instead
-/// of smoothed. Measured on lavapipe, chapters 01 to 07 came within FLIP
+/// view it draws again (or an `fxaa` view, one sample and the post pass):
+/// the same picture, with every edge stepped, or blended by FXAA, instead
+/// of multisampled. The mean grows with how much of the picture is edge.
+/// Measured on lavapipe (2026-11-28): chapters 01 to 07 came within FLIP
 /// mean 0.0102 (chapter 06's sky-lit plain, with a million rocks' edges)
-/// and a worst patch of 0.159 (chapter 01's triangle, all edge).
-pub const ANTIALIASED_TWIN: Tolerance = Tolerance { mean: 0.02, outliers: 0.01, patch: 0.3 };
+/// and a worst patch of 0.159 (chapter 01's triangle, all edge); the city
+/// of chapter 08, a picture of thin towers, windows and trees, 0.0243 for
+/// `no-aa` and 0.0240 for `fxaa` (0.39 % outliers, worst patch 0.194);
+/// chapter 09's, 0.0179.
+pub const ANTIALIASED_TWIN: Tolerance = Tolerance { mean: 0.035, outliers: 0.01, patch: 0.3 };
 
 // ANCHOR: gl
 /// How far a chapter's first view drawn by OpenGL may be from its

@@ -13,7 +13,7 @@ use voronoi_water::VoronoiWaterChapter;
 
 /// Every WGSL file the chapter builds pipelines from, with the pieces that
 /// read it.
-const FILES: [&str; 19] = [
+const FILES: [&str; 20] = [
     "voronoi-water/cones.wgsl",      // Voronoi
     "voronoi-water/jump_flood.wgsl", // Voronoi
     "voronoi-water/process.wgsl",    // WaterTexture, Show
@@ -24,6 +24,7 @@ const FILES: [&str; 19] = [
     "water/waves.wgsl",              // chapter 07's, imported by the sea
     "lighting/bloom.wgsl",           // chapter 08's PostChain
     "lighting/tonemap.wgsl",         // chapter 08's PostChain
+    "lighting/fxaa.wgsl",            // chapter 08's PostChain, with --antialiasing post
     "lighting/lights.wgsl",          // imported by the sea, islands and boat
     "textures/mipmap.wgsl",          // chapter 09's MipMaker, for the water texture
     "textures/surface.wgsl",         // imported by the shadow pass and the boat
@@ -103,6 +104,9 @@ fn the_hot_reload_test_covers_every_shader_the_chapter_uses() {
     }
 }
 
+/// With the post-process pass, so that FXAA's pipeline draws too.
+const POST: common::Antialiasing = common::Antialiasing::Post;
+
 #[test]
 fn a_broken_shader_of_any_piece_keeps_the_last_good_picture() {
     let root = shader::scratch_copy("voronoi-water-hot-reload").unwrap();
@@ -111,7 +115,7 @@ fn a_broken_shader_of_any_piece_keeps_the_last_good_picture() {
     gpu.read_shaders_from(Some(root.clone()));
     let target = Target { format: OFFSCREEN_FORMAT, width: 160, height: 90, samples: 1 };
     let mut chapter = VoronoiWaterChapter::new(&gpu, target, ()).unwrap();
-    let good = capture(&gpu, &mut chapter, target, (20.0, 0), Default::default()).unwrap();
+    let good = capture(&gpu, &mut chapter, target, (20.0, 0), POST).unwrap();
 
     for file in FILES {
         let path = root.join(file);
@@ -120,13 +124,13 @@ fn a_broken_shader_of_any_piece_keeps_the_last_good_picture() {
         std::fs::write(&path, format!("{original}\nfn broken_by_the_test(\n")).unwrap();
         let error = gpu.reload_shaders(&[file]).unwrap_err();
         assert!(error.0.contains(file), "the error does not name {file}:\n{error}");
-        let picture = capture(&gpu, &mut chapter, target, (20.0, 0), Default::default()).unwrap();
+        let picture = capture(&gpu, &mut chapter, target, (20.0, 0), POST).unwrap();
         assert!(picture == good, "{file}: the last good pipelines must keep drawing");
         std::fs::write(&path, original).unwrap();
         let rebuilt = gpu.reload_shaders(&[file]).unwrap_or_else(|e| panic!("{file} restored:\n{e}"));
         assert!(rebuilt >= 1, "nothing was rebuilt from {file}");
     }
-    assert!(capture(&gpu, &mut chapter, target, (20.0, 0), Default::default()).unwrap() == good);
+    assert!(capture(&gpu, &mut chapter, target, (20.0, 0), POST).unwrap() == good);
 
     // And nothing else: no other file has a pipeline of this chapter built from it.
     let mut all = Vec::new();

@@ -2,7 +2,7 @@
 //! change its exercise asks for and asserts the figure the page's solution
 //! states, so that the solutions are built and checked with the chapter.
 
-use common::book_figures::{median_ms, solution, thousands};
+use common::book_figures::median_ms;
 use common::glam::Vec2;
 use common::headless::read_bytes;
 use common::{Chapter, Gpu, PassTimer, ShaderFile, shader};
@@ -116,33 +116,11 @@ fn exercise_2_jump_flooding_wins_past_a_crossover_that_moves_with_the_size() {
     // Jump flooding's cost grows more slowly with the sites at 512²: the
     // lines cross, past the slider's 16,384.
     assert!(at_512.is_some_and(|n| n > 16_384.0), "{at_512:?}");
-    // The page's solution must quote what the table gives, so a bench run
-    // that moves the figures fails here until the page follows.
-    let page = std::fs::read_to_string(
-        std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("../../book/src/11-voronoi-water.md"),
-    )
-    .unwrap();
-    let solution = solution(&page, "Does the crossover move?").unwrap();
-    let crossing = |n: Option<f64>| match n {
-        Some(n) if n > 0.0 => format!("cross at about {} sites", thousands((n / 1000.0).round() * 1000.0)),
-        _ => "never cross".to_string(),
-    };
-    let [cones_512, flood_512] = microseconds(lines_512);
-    let [cones_1024, flood_1024] = microseconds(lines_1024);
-    for figure in [
-        format!("{cones_512:.1} µs a site"),
-        format!("{flood_512:.1} µs"),
-        format!("{cones_1024:.1} µs"),
-        format!("{flood_1024:.1} µs"),
-        format!("{:.0} ms higher", lines_1024[1].0 - lines_1024[0].0),
-        crossing(at_512),
-        crossing(at_1024),
-    ] {
-        assert!(
-            solution.contains(&figure),
-            "page 11's solution to exercise 2 should say `{figure}` (from the bench table)"
-        );
-    }
+    // At 1024² they cross too, but far later: jump flooding's passes cover
+    // four times the pixels. The page works the same figures out from the
+    // table when the book is built ({{#figure}}), by its own arithmetic;
+    // this is the listed Rust, on the same table.
+    assert!(at_1024.zip(at_512).is_some_and(|(late, early)| late > 4.0 * early), "{at_1024:?} against {at_512:?}");
     // The 256² figure on the page was one measurement, not a test: timings
     // belong in `cargo xtask bench`, never in a test that can fail on a
     // busy machine.
