@@ -22,7 +22,7 @@ use crate::web::{self, canvas, note_backend, prepare, set_state, show_error};
 use crate::{Chapter, Gpu, PassTimer, Target};
 
 /// The URL parameters a chapter page understands.
-const PARAMETERS: &[&str] = &["view", "time", "size", "camera", "backend", "edit", "at"];
+const PARAMETERS: &[&str] = &["view", "time", "size", "camera", "antialiasing", "backend", "edit", "at"];
 
 thread_local! {
     /// What a still picture keeps alive so that the canvas keeps showing it.
@@ -76,7 +76,7 @@ fn page_args<C: Chapter>() -> Result<(Args, bool), String> {
             // For the browser test: a panic's message must reach the page.
             "panic" => panic!("a panic on purpose: the URL asked for one with panic={value}"),
             "at" => at = Some(value),
-            "view" | "time" | "size" | "camera" | "edit" => {
+            "view" | "time" | "size" | "camera" | "antialiasing" | "edit" => {
                 picture |= name == "time";
                 flags.push(format!("--{name}"));
                 flags.push(value);

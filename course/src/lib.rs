@@ -129,6 +129,8 @@ pub struct Record {
     pub browser_tolerance: Tolerance,
     /// Whether it prepares in steps before its first frame (chapter 03's terrain).
     pub prepares_in_steps: bool,
+    /// Whether it finishes its frames with chapter 08's post chain.
+    pub post_chain: bool,
     pub needs: GpuNeeds,
     /// Runs it as its binary's `main` does (in a browser, from the page's URL).
     pub run: fn() -> ExitCode,
@@ -148,6 +150,7 @@ fn record<C: Chapter>(part: &'static Part, figure: &'static str, techniques: &'s
         snapshot_time: C::SNAPSHOT_TIME,
         browser_tolerance: C::BROWSER_TOLERANCE,
         prepares_in_steps: C::PREPARES_IN_STEPS,
+        post_chain: C::POST_ANTIALIASING,
         needs: C::gpu_needs(),
         run: common::run::<C>,
         open: |gpu, target| {
