@@ -51,17 +51,11 @@ pub fn median_ms(table: &str, view: &str, what: &str) -> Option<f64> {
     row.split('|').nth(4)?.trim().parse().ok()
 }
 
-/// A whole number as the pages write it: `186000.0` → `186,000`.
+/// A whole number as the pages write it: `186000.0` → `186,000`, rounded
+/// to the nearest whole, with the commas of [`crate::draw_counts::thousands`].
 pub fn thousands(value: f64) -> String {
-    let digits = format!("{value:.0}");
-    let mut out = String::new();
-    for (i, c) in digits.chars().enumerate() {
-        if i > 0 && c != '-' && (digits.len() - i) % 3 == 0 {
-            out.push(',');
-        }
-        out.push(c);
-    }
-    out
+    let whole = crate::draw_counts::thousands(value.abs().round() as u64);
+    if value.round() < 0.0 { format!("-{whole}") } else { whole }
 }
 
 /// The worked solution on `page` that follows `opening`, up to its
@@ -90,8 +84,8 @@ mod tests {
         assert_eq!(median_ms(table, "default", "GPU: scene pass"), Some(0.75));
         assert_eq!(median_ms(table, "other", "frame"), None);
         assert_eq!(
-            (thousands(186_000.0), thousands(1_248.4), thousands(999.6)),
-            ("186,000".into(), "1,248".into(), "1,000".into())
+            (thousands(186_000.0), thousands(1_248.4), thousands(999.6), thousands(-100.0), thousands(-1_234.0)),
+            ("186,000".into(), "1,248".into(), "1,000".into(), "-100".into(), "-1,234".into())
         );
         let page = "1. Why?\n\n<details>\nIt costs 4 ms.\n</details>\n\n2. And?\n<details>\nNo.\n</details>";
         assert_eq!(solution(page, "Why?"), Some("\n\n<details>\nIt costs 4 ms.\n"));
