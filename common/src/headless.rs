@@ -30,7 +30,7 @@ impl RenderRequest {
     /// The offscreen target for this request: its size, and the samples a
     /// pixel its view is drawn with (its own, or `antialiasing`'s).
     pub fn target<C: Chapter>(&self) -> Target {
-        let samples = C::VIEWS.get(self.view).map_or(self.antialiasing, |v| v.smoothing(self.antialiasing)).samples();
+        let samples = smoothing::<C>(self.view, self.antialiasing).samples();
         Target { format: OFFSCREEN_FORMAT, width: self.width, height: self.height, samples }
     }
 }
@@ -173,6 +173,12 @@ pub fn read_texture(gpu: &Gpu, texture: &wgpu::Texture) -> anyhow::Result<image:
 }
 // ANCHOR_END: readback
 
+/// How view `view` of `C` smooths edges where the run asks for `asked`
+/// (its own setting, if it has one); `asked` for an index past the views.
+fn smoothing<C: Chapter>(view: usize, asked: Antialiasing) -> Antialiasing {
+    C::VIEWS.get(view).map_or(asked, |v| v.smoothing(asked))
+}
+
 /// Records and submits one frame of `chapter` into `target`, its edges
 /// smoothed as the view says or else as `asked`; returns what each pass
 /// drew, as the chapter counted it.
@@ -186,7 +192,7 @@ pub fn draw_frame<C: Chapter>(
 ) -> Vec<PassCount> {
     let mut encoder = gpu.device.create_command_encoder(&wgpu::CommandEncoderDescriptor { label: Some(C::NAME) });
     let drawn = DrawCounts::new();
-    let antialiasing = C::VIEWS.get(view).map_or(asked, |v| v.smoothing(asked));
+    let antialiasing = smoothing::<C>(view, asked);
     chapter.render(gpu, &mut Frame { encoder: &mut encoder, target, time, view, timer, drawn: &drawn, antialiasing });
     timer.resolve(&mut encoder);
     gpu.queue.submit([encoder.finish()]);

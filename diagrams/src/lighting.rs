@@ -502,34 +502,20 @@ pub fn fxaa() -> String {
         }
     }
     svg.line(at(0.0, edge(0.0)), at(columns as f32, edge(columns as f32)), BLUE, 2.0);
-    svg.text(
-        Vec2::new(origin.x, 28.0),
-        "A straight edge (blue line) drawn with one sample a pixel: steps of four pixels. From a pixel on a step,",
-        11.0,
-        "start",
-        INK,
-    );
-    svg.text(
-        Vec2::new(origin.x, 46.0),
-        "FXAA walks both ways along it (red) to the step's ends, and blends in ½ − d/L of the pixel across.",
-        11.0,
-        "start",
-        INK,
-    );
     let below = origin.y + cell * rows as f32 + 26.0;
-    svg.text(
-        Vec2::new(origin.x, below),
-        "Large: the blend FXAA works out from the staircase alone. Small: the share of the other side the edge",
-        11.0,
-        "start",
-        INK,
-    );
-    svg.text(
-        Vec2::new(origin.x, below + 18.0),
-        "really leaves in the pixel, integrated from its equation. For a straight edge they agree.",
-        11.0,
-        "start",
-        INK,
-    );
+    for (y, line) in [
+        (
+            28.0,
+            "A straight edge (blue line) drawn with one sample a pixel: steps of four pixels. From a pixel on a step,",
+        ),
+        (46.0, "FXAA walks both ways along it (red) to the step's ends, and blends in ½ − d/L of the pixel across."),
+        (
+            below,
+            "Large: the blend FXAA works out from the staircase alone. Small: the share of the other side the edge",
+        ),
+        (below + 18.0, "really leaves in the pixel, integrated from its equation. For a straight edge they agree."),
+    ] {
+        svg.text(Vec2::new(origin.x, y), line, 11.0, "start", INK);
+    }
     svg.finish()
 }
