@@ -39,6 +39,16 @@ pub fn ensure_adapter() -> anyhow::Result<()> {
     Ok(())
 }
 
+/// The program that lints as it compiles (`cargo xtask test` builds the
+/// course through it): clippy's driver, which rustup's default profile
+/// installs.
+pub fn clippy_driver() -> anyhow::Result<&'static str> {
+    let driver = "clippy-driver";
+    let runs = Command::new(driver).arg("--version").output().is_ok_and(|out| out.status.success());
+    ensure!(runs, "clippy is not installed ({driver} did not run): install it with `rustup component add clippy`");
+    Ok(driver)
+}
+
 /// [`ensure_adapter`], and Mesa's OpenGL for the snapshot test's GL run.
 pub fn ensure_adapters() -> anyhow::Result<()> {
     ensure_adapter()?;
