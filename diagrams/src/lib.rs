@@ -49,6 +49,8 @@ pub fn all() -> Vec<(&'static str, String)> {
         ("bloom-knee.svg", lighting::bloom_knee()),
         ("downsample-taps.svg", lighting::downsample_taps()),
         ("fxaa.svg", lighting::fxaa()),
+        ("microfacet-terms.svg", lighting::microfacet_terms()),
+        ("white-furnace.svg", lighting::white_furnace()),
         ("tangent-from-uvs.svg", textures::tangent_from_uvs()),
         ("texel-footprint.svg", textures::texel_footprint()),
         ("footprints.svg", textures::footprints()),

@@ -1,7 +1,8 @@
 //! Chapter 08's figures: Lambert's cosine law, a point light's falloff, a
 //! spot light's cone, the half vector, clusters from the side, the tone
-//! curves, and the bloom's chain, knee and downsample taps, from the
-//! chapter's lights, clusters, tone map and bloom.
+//! curves, the bloom's chain, knee and downsample taps, FXAA, and the
+//! microfacet model's terms and white furnace, from the chapter's lights,
+//! clusters, tone map, bloom and physically based shading.
 
 use common::glam::Vec2;
 
@@ -517,5 +518,99 @@ pub fn fxaa() -> String {
     ] {
         svg.text(Vec2::new(origin.x, y), line, 11.0, "start", INK);
     }
+    svg.finish()
+}
+
+/// Chapter 08: the microfacet model's three terms against angle, from
+/// `lighting::pbr`: GGX's D for three roughnesses (log scale), Smith's G₂
+/// with light and eye at the same angle, and Schlick's F for glass's
+/// 0.04 and for a metal's 0.9.
+pub fn microfacet_terms() -> String {
+    use lighting::pbr::{fresnel_schlick, ggx_alpha, ggx_distribution, smith_visibility};
+    let mut svg = Svg::new(660.0, 300.0);
+    let degrees = |x: f32| x.to_radians().cos();
+    let left = Axes { origin: Vec2::new(60.0, 40.0), size: Vec2::new(250.0, 190.0), x: (0.0, 90.0), y: (-2.0, 3.0) };
+    left.draw(&mut svg, &[0.0, 30.0, 60.0, 90.0], &[], "angle between n and h (°)", "D (log scale)");
+    for (power, label) in [(-2.0, "0.01"), (0.0, "1"), (2.0, "100")] {
+        let p = left.at(0.0, power);
+        svg.line(p, p - Vec2::new(5.0, 0.0), INK, 1.0);
+        svg.text(p + Vec2::new(-8.0, 4.0), label, 11.0, "end", INK);
+    }
+    let right = Axes { origin: Vec2::new(390.0, 40.0), size: Vec2::new(250.0, 190.0), x: (0.0, 90.0), y: (0.0, 1.0) };
+    right.draw(&mut svg, &[0.0, 30.0, 60.0, 90.0], &[0.0, 0.5, 1.0], "angle of light and eye to n (°)", "");
+    for (roughness, colour) in [(0.2, ACCENT), (0.5, BLUE), (0.8, "#8a6fb0")] {
+        let alpha = ggx_alpha(roughness);
+        left.curve(&mut svg, |x| ggx_distribution(degrees(x), alpha).max(1e-3).log10(), colour, 2.0);
+        // G₂ = V × 4 n·l n·v, with l and v at the same angle.
+        right.curve(
+            &mut svg,
+            |x| {
+                let c = degrees(x).max(1e-3);
+                smith_visibility(c, c, alpha) * 4.0 * c * c
+            },
+            colour,
+            2.0,
+        );
+        let key = left.at(58.0, 2.8 - 0.35 * (roughness - 0.2) / 0.3);
+        svg.text(key, &format!("roughness {roughness}"), 11.0, "start", colour);
+    }
+    for (f0, colour) in [(0.04, INK), (0.9, MUTED)] {
+        right.curve(&mut svg, |x| fresnel_schlick(common::glam::Vec3::splat(f0), degrees(x)).x, colour, 1.4);
+    }
+    svg.text(right.at(4.0, 0.08) + Vec2::new(0.0, -4.0), "F, f0 = 0.04", 11.0, "start", INK);
+    svg.text(right.at(4.0, 0.8), "F, f0 = 0.9", 11.0, "start", MUTED);
+    svg.text(right.at(4.0, 0.66), "G₂: coloured, by roughness", 11.0, "start", INK);
+    svg.text(Vec2::new(185.0, 292.0), "D: where the facets face", 12.0, "middle", INK);
+    svg.text(Vec2::new(515.0, 292.0), "G₂: facets seen and lit; F: Fresnel", 12.0, "middle", INK);
+    svg.finish()
+}
+
+/// Chapter 08: what a white surface sends back of a white sky that lights
+/// it evenly (the white furnace), against the view's angle: Blinn-Phong's
+/// albedo-plus-highlight with the city's glass settings, and Cook-Torrance
+/// for a white non-metal and a white metal (`lighting::pbr`), each
+/// integrated over the hemisphere here.
+pub fn white_furnace() -> String {
+    use common::glam::Vec3;
+    use lighting::pbr::{Physical, cook_torrance};
+    use std::f32::consts::PI;
+    // ∫ g(l) cos / π dω_l over the hemisphere, on a grid of 96 × 192.
+    let reflected = |n_dot_v: f32, g: &dyn Fn(Vec3, Vec3) -> f32| {
+        let v = Vec3::new((1.0 - n_dot_v * n_dot_v).sqrt(), 0.0, n_dot_v);
+        let (rings, spokes) = (96, 192);
+        let mut sum = 0.0;
+        for i in 0..rings {
+            let theta = (i as f32 + 0.5) / rings as f32 * PI / 2.0;
+            for j in 0..spokes {
+                let phi = (j as f32 + 0.5) / spokes as f32 * 2.0 * PI;
+                let l = Vec3::new(theta.sin() * phi.cos(), theta.sin() * phi.sin(), theta.cos());
+                sum += g(v, l) * l.z / PI * theta.sin() * (PI / 2.0 / rings as f32) * (2.0 * PI / spokes as f32);
+            }
+        }
+        sum
+    };
+    let blinn_phong = |v: Vec3, l: Vec3| {
+        let (albedo, specular, s) = (1.0, 1.0, 16.0);
+        let h = (v + l).normalize();
+        albedo + specular * (s + 8.0) / 8.0 * h.z.max(0.0).powf(s)
+    };
+    let white = |metallic| Physical { base_colour: Vec3::ONE, metallic, roughness: 0.5 };
+    let mut svg = Svg::new(640.0, 300.0);
+    let axes = Axes { origin: Vec2::new(70.0, 40.0), size: Vec2::new(520.0, 190.0), x: (0.05, 1.0), y: (0.0, 2.5) };
+    axes.draw(
+        &mut svg,
+        &[0.25, 0.5, 0.75, 1.0],
+        &[0.0, 0.5, 1.0, 1.5, 2.0, 2.5],
+        "n · v",
+        "light sent back / light arriving",
+    );
+    svg.dashed(axes.at(0.05, 1.0), axes.at(1.0, 1.0), "#c9c2b6");
+    axes.curve(&mut svg, |x| reflected(x, &blinn_phong), MUTED, 2.0);
+    axes.curve(&mut svg, |x| reflected(x, &|v, l| cook_torrance(Vec3::Z, v, l, white(0.0)).x), ACCENT, 2.4);
+    axes.curve(&mut svg, |x| reflected(x, &|v, l| cook_torrance(Vec3::Z, v, l, white(1.0)).x), BLUE, 2.0);
+    svg.text(axes.at(0.45, 2.05), "Blinn-Phong, albedo 1 + highlight 1, s = 16", 11.0, "middle", MUTED);
+    svg.text(axes.at(0.7, 1.08), "1: all the light that arrives", 10.0, "middle", INK);
+    svg.text(axes.at(0.55, 0.72), "Cook-Torrance, white non-metal, roughness 0.5", 11.0, "start", ACCENT);
+    svg.text(axes.at(0.55, 0.56), "Cook-Torrance, white metal, roughness 0.5", 11.0, "start", BLUE);
     svg.finish()
 }

@@ -16,6 +16,9 @@ struct Material {
     albedo_high: vec3<f32>,
     high_from: f32,
     high_to: f32,
+    // Cook-Torrance's: 0 a mirror to 1 chalk, and 0 a non-metal or 1 a metal.
+    roughness: f32,
+    metallic: f32,
 };
 @group(1) @binding(0) var<storage, read> materials: array<Material>;
 
@@ -58,7 +61,8 @@ fn place(vertex: Vertex, instance: Instance) -> Placed {
 // ground_colour), the same formula for every material.
 fn surface_of(material: Material, world: vec3<f32>) -> Surface {
     let high = smoothstep(material.high_from, material.high_to, world.y);
-    return Surface(mix(material.albedo, material.albedo_high, high), material.specular, material.shininess);
+    let albedo = mix(material.albedo, material.albedo_high, high);
+    return Surface(albedo, material.specular, material.shininess, material.roughness, material.metallic);
 }
 // ANCHOR_END: by_height
 

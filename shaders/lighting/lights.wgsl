@@ -5,6 +5,8 @@
 // and clusters.rs, which the tests check.
 #define_import_path lighting::lights
 
+#import lighting::brdf::{MIN_ROUGHNESS, cook_torrance, fresnel_f0, roughness_from_shininess}
+
 // ANCHOR: frame
 struct Frame {
     view_proj: mat4x4<f32>,
@@ -16,8 +18,9 @@ struct Frame {
     sun_colour: vec4<f32>,
     ambient: vec4<f32>,
     // x: lights in use, y: 1 to read cluster lists (0: every light, the
-    // naive loop), z: 1 for Blinn-Phong highlights (0: Phong), w: 1 to show
-    // lights per fragment as a heat map.
+    // naive loop), z: how surfaces reflect (0: Phong's highlight, 1:
+    // Blinn-Phong's, 2: Cook-Torrance, brdf.wgsl), w: 1 to show lights per
+    // fragment as a heat map.
     options: vec4<u32>,
     // x: near, y: far, z: ln(far / near); w: how much emissive glow shows (night).
     depth: vec4<f32>,
@@ -49,14 +52,27 @@ struct Light {
 // Per cluster: (first index in cluster_lights, how many).
 @group(0) @binding(2) var<storage, read> cluster_ranges: array<vec2<u32>>;
 @group(0) @binding(3) var<storage, read> cluster_lights: array<u32>;
+// The split-sum table (pbr.rs: BrdfTable), for Cook-Torrance's sky light.
+@group(0) @binding(4) var brdf_table: texture_2d<f32>;
+@group(0) @binding(5) var brdf_sampler: sampler;
 // ANCHOR_END: frame
 
-// How a surface answers light (chapter 09 fills it from textures).
+// How a surface answers light (chapter 09 fills it from textures): Phong's
+// strength and sharpness of the highlight, or Cook-Torrance's roughness
+// and metalness, with the albedo as base colour.
 struct Surface {
     albedo: vec3<f32>,
     specular: f32,
     shininess: f32,
+    roughness: f32,
+    metallic: f32,
 };
+
+// A surface described the Phong way only: for Cook-Torrance a non-metal,
+// with the roughness read from the shininess (pbr.rs says by what rule).
+fn phong_surface(albedo: vec3<f32>, specular: f32, shininess: f32) -> Surface {
+    return Surface(albedo, specular, shininess, roughness_from_shininess(shininess), 0.0);
+}
 
 // ANCHOR: falloff
 // Inverse-square, windowed to exactly zero at the range (lights.rs explains).
@@ -84,6 +100,9 @@ fn reflected(surface: Surface, n: vec3<f32>, v: vec3<f32>, l: vec3<f32>, radianc
     if n_dot_l <= 0.0 {
         return vec3<f32>(0.0);
     }
+    if frame.options.z == 2u {
+        return radiance * n_dot_l * cook_torrance(n, v, l, surface.albedo, surface.metallic, surface.roughness);
+    }
     var highlight: f32;
     let s = surface.shininess;
     if frame.options.z == 1u {
@@ -96,6 +115,25 @@ fn reflected(surface: Surface, n: vec3<f32>, v: vec3<f32>, l: vec3<f32>, radianc
     return radiance * n_dot_l * (surface.albedo + vec3<f32>(surface.specular * highlight));
 }
 // ANCHOR_END: reflect
+
+// ANCHOR: sky_light
+// The sky's light a surface reflects towards v, taking the sky to be even,
+// of the ambient colour in every direction: for Phong's models albedo
+// times it; for Cook-Torrance what the split-sum table says the facets
+// reflect of it, f0 × A + B, and the rest, where the surface is not a
+// metal, diffused by its body.
+fn sky_light(surface: Surface, n: vec3<f32>, v: vec3<f32>) -> vec3<f32> {
+    if frame.options.z != 2u {
+        return surface.albedo * frame.ambient.rgb;
+    }
+    let n_dot_v = clamp(dot(n, v), 0.0, 1.0);
+    let roughness = clamp(surface.roughness, MIN_ROUGHNESS, 1.0);
+    let split = textureSampleLevel(brdf_table, brdf_sampler, vec2<f32>(n_dot_v, roughness), 0.0).xy;
+    let specular = fresnel_f0(surface.albedo, surface.metallic) * split.x + split.y;
+    let diffuse = (vec3<f32>(1.0) - specular) * (1.0 - clamp(surface.metallic, 0.0, 1.0)) * surface.albedo;
+    return frame.ambient.rgb * (specular + diffuse);
+}
+// ANCHOR_END: sky_light
 
 // ANCHOR: cluster
 // The cluster a world position falls in, or −1 outside the view (the same
@@ -142,7 +180,7 @@ fn light_surface(world: vec3<f32>, n: vec3<f32>, surface: Surface) -> vec3<f32> 
 // 1 in full sun): chapter 10 passes what its shadow map says.
 fn light_surface_sunlit(world: vec3<f32>, n: vec3<f32>, surface: Surface, sunlit: f32) -> vec3<f32> {
     let v = normalize(frame.eye.xyz - world);
-    var colour = surface.albedo * frame.ambient.rgb;
+    var colour = sky_light(surface, n, v);
     colour += reflected(surface, n, v, frame.sun_direction.xyz, frame.sun_colour.rgb * sunlit);
     let list = lights_at(world);
     for (var k = 0u; k < list.y; k++) {

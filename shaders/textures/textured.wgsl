@@ -4,7 +4,7 @@
 // (tangent, bitangent, normal), and `light_surface` does the rest. Lit per
 // fragment (Phong shading), per vertex (Gouraud) or per face (flat), as
 // chapter 08's city is; the textures are read per fragment in all three.
-#import lighting::lights::{frame, Surface, light_surface}
+#import lighting::lights::{frame, Surface, light_surface, phong_surface}
 #import textures::surface::{Vertex, Instance, Varyings, vary, material, albedo_map, normal_map, Frame3, surface_frame, mapped_normal}
 
 // ANCHOR: bindings
@@ -55,7 +55,7 @@ fn glow_at(glow: f32, albedo_texel: vec4<f32>) -> vec3<f32> {
 // The light a surface with normal n sends to the eye, and its own glow.
 fn shade(in: Varyings, n: vec3<f32>, albedo_texel: vec4<f32>) -> vec4<f32> {
     let albedo = albedo_at(in.colour, albedo_texel);
-    let lit = light_surface(in.world, n, Surface(albedo, material.specular, material.shininess));
+    let lit = light_surface(in.world, n, phong_surface(albedo, material.specular, material.shininess));
     return vec4<f32>(lit + glow_at(in.glow, albedo_texel), 1.0);
 }
 
@@ -103,8 +103,8 @@ fn vs_gouraud(vertex: Vertex, instance: Instance) -> LitVaryings {
     // light_surface adds albedo × (sky + diffuse) and specular × highlights:
     // with albedo 1 and no specular it returns the first light, with albedo
     // 0 the second. Two loops, and chapter 08's lights.wgsl as it is.
-    let received = light_surface(v.world, n, Surface(vec3<f32>(1.0), 0.0, material.shininess));
-    let highlights = light_surface(v.world, n, Surface(vec3<f32>(0.0), material.specular, material.shininess));
+    let received = light_surface(v.world, n, phong_surface(vec3<f32>(1.0), 0.0, material.shininess));
+    let highlights = light_surface(v.world, n, phong_surface(vec3<f32>(0.0), material.specular, material.shininess));
     return LitVaryings(v.clip_position, v.uv, v.glow, v.colour, received, highlights);
 }
 
@@ -151,7 +151,7 @@ fn fs_flat(in: FlatVaryings) -> @location(0) vec4<f32> {
     let outwards = select(across, -across, dot(across, in.normal) < 0.0);
     let face = select(normalize(in.normal), normalize(outwards), dot(across, across) > 1e-30);
     let texel = textureSample(albedo_map, surface_sampler, in.uv);
-    let lit = light_surface(in.corner, face, Surface(albedo_at(in.colour, texel), material.specular, material.shininess));
+    let lit = light_surface(in.corner, face, phong_surface(albedo_at(in.colour, texel), material.specular, material.shininess));
     return vec4<f32>(lit + glow_at(in.glow, texel), 1.0);
 }
 // ANCHOR_END: flat

@@ -11,6 +11,7 @@ use common::{MeshData, primitives};
 
 use crate::lights::{Light, LightKind};
 use crate::paths::{PausableClock, Pose, SegmentedPath};
+use crate::pbr::Physical;
 
 /// Roads run every `BLOCK` metres from −`HALF` to `HALF`, both ways.
 pub const HALF: f32 = 180.0;
@@ -145,6 +146,29 @@ impl Material {
         };
         Surface { albedo, specular, shininess, emissive, at_night }
     }
+
+    // ANCHOR: physical
+    /// The same material for Cook-Torrance: its albedo as base colour, and
+    /// how rough and how metallic it is. Glass, water and paint are smooth
+    /// non-metals; metal and the drones' shells are metals; stone, asphalt
+    /// and plants are rough.
+    pub fn physical(self) -> Physical {
+        let (roughness, metallic) = match self {
+            Material::Ground | Material::Hill | Material::Countryside => (0.9, 0.0),
+            Material::Road => (0.75, 0.0),
+            Material::Concrete | Material::Brick | Material::Bark => (0.85, 0.0),
+            Material::Facade => (0.45, 0.0),
+            Material::Metal => (0.35, 1.0),
+            Material::Drone => (0.4, 1.0),
+            Material::Glass | Material::Water => (0.06, 0.0),
+            Material::CarPaint => (0.3, 0.0),
+            Material::Neon | Material::Lamp | Material::Headlight | Material::TailLight => (0.3, 0.0),
+            Material::Leaves => (0.65, 0.0),
+            Material::Billboard => (0.6, 0.0),
+        };
+        Physical { base_colour: self.surface().albedo, metallic, roughness }
+    }
+    // ANCHOR_END: physical
 }
 // ANCHOR_END: materials
 

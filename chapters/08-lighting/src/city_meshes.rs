@@ -96,7 +96,10 @@ pub struct GpuMaterial {
     pub albedo_high: [f32; 3],
     pub high_from: f32,
     pub high_to: f32,
-    pub _padding: [f32; 3],
+    /// Cook-Torrance's (`pbr::Physical`): 0 a mirror to 1 chalk; 0 a non-metal, 1 a metal.
+    pub roughness: f32,
+    pub metallic: f32,
+    pub _padding: f32,
 }
 // ANCHOR_END: material
 
@@ -107,6 +110,7 @@ pub(crate) fn materials(night: f32, highlights: bool) -> Vec<GpuMaterial> {
         .iter()
         .map(|m| {
             let s = m.surface();
+            let physical = m.physical();
             let glow = if s.at_night { night } else { 1.0 };
             let (albedo_high, high_from, high_to) = match m {
                 Material::Countryside => (countryside::GRASS, countryside::SAND_UP_TO, countryside::GRASS_FROM),
@@ -120,14 +124,16 @@ pub(crate) fn materials(night: f32, highlights: bool) -> Vec<GpuMaterial> {
                 albedo_high: albedo_high.into(),
                 high_from,
                 high_to,
-                _padding: [0.0; 3],
+                roughness: physical.roughness,
+                metallic: physical.metallic,
+                _padding: 0.0,
             }
         })
         .collect()
 }
 
 fn city_shader() -> ShaderFile {
-    shader!("lighting/city.wgsl", imports: ["lighting/lights.wgsl"])
+    shader!("lighting/city.wgsl", imports: ["lighting/brdf.wgsl", "lighting/lights.wgsl"])
 }
 
 /// The city's three shadings, and Phong's at one sample a pixel for the

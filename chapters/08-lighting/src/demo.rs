@@ -26,7 +26,7 @@ use crate::scene_lights::{Highlight, LoopOptions, MAX_LIGHTS, SceneLights};
 
 // ANCHOR: views
 /// Every view, once: what it shows, and for a preset where the camera goes.
-pub const VIEW_TABLE: [ViewRow<Settings, CameraPreset>; 33] = [
+pub const VIEW_TABLE: [ViewRow<Settings, CameraPreset>; 36] = [
     ViewRow::mode("day", "the city at noon, from above", Settings::DAY),
     ViewRow::mode("night", "the city at night: street lamps, lit buildings, headlights, bloom", Settings::NIGHT),
     ViewRow::preset(
@@ -52,6 +52,22 @@ pub const VIEW_TABLE: [ViewRow<Settings, CameraPreset>; 33] = [
         "the same with Blinn-Phong's half vector: a wider, softer highlight",
         Settings { shading: Shading::Phong, highlight: Highlight::BlinnPhong, ..Settings::SPHERE },
         CameraPreset::Sphere,
+    ),
+    ViewRow::preset(
+        "cook-torrance",
+        "the same, physically based: smooth glass's small, bright highlight and the sky it reflects at the rim",
+        Settings { shading: Shading::Phong, highlight: Highlight::CookTorrance, ..Settings::SPHERE },
+        CameraPreset::Sphere,
+    ),
+    ViewRow::mode(
+        "pbr-day",
+        "the day view, physically based: metal, glass and paint by roughness and metalness, lit by sun and sky",
+        Settings { highlight: Highlight::CookTorrance, ..Settings::DAY },
+    ),
+    ViewRow::mode(
+        "pbr-night",
+        "the night view, physically based: the same lights through the same clusters",
+        Settings { highlight: Highlight::CookTorrance, ..Settings::NIGHT },
     ),
     ViewRow::preset(
         "ambient",
@@ -600,7 +616,7 @@ impl Chapter for LightingChapter {
         let device = &gpu.device;
         let city = City::new();
         let Scenery { meshes, billboard, countryside_pieces } = scenery(device, &city)?;
-        let scene_lights = SceneLights::new(device);
+        let scene_lights = SceneLights::new(gpu)?;
         let materials = device.create_buffer_init(&wgpu::util::BufferInitDescriptor {
             label: Some("materials"),
             contents: bytemuck::cast_slice(&materials(0.0, true)),
@@ -782,6 +798,7 @@ impl Chapter for LightingChapter {
             ui.label("highlight");
             ui.radio_value(&mut s.highlight, Highlight::Phong, "Phong");
             ui.radio_value(&mut s.highlight, Highlight::BlinnPhong, "Blinn-Phong");
+            ui.radio_value(&mut s.highlight, Highlight::CookTorrance, "Cook-Torrance");
             ui.checkbox(&mut s.highlights, "on");
         });
         let city_lights = self.city.fixed_lights.len() as u32

@@ -16,6 +16,8 @@ pub mod paths;
 pub mod city;
 // Lights, how they fall off, and the sun by time of day.
 pub mod lights;
+// Physically based shading: microfacets, GGX, Smith, Schlick; the split-sum table.
+pub mod pbr;
 // The city's pieces on the GPU, shaded flat, Gouraud or Phong.
 pub mod city_meshes;
 // Which lights reach which cluster of the view.

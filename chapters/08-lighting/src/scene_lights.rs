@@ -3,11 +3,12 @@
 //! the lights and their cluster lists, and how the light loop runs
 //! (`LoopOptions`); out: one bind group and its layout.
 
-use common::chapter::storage_entry;
-use common::{Camera, Gpu, wgpu};
+use common::chapter::{FILTERABLE, sampler_entry, storage_entry, texture_entry};
+use common::{Camera, Gpu, ShaderError, wgpu};
 
 use crate::clusters::{self, CLUSTERS, ClusterLists};
 use crate::lights::{Daylight, GpuLight, Light};
+use crate::pbr::BrdfTable;
 
 /// Which highlight.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -16,6 +17,21 @@ pub enum Highlight {
     Phong,
     /// The half vector against the normal: (n · h)^s.
     BlinnPhong,
+    /// Not a highlight alone but a whole model: microfacets with GGX's
+    /// distribution, Smith's visibility and Schlick's Fresnel, diffuse and
+    /// specular sharing the light between them (`pbr.rs`).
+    CookTorrance,
+}
+
+impl Highlight {
+    /// `options.z` in lights.wgsl.
+    fn code(self) -> u32 {
+        match self {
+            Highlight::Phong => 0,
+            Highlight::BlinnPhong => 1,
+            Highlight::CookTorrance => 2,
+        }
+    }
 }
 
 /// The most lights the buffer holds: the city's own, then beacons.
@@ -62,12 +78,16 @@ pub struct SceneLights {
     lights: wgpu::Buffer,
     ranges: wgpu::Buffer,
     indices: wgpu::Buffer,
+    brdf_table: BrdfTable,
     pub layout: wgpu::BindGroupLayout,
     pub group: wgpu::BindGroup,
 }
 
 impl SceneLights {
-    pub fn new(device: &wgpu::Device) -> Self {
+    /// Computes the split-sum table first (a compute pass), so it fails
+    /// only where `brdf_table.wgsl` does.
+    pub fn new(gpu: &Gpu) -> Result<Self, ShaderError> {
+        let device = &gpu.device;
         let stages = wgpu::ShaderStages::VERTEX_FRAGMENT;
         let layout = device.create_bind_group_layout(&wgpu::BindGroupLayoutDescriptor {
             label: Some("lights"),
@@ -76,6 +96,9 @@ impl SceneLights {
                 storage_entry(1, stages),
                 storage_entry(2, stages),
                 storage_entry(3, stages),
+                // Gouraud and flat shading light vertices, so the table is read there too.
+                wgpu::BindGroupLayoutEntry { visibility: stages, ..texture_entry(4, FILTERABLE) },
+                wgpu::BindGroupLayoutEntry { visibility: stages, ..sampler_entry(5) },
             ],
         });
         let buffer = |label, size: u64, usage| {
@@ -87,16 +110,24 @@ impl SceneLights {
         let lights = buffer("lights", u64::from(MAX_LIGHTS) * 64, storage);
         let ranges = buffer("cluster ranges", CLUSTERS as u64 * 8, storage);
         let indices = buffer("cluster lights", 4 * 4096, storage);
-        let group = Self::group(device, &layout, [&frame, &lights, &ranges, &indices]);
-        Self { frame, lights, ranges, indices, layout, group }
+        let brdf_table = BrdfTable::new(gpu)?;
+        let group = Self::group(device, &layout, [&frame, &lights, &ranges, &indices], &brdf_table);
+        Ok(Self { frame, lights, ranges, indices, brdf_table, layout, group })
     }
 
-    fn group(device: &wgpu::Device, layout: &wgpu::BindGroupLayout, buffers: [&wgpu::Buffer; 4]) -> wgpu::BindGroup {
-        let entries: Vec<wgpu::BindGroupEntry> = buffers
+    fn group(
+        device: &wgpu::Device,
+        layout: &wgpu::BindGroupLayout,
+        buffers: [&wgpu::Buffer; 4],
+        table: &BrdfTable,
+    ) -> wgpu::BindGroup {
+        let mut entries: Vec<wgpu::BindGroupEntry> = buffers
             .iter()
             .enumerate()
             .map(|(i, b)| wgpu::BindGroupEntry { binding: i as u32, resource: b.as_entire_binding() })
             .collect();
+        entries.push(wgpu::BindGroupEntry { binding: 4, resource: wgpu::BindingResource::TextureView(&table.view) });
+        entries.push(wgpu::BindGroupEntry { binding: 5, resource: wgpu::BindingResource::Sampler(&table.sampler) });
         device.create_bind_group(&wgpu::BindGroupDescriptor { label: Some("lights"), layout, entries: &entries })
     }
 
@@ -119,12 +150,7 @@ impl SceneLights {
             sun_direction: day.direction.extend(0.0).into(),
             sun_colour: day.sun.extend(1.0).into(),
             ambient: day.ambient.extend(1.0).into(),
-            options: [
-                count as u32,
-                u32::from(options.culling),
-                u32::from(options.highlight == Highlight::BlinnPhong),
-                u32::from(options.heat_map),
-            ],
+            options: [count as u32, u32::from(options.culling), options.highlight.code(), u32::from(options.heat_map)],
             depth: [camera.near, camera.far, (camera.far / camera.near).ln(), day.night],
             grid: [clusters::GRID[0], clusters::GRID[1], clusters::GRID[2], 0],
         };
@@ -143,8 +169,8 @@ impl SceneLights {
                     usage: wgpu::BufferUsages::STORAGE | wgpu::BufferUsages::COPY_DST,
                     mapped_at_creation: false,
                 });
-                self.group =
-                    Self::group(&gpu.device, &self.layout, [&self.frame, &self.lights, &self.ranges, &self.indices]);
+                let buffers = [&self.frame, &self.lights, &self.ranges, &self.indices];
+                self.group = Self::group(&gpu.device, &self.layout, buffers, &self.brdf_table);
             }
             gpu.queue.write_buffer(&self.ranges, 0, bytemuck::cast_slice(&lists.ranges));
             if !lists.indices.is_empty() {

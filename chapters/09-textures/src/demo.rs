@@ -508,7 +508,7 @@ impl Chapter for TexturesChapter {
         });
         let texture_report =
             TextureReport { materials: materials.list.len(), texels: materials.texels, load_ms, mip_ms };
-        let scene_lights = SceneLights::new(device);
+        let scene_lights = SceneLights::new(gpu)?;
         let post = PostChain::new(gpu, target)?;
         let multisample = post.hdr().multisample();
         let renderer = TexturedRenderer::new(gpu, &scene_lights, &materials, multisample)?;

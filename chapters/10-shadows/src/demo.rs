@@ -430,7 +430,7 @@ impl Chapter for ShadowsChapter {
         let props =
             PropKind::ALL.iter().map(|&kind| load(scene::prop_model(kind))).collect::<anyhow::Result<Vec<_>>>()?;
         let player = load(scene::PLAYER_MODEL)?;
-        let scene_lights = SceneLights::new(device);
+        let scene_lights = SceneLights::new(gpu)?;
         let mut mips = MipMaker::new(gpu)?;
         let mut up = Uploader::new(gpu, &mut mips, read);
         let mut materials = Materials::new(&mut up);

@@ -169,7 +169,8 @@ impl Parallax {
         layout: &wgpu::PipelineLayout,
         multisample: wgpu::MultisampleState,
     ) -> Result<wgpu::RenderPipeline, ShaderError> {
-        let module = shader!("shadows/layers.wgsl", imports: ["lighting/lights.wgsl"]).module(gpu)?;
+        let module =
+            shader!("shadows/layers.wgsl", imports: ["lighting/brdf.wgsl", "lighting/lights.wgsl"]).module(gpu)?;
         let buffer = wgpu::VertexBufferLayout {
             array_stride: std::mem::size_of::<LayerVertex>() as u64,
             step_mode: wgpu::VertexStepMode::Vertex,

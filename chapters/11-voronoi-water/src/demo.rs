@@ -409,7 +409,7 @@ impl Chapter for VoronoiWaterChapter {
         let water = WaterTexture::new(gpu, settings.texture_size)?;
         let show = water_texture::Show::new(gpu, &water, target.format)?;
         let atmosphere = Atmosphere::new(gpu)?;
-        let scene_lights = SceneLights::new(device);
+        let scene_lights = SceneLights::new(gpu)?;
         let shadow_map = ShadowMap::new(gpu, 1024)?;
         let sea = SeaRenderer::new(gpu, &scene_lights, &atmosphere, &shadow_map, sea::sea_waves(), multisample)?;
         let islands = IslandRenderer::new(gpu, &scene_lights, &atmosphere, multisample)?;

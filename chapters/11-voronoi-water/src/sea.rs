@@ -240,6 +240,7 @@ impl SeaRenderer {
         let module = shader!(
             "voronoi-water/sea.wgsl",
             imports: [
+                "lighting/brdf.wgsl",
                 "lighting/lights.wgsl",
                 "shadows/shadow.wgsl",
                 "water/waves.wgsl",

@@ -24,7 +24,7 @@ fn compiles_with(file: ShaderFile, path: &str, edits: &[(&str, &str)]) {
 }
 
 /// The city's shader, with the light loop it imports.
-const CITY: ShaderFile = shader!("lighting/city.wgsl", imports: ["lighting/lights.wgsl"]);
+const CITY: ShaderFile = shader!("lighting/city.wgsl", imports: ["lighting/brdf.wgsl", "lighting/lights.wgsl"]);
 
 /// Where the ray through the centre of pixel (x, y) of a `width` × `height`
 /// picture from `camera` starts, and its direction.
@@ -429,3 +429,30 @@ mod measured {
     pub const NEON_BRIGHTNESS_ACES: Measured = Measured::new(239.0, 3.0);
     pub const NEON_BRIGHTNESS_REINHARD: Measured = Measured::new(208.0, 3.0);
 }
+
+// ANCHOR: facet_weighted
+/// Exercise 6: what a white non-metal of roughness 0.2, seen at n·v = 0.1,
+/// sends back of an even white sky when its diffuse part is weighted by
+/// Fresnel at the facet, (1 − F(v·h)), instead of by what Fresnel lets in
+/// and out, (1 − F(n·l))(1 − F(n·v)) as brdf.wgsl does.
+const FACET_WEIGHTED_FURNACE: f32 = 1.43;
+const COUPLED_FURNACE: f32 = 0.85;
+
+#[test]
+fn exercise_6_weighting_the_diffuse_by_the_facets_fresnel_makes_light() {
+    use lighting::pbr::{self, Physical};
+    let white = Physical { base_colour: Vec3::ONE, metallic: 0.0, roughness: 0.2 };
+    let facet_weighted = |v: Vec3, l: Vec3| {
+        let h = (v + l).normalize();
+        let alpha = pbr::ggx_alpha(white.roughness);
+        let f = pbr::fresnel_schlick(Vec3::splat(pbr::DIELECTRIC_F0), v.dot(h)).x;
+        let specular = f * pbr::ggx_distribution(h.z, alpha) * pbr::smith_visibility(v.z, l.z, alpha);
+        (1.0 - f) + specular * std::f32::consts::PI
+    };
+    let naive = crate::pbr::reflected_of_even_sky(0.1, facet_weighted);
+    let coupled = crate::pbr::reflected_of_even_sky(0.1, |v, l| pbr::cook_torrance(Vec3::Z, v, l, white).x);
+    eprintln!("white furnace at n·v 0.1: facet-weighted {naive:.4}, coupled {coupled:.4}");
+    assert!((naive - FACET_WEIGHTED_FURNACE).abs() < 0.005, "{naive}");
+    assert!((coupled - COUPLED_FURNACE).abs() < 0.005, "{coupled}");
+}
+// ANCHOR_END: facet_weighted

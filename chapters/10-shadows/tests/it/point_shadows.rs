@@ -185,7 +185,7 @@ impl TinyScene {
             draws: vec![Draw { model: &plane, instances: 0..1 }, Draw { model: &boxes, instances: 0..1 }],
         };
         let day = daylight(0.5);
-        let mut lights = SceneLights::new(device);
+        let mut lights = SceneLights::new(gpu).unwrap();
         let options = LoopOptions { culling: false, highlight: Highlight::BlinnPhong, heat_map: false };
         lights.write(gpu, &self.camera, &day, &[], &Default::default(), options);
         // The sun's map is not looked up: its filter is off.

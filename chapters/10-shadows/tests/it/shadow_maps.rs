@@ -71,7 +71,7 @@ fn a_box_above_a_plane_casts_the_shadow_geometry_predicts() {
     let settings = ShadowSettings { size: 1024, filter: Filter::Hard, bias: Bias::DEFAULT, ..Default::default() };
     let light = fit_light(towards_sun, &focus, bounds, settings.size);
 
-    let mut lights = SceneLights::new(device);
+    let mut lights = SceneLights::new(&gpu).unwrap();
     let options = LoopOptions { culling: false, highlight: Highlight::BlinnPhong, heat_map: false };
     lights.write(&gpu, &camera, &day, &[], &Default::default(), options);
     let mut shadow = ShadowMap::new(&gpu, settings.size).unwrap();

@@ -1,0 +1,280 @@
+//! The physics of chapter 08's Cook-Torrance model, checked by numerical
+//! integration over the hemisphere (a midpoint rule on a grid of half
+//! vectors, not the importance sampling the GPU uses): GGX's facets cover
+//! the surface exactly once; a surface reflects no more light than it
+//! receives (the white furnace); light paths reverse (reciprocity); the
+//! height-correlated visibility is Smith's G₂ written another way; the
+//! split-sum table the compute shader makes is the integral; and the
+//! shader's `cook_torrance` is pbr.rs's.
+
+use std::f32::consts::{FRAC_PI_2, PI};
+
+use common::glam::Vec3;
+use common::{Chapter as _, Gpu, ShaderFile, shader, wgpu};
+use lighting::pbr::{self, BrdfTable, Physical};
+
+/// Σ over a grid of half vectors h about the normal +z of g(h) dω_h:
+/// `rings` steps of θ_h from 0 to π/2, `spokes` of φ_h around.
+fn over_half_vectors(rings: usize, spokes: usize, g: impl Fn(Vec3) -> f32) -> f32 {
+    let (d_theta, d_phi) = (FRAC_PI_2 / rings as f32, 2.0 * PI / spokes as f32);
+    let mut sum = 0.0f64;
+    for i in 0..rings {
+        let theta = (i as f32 + 0.5) * d_theta;
+        let (sin_t, cos_t) = theta.sin_cos();
+        for j in 0..spokes {
+            let (sin_p, cos_p) = ((j as f32 + 0.5) * d_phi).sin_cos();
+            let h = Vec3::new(sin_t * cos_p, sin_t * sin_p, cos_t);
+            sum += f64::from(g(h) * sin_t * d_theta * d_phi);
+        }
+    }
+    sum as f32
+}
+
+/// The view at `n_dot_v` to the normal +z.
+fn view_at(n_dot_v: f32) -> Vec3 {
+    Vec3::new((1.0 - n_dot_v * n_dot_v).sqrt(), 0.0, n_dot_v)
+}
+
+/// ∫ f cos dω_l over the hemisphere, for a view at `n_dot_v`, with
+/// `cook_torrance` (which is π f) split by `part` of it: the light a
+/// surface sends towards v of a sky of even light 1. Integrated over half
+/// vectors, where GGX's lobe is narrow and a grid can follow it:
+/// l = 2 (v·h) h − v, and dω_l = 4 (v·h) dω_h.
+pub(crate) fn reflected_of_even_sky(n_dot_v: f32, part: impl Fn(Vec3, Vec3) -> f32) -> f32 {
+    let v = view_at(n_dot_v);
+    over_half_vectors(2048, 128, |h| {
+        let v_dot_h = v.dot(h);
+        let l = 2.0 * v_dot_h * h - v;
+        if l.z <= 0.0 || v_dot_h <= 0.0 {
+            return 0.0;
+        }
+        part(v, l) / PI * l.z * 4.0 * v_dot_h
+    })
+}
+
+const ROUGHNESSES: [f32; 5] = [0.2, 0.35, 0.5, 0.75, 1.0];
+const VIEWS: [f32; 4] = [0.1, 0.3, 0.6, 1.0];
+
+#[test]
+fn ggx_facets_projected_on_the_surface_cover_it_once() {
+    for roughness in [0.1, 0.2, 0.5, 1.0] {
+        let alpha = pbr::ggx_alpha(roughness);
+        let area = over_half_vectors(4096, 8, |h| pbr::ggx_distribution(h.z, alpha) * h.z);
+        assert!((area - 1.0).abs() < 2e-3, "∫ D (n·h) dω = {area} at roughness {roughness}");
+    }
+}
+
+#[test]
+fn the_white_furnace_a_surface_reflects_no_more_than_it_receives() {
+    // A perfect mirror's facets (f0 = 1, every colour) lose light only to
+    // masking; a white non-metal splits what arrives between its facets and
+    // its diffuse body. Neither may give back more than the sky's 1.
+    let mirror = |roughness| Physical { base_colour: Vec3::ONE, metallic: 1.0, roughness };
+    let white = |roughness| Physical { base_colour: Vec3::ONE, metallic: 0.0, roughness };
+    for roughness in ROUGHNESSES {
+        for n_dot_v in VIEWS {
+            let metal = reflected_of_even_sky(n_dot_v, |v, l| pbr::cook_torrance(Vec3::Z, v, l, mirror(roughness)).x);
+            assert!(metal <= 1.0 + 2e-3, "a white metal reflects {metal} at roughness {roughness}, n·v {n_dot_v}");
+            // What single scattering keeps: nearly all of it when smooth,
+            // less at roughness 1, where light bounces between facets.
+            let dielectric =
+                reflected_of_even_sky(n_dot_v, |v, l| pbr::cook_torrance(Vec3::Z, v, l, white(roughness)).x);
+            assert!(dielectric <= 1.0 + 2e-3, "a white non-metal reflects {dielectric} at {roughness}, {n_dot_v}");
+        }
+    }
+    // What the mirror keeps, two ways. Nearly smooth and seen head on, it
+    // keeps nearly all. At roughness 1 (α = 1) D is 1/π everywhere and V is
+    // ½ / (n·l + n·v), so seen head on it keeps ∫ n·l / (n·l + 1) over n·l
+    // from 0 to 1: 1 − ln 2 (the rest would bounce between facets, light
+    // this model does not follow).
+    let smooth = reflected_of_even_sky(1.0, |v, l| pbr::cook_torrance(Vec3::Z, v, l, mirror(0.2)).x);
+    assert!(smooth > 0.99, "a smooth white metal keeps only {smooth}");
+    let rough = reflected_of_even_sky(1.0, |v, l| pbr::cook_torrance(Vec3::Z, v, l, mirror(1.0)).x);
+    let closed_form = 1.0 - 2f32.ln();
+    assert!(
+        (rough - closed_form).abs() < 1e-3,
+        "at roughness 1 a white metal keeps {rough}, not 1 − ln 2 = {closed_form}"
+    );
+}
+
+#[test]
+fn light_paths_reverse_reciprocity() {
+    let mut rng = common::rng::Rng::new(7);
+    let mut direction = || {
+        let z = 0.02 + 0.98 * rng.unit();
+        let phi = 2.0 * PI * rng.unit();
+        let r = (1.0 - z * z).sqrt();
+        Vec3::new(r * phi.cos(), r * phi.sin(), z)
+    };
+    for _ in 0..200 {
+        let (v, l) = (direction(), direction());
+        let surface = Physical { base_colour: Vec3::new(0.8, 0.5, 0.2), metallic: 0.3, roughness: 0.4 };
+        let (there, back) = (pbr::cook_torrance(Vec3::Z, v, l, surface), pbr::cook_torrance(Vec3::Z, l, v, surface));
+        assert!((there - back).abs().max_element() <= 1e-5 * there.max_element().max(1.0), "{there} ≠ {back}");
+    }
+}
+
+#[test]
+fn the_visibility_term_is_smiths_height_correlated_g2() {
+    // Heitz 2014: G₂ = 1 / (1 + Λ(v) + Λ(l)), with GGX's
+    // Λ(θ) = (−1 + √(1 + α² tan² θ)) / 2; V is G₂ / (4 n·l n·v).
+    let lambda = |cos: f32, alpha: f32| {
+        let tan2 = (1.0 - cos * cos) / (cos * cos);
+        (-1.0 + (1.0 + alpha * alpha * tan2).sqrt()) / 2.0
+    };
+    for alpha in [0.01, 0.1, 0.5, 1.0] {
+        for n_dot_v in [0.05, 0.3, 0.9, 1.0] {
+            for n_dot_l in [0.02, 0.5, 1.0] {
+                let g2 = 1.0 / (1.0 + lambda(n_dot_v, alpha) + lambda(n_dot_l, alpha));
+                let expected = g2 / (4.0 * n_dot_l * n_dot_v);
+                let v = pbr::smith_visibility(n_dot_v, n_dot_l, alpha);
+                assert!((v - expected).abs() <= 1e-4 * expected, "V = {v}, G₂/(4 n·l n·v) = {expected}");
+            }
+        }
+    }
+}
+
+#[test]
+fn fresnel_is_f0_head_on_and_one_at_grazing() {
+    let f0 = Vec3::new(0.04, 0.5, 0.9);
+    assert!((pbr::fresnel_schlick(f0, 1.0) - f0).abs().max_element() < 1e-6);
+    assert!((pbr::fresnel_schlick(f0, 0.0) - Vec3::ONE).abs().max_element() < 1e-6);
+    // The Phong exponents the city used map to roughnesses in order.
+    let r = |s| pbr::roughness_from_shininess(s);
+    assert!(r(0.0) == 1.0 && r(8.0) > r(96.0) && r(1e6) < 0.05);
+}
+
+fn gpu() -> Gpu {
+    Gpu::headless(lighting::LightingChapter::gpu_needs()).expect("an adapter (lavapipe will do)")
+}
+
+#[test]
+fn the_split_sum_table_is_the_integral_it_stands_for() {
+    let gpu = gpu();
+    let table = BrdfTable::new(&gpu).unwrap();
+    let texels = common::headless::read_floats(&gpu, &table.texture).unwrap();
+    let size = BrdfTable::SIZE as usize;
+    let mut worst = 0.0f32;
+    for y in [6, 11, 16, 23, 31] {
+        for x in [2, 9, 19, 31] {
+            let (n_dot_v, roughness) = ((x as f32 + 0.5) / size as f32, (y as f32 + 0.5) / size as f32);
+            let alpha = pbr::ggx_alpha(roughness);
+            // A and B: the facets' reflection of a white sky without F,
+            // weighted by 1 − (1 − v·h)⁵ and by (1 − v·h)⁵.
+            let part = |weight: fn(f32) -> f32| {
+                reflected_of_even_sky(n_dot_v, move |v, l| {
+                    let h = (v + l).normalize();
+                    PI * pbr::ggx_distribution(h.z, alpha)
+                        * pbr::smith_visibility(n_dot_v, l.z, alpha)
+                        * weight(v.dot(h))
+                })
+            };
+            let a = part(|v_dot_h| 1.0 - (1.0 - v_dot_h).powi(5));
+            let b = part(|v_dot_h| (1.0 - v_dot_h).powi(5));
+            let [ga, gb, ..] = texels[y * size + x];
+            worst = worst.max((ga - a).abs()).max((gb - b).abs());
+            // 1024 samples and half floats: a hundredth.
+            assert!(
+                (ga - a).abs() < 0.01 && (gb - b).abs() < 0.01,
+                "texel ({x}, {y}): the GPU's A, B = {ga:.4}, {gb:.4}; integrated {a:.4}, {b:.4}"
+            );
+        }
+    }
+    eprintln!("split-sum table: worst difference from the integral {worst:.5}");
+}
+
+/// `cook_torrance` of brdf.wgsl, run by a compute shader on `cases` (n·v's
+/// view, the light, roughness and metallic), with base colour (0.9, 0.6, 0.1).
+const EVALUATE: &str = r#"
+#import lighting::brdf::cook_torrance
+@group(0) @binding(0) var<storage, read> cases: array<vec4<f32>>;
+@group(0) @binding(1) var<storage, read_write> results: array<vec4<f32>>;
+@compute @workgroup_size(64)
+fn cs_evaluate(@builtin(global_invocation_id) id: vec3<u32>) {
+    if id.x >= arrayLength(&cases) / 2u { return; }
+    let v = cases[2u * id.x].xyz;
+    let l = cases[2u * id.x + 1u].xyz;
+    let rm = vec2<f32>(cases[2u * id.x].w, cases[2u * id.x + 1u].w);
+    results[id.x] = vec4<f32>(cook_torrance(vec3<f32>(0.0, 0.0, 1.0), v, l, vec3<f32>(0.9, 0.6, 0.1), rm.y, rm.x), 0.0);
+}
+"#;
+
+#[test]
+fn the_shaders_cook_torrance_is_the_one_the_tests_integrate() {
+    use wgpu::util::DeviceExt as _;
+    let gpu = gpu();
+    let base_colour = Vec3::new(0.9, 0.6, 0.1);
+    let mut rng = common::rng::Rng::new(11);
+    let mut cases: Vec<[f32; 4]> = Vec::new();
+    let mut expected = Vec::new();
+    for i in 0..256 {
+        let mut direction = || {
+            let z = 0.05 + 0.95 * rng.unit();
+            let phi = 2.0 * PI * rng.unit();
+            let r = (1.0 - z * z).sqrt();
+            Vec3::new(r * phi.cos(), r * phi.sin(), z)
+        };
+        let (v, l) = (direction(), direction());
+        // Roughness 0 and 1, and metallic 0 and 1, among the cases.
+        let (roughness, metallic) = ((i % 5) as f32 / 4.0, (i % 3) as f32 / 2.0);
+        cases.push(v.extend(roughness).into());
+        cases.push(l.extend(metallic).into());
+        expected.push(pbr::cook_torrance(Vec3::Z, v, l, Physical { base_colour, metallic, roughness }));
+    }
+    let file =
+        ShaderFile { path: "tests/evaluate.wgsl", embedded: EVALUATE, imports: &[shader!("lighting/brdf.wgsl")] };
+    let module = file.module(&gpu).unwrap();
+    let device = &gpu.device;
+    let pipeline = device.create_compute_pipeline(&wgpu::ComputePipelineDescriptor {
+        label: None,
+        layout: None,
+        module: &module,
+        entry_point: Some("cs_evaluate"),
+        compilation_options: Default::default(),
+        cache: None,
+    });
+    let input = device.create_buffer_init(&wgpu::util::BufferInitDescriptor {
+        label: None,
+        contents: bytemuck::cast_slice(&cases),
+        usage: wgpu::BufferUsages::STORAGE,
+    });
+    let size = (expected.len() * 16) as u64;
+    let output = device.create_buffer(&wgpu::BufferDescriptor {
+        label: None,
+        size,
+        usage: wgpu::BufferUsages::STORAGE | wgpu::BufferUsages::COPY_SRC,
+        mapped_at_creation: false,
+    });
+    let readback = device.create_buffer(&wgpu::BufferDescriptor {
+        label: None,
+        size,
+        usage: wgpu::BufferUsages::MAP_READ | wgpu::BufferUsages::COPY_DST,
+        mapped_at_creation: false,
+    });
+    let group = device.create_bind_group(&wgpu::BindGroupDescriptor {
+        label: None,
+        layout: &pipeline.get_bind_group_layout(0),
+        entries: &[
+            wgpu::BindGroupEntry { binding: 0, resource: input.as_entire_binding() },
+            wgpu::BindGroupEntry { binding: 1, resource: output.as_entire_binding() },
+        ],
+    });
+    let mut encoder = device.create_command_encoder(&Default::default());
+    {
+        let mut pass = encoder.begin_compute_pass(&Default::default());
+        pass.set_pipeline(&pipeline);
+        pass.set_bind_group(0, &group, &[]);
+        pass.dispatch_workgroups((expected.len() as u32).div_ceil(64), 1, 1);
+    }
+    encoder.copy_buffer_to_buffer(&output, 0, &readback, 0, size);
+    gpu.queue.submit([encoder.finish()]);
+    readback.slice(..).map_async(wgpu::MapMode::Read, |_| {});
+    device.poll(wgpu::PollType::wait_indefinitely()).unwrap();
+    let results: Vec<[f32; 4]> = bytemuck::cast_slice(&readback.slice(..).get_mapped_range().unwrap()).to_vec();
+    for (i, (got, want)) in results.iter().zip(&expected).enumerate() {
+        let got = Vec3::new(got[0], got[1], got[2]);
+        assert!(got.is_finite(), "case {i}: {got} (roughness and metallic {:?})", cases[2 * i]);
+        let error = (got - *want).abs().max_element();
+        assert!(error <= 1e-3 * want.max_element().max(1.0), "case {i}: the shader gives {got}, pbr.rs {want}");
+    }
+}
