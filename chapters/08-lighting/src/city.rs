@@ -83,6 +83,11 @@ pub enum Material {
     Billboard,
 }
 
+/// The countryside's ground, linear RGB: sand by the water, grass above
+/// (countryside.rs blends them by height).
+pub const SAND: Vec3 = Vec3::new(0.42, 0.36, 0.22);
+pub const GRASS: Vec3 = Vec3::new(0.05, 0.11, 0.03);
+
 /// How a material responds to light.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Surface {
@@ -137,7 +142,7 @@ impl Material {
             Material::CarPaint => (Vec3::new(0.55, 0.08, 0.05), 0.8, 80.0, Vec3::ZERO, false),
             Material::Drone => (Vec3::new(0.12, 0.12, 0.14), 0.7, 64.0, Vec3::ZERO, false),
             // The sand's colour; city_meshes.rs blends it to grass by height.
-            Material::Countryside => (crate::countryside::SAND, 0.03, 8.0, Vec3::ZERO, false),
+            Material::Countryside => (SAND, 0.03, 8.0, Vec3::ZERO, false),
             Material::Water => (Vec3::new(0.02, 0.055, 0.08), 0.9, 160.0, Vec3::ZERO, false),
             // Bark as tree.mtl has it; the foliage darker than its 0.12, 0.33, 0.12, as deep as the grass.
             Material::Bark => (Vec3::new(0.30, 0.19, 0.11), 0.05, 8.0, Vec3::ZERO, false),

@@ -7,7 +7,7 @@ use common::chapter::mesh_pipeline;
 use common::glam::{Mat3, Mat4, Vec3};
 use common::{Drawn, Gpu, Mesh, MeshData, ShaderError, ShaderFile, Vertex, shader, wgpu};
 
-use crate::city::{Material, Piece, Shape};
+use crate::city::{GRASS, Material, Piece, Shape};
 use crate::countryside;
 use crate::post::HDR_FORMAT;
 
@@ -113,7 +113,7 @@ pub(crate) fn materials(night: f32, highlights: bool) -> Vec<GpuMaterial> {
             let physical = m.physical();
             let glow = if s.at_night { night } else { 1.0 };
             let (albedo_high, high_from, high_to) = match m {
-                Material::Countryside => (countryside::GRASS, countryside::SAND_UP_TO, countryside::GRASS_FROM),
+                Material::Countryside => (GRASS, countryside::SAND_UP_TO, countryside::GRASS_FROM),
                 _ => (s.albedo, 0.0, 1.0),
             };
             GpuMaterial {
@@ -255,5 +255,20 @@ impl CityMeshes {
             }
         }
         drawn
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn the_countryside_material_blends_the_ground_colours_over_the_same_heights() {
+        let gpu = materials(0.0, true)[Material::Countryside as usize];
+        assert_eq!((Vec3::from(gpu.albedo), Vec3::from(gpu.albedo_high)), (crate::city::SAND, GRASS));
+        assert_eq!((gpu.high_from, gpu.high_to), (countryside::SAND_UP_TO, countryside::GRASS_FROM));
+        // At each end of the blend it is countryside.rs's ground colour.
+        assert_eq!(countryside::ground_colour(gpu.high_from), Vec3::from(gpu.albedo));
+        assert_eq!(countryside::ground_colour(gpu.high_to), Vec3::from(gpu.albedo_high));
     }
 }

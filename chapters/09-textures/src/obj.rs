@@ -316,7 +316,7 @@ fn numbers<const N: usize>(words: &[&str], what: &str) -> Result<Option<[f32; N]
 
 /// An sRGB component (as vertex colours are written) to linear light.
 fn srgb_to_linear(c: f32) -> f32 {
-    crate::materials::srgb_to_linear(c.clamp(0.0, 1.0))
+    common::texture::srgb_to_linear(c.clamp(0.0, 1.0))
 }
 
 /// What pass 1 reads: every element, in file order. Elements that are not

@@ -56,15 +56,32 @@ fn every_shader_validates() {
         })
         .collect();
 
-    let mut failures = Vec::new();
-    for (path, source) in &files {
-        let mut imports = Vec::new();
+    // A file's imports, each after the modules it imports in turn
+    // (`lighting::lights` imports `lighting::brdf`).
+    fn add_imports<'m>(
+        source: &str,
+        path: &str,
+        modules: &'m HashMap<String, &(String, String)>,
+        imports: &mut Vec<(&'m str, String)>,
+        failures: &mut Vec<String>,
+    ) {
         for imported in imported_paths(source) {
-            match module_of(&imported, &modules).and_then(|name| modules.get(name)) {
-                Some((import_path, text)) => imports.push((import_path.as_str(), text.clone())),
+            match module_of(&imported, modules).and_then(|name| modules.get(name)) {
+                Some((import_path, text)) => {
+                    if imports.iter().all(|(p, _)| p != import_path) {
+                        add_imports(text, import_path, modules, imports, failures);
+                        imports.push((import_path.as_str(), text.clone()));
+                    }
+                }
                 None => failures.push(format!("{path}: imports unknown module `{imported}`")),
             }
         }
+    }
+
+    let mut failures = Vec::new();
+    for (path, source) in &files {
+        let mut imports = Vec::new();
+        add_imports(source, path, &modules, &mut imports, &mut failures);
         if let Err(error) = common::shader::compose(source, path, &imports) {
             failures.push(error.0);
         }

@@ -2,7 +2,8 @@
 //! bless log, the bench tables' check, real references painted out, and
 //! what needs more than one chapter's pieces (clip distances, the shader
 //! panel, hot reload, light culling, chapter flags headless, the rocks'
-//! levels of detail, chapter 04's fog). (The snapshot test of every view
+//! levels of detail, chapter 04's fog), and that no chapter's modules lean on
+//! each other in a circle. (The snapshot test of every view
 //! is its own harness, `tests/snapshots.rs`.)
 //!
 //! One test binary per crate: each links wgpu, naga, egui and winit, so
@@ -18,6 +19,7 @@ mod fog;
 mod hot_reload;
 mod light_culling;
 mod lod_same_picture;
+mod module_circles;
 mod references;
 mod rock_lod;
 mod try_it_links;

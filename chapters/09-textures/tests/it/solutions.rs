@@ -198,7 +198,10 @@ fn toksvig(average_length: f32, shininess: f32) -> f32 {
 
 fn shade_with(in: Varyings, n: vec3<f32>, albedo_texel: vec4<f32>, shininess: f32) -> vec4<f32> {",
     ),
-    ("Surface(albedo, material.specular, material.shininess)", "Surface(albedo, material.specular, shininess)"),
+    (
+        "phong_surface(albedo, material.specular, material.shininess)",
+        "phong_surface(albedo, material.specular, shininess)",
+    ),
     (
         "        let texel = textureSample(normal_map, surface_sampler, in.uv).xyz;
         n = mapped_normal(frame3, texel, options.flip_green == 1u);
