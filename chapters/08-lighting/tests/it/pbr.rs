@@ -4,14 +4,18 @@
 //! the surface exactly once; a surface reflects no more light than it
 //! receives (the white furnace); light paths reverse (reciprocity); the
 //! height-correlated visibility is Smith's G₂ written another way; the
-//! split-sum table the compute shader makes is the integral; and the
-//! shader's `cook_torrance` is pbr.rs's.
+//! split-sum table the compute shader makes is the integral; the
+//! shader's `cook_torrance` is pbr.rs's; and under a black sky the city's
+//! lamps light the same places as Lambert's, with no NaN.
 
 use std::f32::consts::{FRAC_PI_2, PI};
 
+use common::chapter::view_index;
 use common::glam::Vec3;
-use common::{Chapter as _, Gpu, ShaderFile, shader, wgpu};
+use common::headless::{OFFSCREEN_FORMAT, capture, read_floats};
+use common::{Chapter as _, Gpu, ShaderFile, Target, shader, wgpu};
 use lighting::pbr::{self, BrdfTable, Physical};
+use lighting::{Display, Highlight, LightTerm, LightingChapter, Settings};
 
 /// Σ over a grid of half vectors h about the normal +z of g(h) dω_h:
 /// `rings` steps of θ_h from 0 to π/2, `spokes` of φ_h around.
@@ -145,7 +149,7 @@ fn fresnel_is_f0_head_on_and_one_at_grazing() {
 }
 
 fn gpu() -> Gpu {
-    Gpu::headless(lighting::LightingChapter::gpu_needs()).expect("an adapter (lavapipe will do)")
+    Gpu::headless(LightingChapter::gpu_needs()).expect("an adapter (lavapipe will do)")
 }
 
 #[test]
@@ -277,4 +281,35 @@ fn the_shaders_cook_torrance_is_the_one_the_tests_integrate() {
         let error = (got - *want).abs().max_element();
         assert!(error <= 1e-3 * want.max_element().max(1.0), "case {i}: the shader gives {got}, pbr.rs {want}");
     }
+}
+
+/// The night city lit by its lamps alone (night: no sun; the `diffuse`
+/// term's isolation: a black sky, no glow), shaded by `highlight` at one
+/// sample a pixel: the HDR light of every pixel.
+fn lamplit(gpu: &Gpu, chapter: &mut LightingChapter, highlight: Highlight) -> Vec<[f32; 4]> {
+    let target = Target { format: OFFSCREEN_FORMAT, width: 320, height: 180, samples: 1 };
+    let index = view_index::<LightingChapter>("night").unwrap();
+    chapter.select_view(index);
+    chapter.settings = Settings { highlight, display: Display::Term(LightTerm::Diffuse), ..Settings::NIGHT };
+    capture(gpu, chapter, target, (LightingChapter::SNAPSHOT_TIME, index), common::Antialiasing::Off).unwrap();
+    read_floats(gpu, chapter.post.hdr().colour.texture()).unwrap()
+}
+
+#[test]
+fn under_a_black_sky_lamps_light_the_same_places_with_no_nan() {
+    let gpu = gpu();
+    let target = Target { format: OFFSCREEN_FORMAT, width: 320, height: 180, samples: 1 };
+    let mut chapter = LightingChapter::new(&gpu, target, ()).unwrap();
+    let physical = lamplit(&gpu, &mut chapter, Highlight::CookTorrance);
+    let lambert = lamplit(&gpu, &mut chapter, Highlight::BlinnPhong);
+    let bad = physical.iter().filter(|p| p.iter().any(|c| !c.is_finite() || *c < 0.0)).count();
+    assert_eq!(bad, 0, "{bad} pixels are NaN, infinite or negative");
+    // Where Lambert's term says lamp light falls, Cook-Torrance must not be
+    // black: metals have no diffuse light, but GGX's tail reaches every
+    // direction, and non-metals keep what Fresnel lets in.
+    let lit: Vec<usize> = (0..lambert.len()).filter(|&i| lambert[i][..3].iter().any(|&c| c > 1e-3)).collect();
+    let black = lit.iter().filter(|&&i| physical[i][..3].iter().all(|&c| c <= 0.0)).count();
+    eprintln!("{} of {} pixels lit by lamps; {black} black under Cook-Torrance", lit.len(), lambert.len());
+    assert!(lit.len() > lambert.len() / 20, "only {} pixels are lit: the test sees too little", lit.len());
+    assert_eq!(black, 0, "{black} pixels that lamps light are black under Cook-Torrance");
 }
