@@ -6,6 +6,7 @@
 #define_import_path lighting::lights
 
 #import lighting::brdf::{MIN_ROUGHNESS, cook_torrance, fresnel_f0, roughness_from_shininess}
+#import lighting::sky_light::{PI, sh_irradiance}
 
 // ANCHOR: frame
 struct Frame {
@@ -55,6 +56,8 @@ struct Light {
 // The split-sum table (pbr.rs: BrdfTable), for Cook-Torrance's sky light.
 @group(0) @binding(4) var brdf_table: texture_2d<f32>;
 @group(0) @binding(5) var brdf_sampler: sampler;
+// The sky's radiance in nine spherical harmonics (irradiance.rs).
+@group(0) @binding(6) var<storage, read> sky_harmonics: array<vec4<f32>, 9>;
 // ANCHOR_END: frame
 
 // How a surface answers light (chapter 09 fills it from textures): Phong's
@@ -117,11 +120,13 @@ fn reflected(surface: Surface, n: vec3<f32>, v: vec3<f32>, l: vec3<f32>, radianc
 // ANCHOR_END: reflect
 
 // ANCHOR: sky_light
-// The sky's light a surface reflects towards v, taking the sky to be even,
-// of the ambient colour in every direction: for Phong's models albedo
-// times it; for Cook-Torrance what the split-sum table says the facets
-// reflect of it, f0 × A + B, and the rest, where the surface is not a
-// metal, diffused by its body.
+// The sky's light a surface reflects towards v. For Phong's models, albedo
+// times the ambient colour, the same whichever way the surface faces. For
+// Cook-Torrance, the sky itself: its body diffuses the irradiance the
+// harmonics give for its normal, where it is not a metal; its facets
+// reflect what the split-sum table says they reflect of an even sky,
+// f0 × A + B, here of the sky's mean radiance (a picture of the sky
+// blurred by roughness, a prefiltered map, would give the right direction).
 fn sky_light(surface: Surface, n: vec3<f32>, v: vec3<f32>) -> vec3<f32> {
     if frame.options.z != 2u {
         return surface.albedo * frame.ambient.rgb;
@@ -131,7 +136,9 @@ fn sky_light(surface: Surface, n: vec3<f32>, v: vec3<f32>) -> vec3<f32> {
     let split = textureSampleLevel(brdf_table, brdf_sampler, vec2<f32>(n_dot_v, roughness), 0.0).xy;
     let specular = fresnel_f0(surface.albedo, surface.metallic) * split.x + split.y;
     let diffuse = (vec3<f32>(1.0) - specular) * (1.0 - clamp(surface.metallic, 0.0, 1.0)) * surface.albedo;
-    return frame.ambient.rgb * (specular + diffuse);
+    // Y₀₀ = 1 / (2√π): the first coefficient times it is the mean radiance.
+    let mean_sky = sky_harmonics[0].rgb * 0.282095;
+    return diffuse * sh_irradiance(sky_harmonics, n) / PI + specular * mean_sky;
 }
 // ANCHOR_END: sky_light
 

@@ -3,6 +3,7 @@
 // (chapter 06's trick). A piece of its own (`CitySky`), so that chapter 09
 // draws the same sky over its textured city.
 #import lighting::lights::frame
+#import lighting::sky_light::sky_radiance
 #import common::fullscreen::{FullscreenOutput, fullscreen_triangle, uv_to_ndc}
 
 struct Sky {
@@ -24,7 +25,9 @@ fn fs_sky(in: FullscreenOutput) -> @location(0) vec4<f32> {
     }
     let far = sky.clip_to_world * vec4<f32>(uv_to_ndc(in.uv), 1.0, 1.0);
     let direction = normalize(far.xyz / far.w);
-    var colour = mix(sky.horizon.rgb, sky.zenith.rgb, smoothstep(0.0, 0.6, direction.y));
+    // Below the horizon, the horizon's colour: the city and its fields
+    // stand in front of it.
+    var colour = sky_radiance(direction, sky.horizon.rgb, sky.zenith.rgb, sky.horizon.rgb);
     let towards_sun = max(dot(direction, frame.sun_direction.xyz), 0.0);
     colour += frame.sun_colour.rgb * (8.0 * smoothstep(0.9995, 0.9998, towards_sun) + 0.15 * pow(towards_sun, 64.0));
     return vec4<f32>(colour, 1.0);

@@ -133,7 +133,7 @@ pub(crate) fn materials(night: f32, highlights: bool) -> Vec<GpuMaterial> {
 }
 
 fn city_shader() -> ShaderFile {
-    shader!("lighting/city.wgsl", imports: ["lighting/brdf.wgsl", "lighting/lights.wgsl"])
+    shader!("lighting/city.wgsl", imports: ["lighting/brdf.wgsl", "lighting/sky_light.wgsl", "lighting/lights.wgsl"])
 }
 
 /// The city's three shadings, and Phong's at one sample a pixel for the

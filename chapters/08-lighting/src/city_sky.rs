@@ -67,7 +67,7 @@ impl CitySky {
         multisample: wgpu::MultisampleState,
     ) -> Result<wgpu::RenderPipeline, ShaderError> {
         let module =
-            shader!("lighting/sky.wgsl", imports: ["lighting/brdf.wgsl", "lighting/lights.wgsl", "common/fullscreen.wgsl"]).module(gpu)?;
+            shader!("lighting/sky.wgsl", imports: ["lighting/brdf.wgsl", "lighting/sky_light.wgsl", "lighting/lights.wgsl", "common/fullscreen.wgsl"]).module(gpu)?;
         // At the far plane, behind everything drawn before it.
         let depth = wgpu::DepthStencilState {
             format: common::texture::DEPTH_FORMAT,

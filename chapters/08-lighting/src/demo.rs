@@ -324,7 +324,11 @@ impl LightTerm {
                 day.sun = Vec3::ZERO;
                 lights.clear();
             }
-            Self::Diffuse | Self::Specular => day.ambient = Vec3::ZERO,
+            // The sky's light: the ambient colour, and for Cook-Torrance the
+            // sky itself (these views do not draw it).
+            Self::Diffuse | Self::Specular => {
+                (day.ambient, day.horizon, day.zenith) = (Vec3::ZERO, Vec3::ZERO, Vec3::ZERO)
+            }
         }
     }
 }

@@ -18,6 +18,8 @@ pub mod city;
 pub mod lights;
 // Physically based shading: microfacets, GGX, Smith, Schlick; the split-sum table.
 pub mod pbr;
+// The sky as a light: its radiance in nine spherical harmonics, by compute.
+pub mod irradiance;
 // The city's pieces on the GPU, shaded flat, Gouraud or Phong.
 pub mod city_meshes;
 // Which lights reach which cluster of the view.

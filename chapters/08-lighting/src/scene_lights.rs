@@ -7,6 +7,7 @@ use common::chapter::{FILTERABLE, sampler_entry, storage_entry, texture_entry};
 use common::{Camera, Gpu, ShaderError, wgpu};
 
 use crate::clusters::{self, CLUSTERS, ClusterLists};
+use crate::irradiance::{SkyColours, SkyIrradiance};
 use crate::lights::{Daylight, GpuLight, Light};
 use crate::pbr::BrdfTable;
 
@@ -79,6 +80,7 @@ pub struct SceneLights {
     ranges: wgpu::Buffer,
     indices: wgpu::Buffer,
     brdf_table: BrdfTable,
+    sky: SkyIrradiance,
     pub layout: wgpu::BindGroupLayout,
     pub group: wgpu::BindGroup,
 }
@@ -99,6 +101,7 @@ impl SceneLights {
                 // Gouraud and flat shading light vertices, so the table is read there too.
                 wgpu::BindGroupLayoutEntry { visibility: stages, ..texture_entry(4, FILTERABLE) },
                 wgpu::BindGroupLayoutEntry { visibility: stages, ..sampler_entry(5) },
+                storage_entry(6, stages),
             ],
         });
         let buffer = |label, size: u64, usage| {
@@ -111,8 +114,9 @@ impl SceneLights {
         let ranges = buffer("cluster ranges", CLUSTERS as u64 * 8, storage);
         let indices = buffer("cluster lights", 4 * 4096, storage);
         let brdf_table = BrdfTable::new(gpu)?;
-        let group = Self::group(device, &layout, [&frame, &lights, &ranges, &indices], &brdf_table);
-        Ok(Self { frame, lights, ranges, indices, brdf_table, layout, group })
+        let sky = SkyIrradiance::new(gpu)?;
+        let group = Self::group(device, &layout, [&frame, &lights, &ranges, &indices], &brdf_table, &sky);
+        Ok(Self { frame, lights, ranges, indices, brdf_table, sky, layout, group })
     }
 
     fn group(
@@ -120,6 +124,7 @@ impl SceneLights {
         layout: &wgpu::BindGroupLayout,
         buffers: [&wgpu::Buffer; 4],
         table: &BrdfTable,
+        sky: &SkyIrradiance,
     ) -> wgpu::BindGroup {
         let mut entries: Vec<wgpu::BindGroupEntry> = buffers
             .iter()
@@ -128,6 +133,7 @@ impl SceneLights {
             .collect();
         entries.push(wgpu::BindGroupEntry { binding: 4, resource: wgpu::BindingResource::TextureView(&table.view) });
         entries.push(wgpu::BindGroupEntry { binding: 5, resource: wgpu::BindingResource::Sampler(&table.sampler) });
+        entries.push(wgpu::BindGroupEntry { binding: 6, resource: sky.coefficients.as_entire_binding() });
         device.create_bind_group(&wgpu::BindGroupDescriptor { label: Some("lights"), layout, entries: &entries })
     }
 
@@ -155,6 +161,7 @@ impl SceneLights {
             grid: [clusters::GRID[0], clusters::GRID[1], clusters::GRID[2], 0],
         };
         gpu.queue.write_buffer(&self.frame, 0, bytemuck::bytes_of(&frame));
+        self.sky.update(gpu, SkyColours::of(day));
         let gpu_lights: Vec<GpuLight> = lights[..count].iter().map(Light::to_gpu).collect();
         if !gpu_lights.is_empty() {
             gpu.queue.write_buffer(&self.lights, 0, bytemuck::cast_slice(&gpu_lights));
@@ -170,7 +177,7 @@ impl SceneLights {
                     mapped_at_creation: false,
                 });
                 let buffers = [&self.frame, &self.lights, &self.ranges, &self.indices];
-                self.group = Self::group(&gpu.device, &self.layout, buffers, &self.brdf_table);
+                self.group = Self::group(&gpu.device, &self.layout, buffers, &self.brdf_table, &self.sky);
             }
             gpu.queue.write_buffer(&self.ranges, 0, bytemuck::cast_slice(&lists.ranges));
             if !lists.indices.is_empty() {

@@ -143,7 +143,7 @@ impl TexturedRenderer {
         layout: &wgpu::PipelineLayout,
         multisample: wgpu::MultisampleState,
     ) -> Result<Pipelines, ShaderError> {
-        let module = shader!("textures/textured.wgsl", imports: ["lighting/brdf.wgsl", "lighting/lights.wgsl", "textures/surface.wgsl"])
+        let module = shader!("textures/textured.wgsl", imports: ["lighting/brdf.wgsl", "lighting/sky_light.wgsl", "lighting/lights.wgsl", "textures/surface.wgsl"])
             .module(gpu)?;
         let buffers = [Some(TexturedVertex::LAYOUT), Some(ModelInstance::LAYOUT)];
         let pipeline =

@@ -170,7 +170,7 @@ impl Parallax {
         multisample: wgpu::MultisampleState,
     ) -> Result<wgpu::RenderPipeline, ShaderError> {
         let module =
-            shader!("shadows/layers.wgsl", imports: ["lighting/brdf.wgsl", "lighting/lights.wgsl"]).module(gpu)?;
+            shader!("shadows/layers.wgsl", imports: ["lighting/brdf.wgsl", "lighting/sky_light.wgsl", "lighting/lights.wgsl"]).module(gpu)?;
         let buffer = wgpu::VertexBufferLayout {
             array_stride: std::mem::size_of::<LayerVertex>() as u64,
             step_mode: wgpu::VertexStepMode::Vertex,

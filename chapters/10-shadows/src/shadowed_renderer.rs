@@ -107,7 +107,7 @@ impl ShadowedRenderer {
     ) -> Result<(wgpu::RenderPipeline, wgpu::RenderPipeline), ShaderError> {
         let module = shader!(
             "shadows/scene.wgsl",
-            imports: ["lighting/brdf.wgsl", "lighting/lights.wgsl", "textures/surface.wgsl", "shadows/shadow.wgsl", "shadows/point_shadow.wgsl"]
+            imports: ["lighting/brdf.wgsl", "lighting/sky_light.wgsl", "lighting/lights.wgsl", "textures/surface.wgsl", "shadows/shadow.wgsl", "shadows/point_shadow.wgsl"]
         )
         .module(gpu)?;
         let buffers = [Some(TexturedVertex::LAYOUT), Some(ModelInstance::LAYOUT)];

@@ -154,7 +154,7 @@ impl IslandRenderer {
     ) -> Result<wgpu::RenderPipeline, ShaderError> {
         let module = shader!(
             "voronoi-water/islands.wgsl",
-            imports: ["lighting/brdf.wgsl", "lighting/lights.wgsl", "voronoi-water/atmosphere.wgsl"]
+            imports: ["lighting/brdf.wgsl", "lighting/sky_light.wgsl", "lighting/lights.wgsl", "voronoi-water/atmosphere.wgsl"]
         )
         .module(gpu)?;
         let buffers = [

@@ -241,6 +241,7 @@ impl SeaRenderer {
             "voronoi-water/sea.wgsl",
             imports: [
                 "lighting/brdf.wgsl",
+                "lighting/sky_light.wgsl",
                 "lighting/lights.wgsl",
                 "shadows/shadow.wgsl",
                 "water/waves.wgsl",

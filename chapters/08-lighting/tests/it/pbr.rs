@@ -6,7 +6,9 @@
 //! height-correlated visibility is Smith's G₂ written another way; the
 //! split-sum table the compute shader makes is the integral; the
 //! shader's `cook_torrance` is pbr.rs's; and under a black sky the city's
-//! lamps light the same places as Lambert's, with no NaN.
+//! lamps light the same places as Lambert's, with no NaN; and the sky's
+//! spherical harmonics, projected by a compute shader, give the closed-form
+//! irradiance of an even sky and of a sky lit from one side.
 
 use std::f32::consts::{FRAC_PI_2, PI};
 
@@ -14,6 +16,7 @@ use common::chapter::view_index;
 use common::glam::Vec3;
 use common::headless::{OFFSCREEN_FORMAT, capture, read_floats};
 use common::{Chapter as _, Gpu, ShaderFile, Target, shader, wgpu};
+use lighting::irradiance::{SkyColours, SkyIrradiance};
 use lighting::pbr::{self, BrdfTable, Physical};
 use lighting::{Display, Highlight, LightTerm, LightingChapter, Settings};
 
@@ -203,46 +206,27 @@ fn cs_evaluate(@builtin(global_invocation_id) id: vec3<u32>) {
 }
 "#;
 
-#[test]
-fn the_shaders_cook_torrance_is_the_one_the_tests_integrate() {
+/// Runs `entry` of `file` over `input` (binding 0, read-only storage) into
+/// `outputs` vec4s (binding 1), one invocation of 64 per output, and reads
+/// them back.
+fn run_compute(gpu: &Gpu, file: ShaderFile, entry: &str, input: &[[f32; 4]], outputs: usize) -> Vec<[f32; 4]> {
     use wgpu::util::DeviceExt as _;
-    let gpu = gpu();
-    let base_colour = Vec3::new(0.9, 0.6, 0.1);
-    let mut rng = common::rng::Rng::new(11);
-    let mut cases: Vec<[f32; 4]> = Vec::new();
-    let mut expected = Vec::new();
-    for i in 0..256 {
-        let mut direction = || {
-            let z = 0.05 + 0.95 * rng.unit();
-            let phi = 2.0 * PI * rng.unit();
-            let r = (1.0 - z * z).sqrt();
-            Vec3::new(r * phi.cos(), r * phi.sin(), z)
-        };
-        let (v, l) = (direction(), direction());
-        // Roughness 0 and 1, and metallic 0 and 1, among the cases.
-        let (roughness, metallic) = ((i % 5) as f32 / 4.0, (i % 3) as f32 / 2.0);
-        cases.push(v.extend(roughness).into());
-        cases.push(l.extend(metallic).into());
-        expected.push(pbr::cook_torrance(Vec3::Z, v, l, Physical { base_colour, metallic, roughness }));
-    }
-    let file =
-        ShaderFile { path: "tests/evaluate.wgsl", embedded: EVALUATE, imports: &[shader!("lighting/brdf.wgsl")] };
-    let module = file.module(&gpu).unwrap();
+    let module = file.module(gpu).unwrap();
     let device = &gpu.device;
     let pipeline = device.create_compute_pipeline(&wgpu::ComputePipelineDescriptor {
         label: None,
         layout: None,
         module: &module,
-        entry_point: Some("cs_evaluate"),
+        entry_point: Some(entry),
         compilation_options: Default::default(),
         cache: None,
     });
     let input = device.create_buffer_init(&wgpu::util::BufferInitDescriptor {
         label: None,
-        contents: bytemuck::cast_slice(&cases),
+        contents: bytemuck::cast_slice(input),
         usage: wgpu::BufferUsages::STORAGE,
     });
-    let size = (expected.len() * 16) as u64;
+    let size = (outputs * 16) as u64;
     let output = device.create_buffer(&wgpu::BufferDescriptor {
         label: None,
         size,
@@ -268,13 +252,39 @@ fn the_shaders_cook_torrance_is_the_one_the_tests_integrate() {
         let mut pass = encoder.begin_compute_pass(&Default::default());
         pass.set_pipeline(&pipeline);
         pass.set_bind_group(0, &group, &[]);
-        pass.dispatch_workgroups((expected.len() as u32).div_ceil(64), 1, 1);
+        pass.dispatch_workgroups((outputs as u32).div_ceil(64), 1, 1);
     }
     encoder.copy_buffer_to_buffer(&output, 0, &readback, 0, size);
     gpu.queue.submit([encoder.finish()]);
     readback.slice(..).map_async(wgpu::MapMode::Read, |_| {});
     device.poll(wgpu::PollType::wait_indefinitely()).unwrap();
-    let results: Vec<[f32; 4]> = bytemuck::cast_slice(&readback.slice(..).get_mapped_range().unwrap()).to_vec();
+    bytemuck::cast_slice(&readback.slice(..).get_mapped_range().unwrap()).to_vec()
+}
+
+#[test]
+fn the_shaders_cook_torrance_is_the_one_the_tests_integrate() {
+    let gpu = gpu();
+    let base_colour = Vec3::new(0.9, 0.6, 0.1);
+    let mut rng = common::rng::Rng::new(11);
+    let mut cases: Vec<[f32; 4]> = Vec::new();
+    let mut expected = Vec::new();
+    for i in 0..256 {
+        let mut direction = || {
+            let z = 0.05 + 0.95 * rng.unit();
+            let phi = 2.0 * PI * rng.unit();
+            let r = (1.0 - z * z).sqrt();
+            Vec3::new(r * phi.cos(), r * phi.sin(), z)
+        };
+        let (v, l) = (direction(), direction());
+        // Roughness 0 and 1, and metallic 0 and 1, among the cases.
+        let (roughness, metallic) = ((i % 5) as f32 / 4.0, (i % 3) as f32 / 2.0);
+        cases.push(v.extend(roughness).into());
+        cases.push(l.extend(metallic).into());
+        expected.push(pbr::cook_torrance(Vec3::Z, v, l, Physical { base_colour, metallic, roughness }));
+    }
+    let file =
+        ShaderFile { path: "tests/evaluate.wgsl", embedded: EVALUATE, imports: &[shader!("lighting/brdf.wgsl")] };
+    let results = run_compute(&gpu, file, "cs_evaluate", &cases, expected.len());
     for (i, (got, want)) in results.iter().zip(&expected).enumerate() {
         let got = Vec3::new(got[0], got[1], got[2]);
         assert!(got.is_finite(), "case {i}: {got} (roughness and metallic {:?})", cases[2 * i]);
@@ -312,4 +322,103 @@ fn under_a_black_sky_lamps_light_the_same_places_with_no_nan() {
     eprintln!("{} of {} pixels lit by lamps; {black} black under Cook-Torrance", lit.len(), lambert.len());
     assert!(lit.len() > lambert.len() / 20, "only {} pixels are lit: the test sees too little", lit.len());
     assert_eq!(black, 0, "{black} pixels that lamps light are black under Cook-Torrance");
+}
+
+/// The irradiance at normal `n` from nine spherical-harmonic coefficients
+/// of radiance, written out here from the standard real harmonics and the
+/// clamped cosine's band factors π, 2π/3, π/4 (Ramamoorthi and Hanrahan
+/// 2001), not taken from sky_light.wgsl.
+fn irradiance_from(sh: &[[f32; 4]], n: Vec3) -> Vec3 {
+    let (x, y, z) = (n.x, n.y, n.z);
+    let c = |k: usize| Vec3::new(sh[k][0], sh[k][1], sh[k][2]);
+    let (a0, a1, a2) = (PI, 2.0 * PI / 3.0, PI / 4.0);
+    let k0 = 0.5 / PI.sqrt();
+    let k1 = (3.0 / (4.0 * PI)).sqrt();
+    let k2 = 0.5 * (15.0 / PI).sqrt();
+    let k20 = 0.25 * (5.0 / PI).sqrt();
+    a0 * k0 * c(0)
+        + a1 * k1 * (c(1) * y + c(2) * z + c(3) * x)
+        + a2 * (k2 * (c(4) * x * y + c(5) * y * z + c(7) * x * z)
+            + k20 * (3.0 * z * z - 1.0) * c(6)
+            + 0.5 * k2 * (x * x - y * y) * c(8))
+}
+
+fn project(gpu: &Gpu, sky: &mut SkyIrradiance, colours: SkyColours) -> Vec<[f32; 4]> {
+    sky.update(gpu, colours);
+    let readback = gpu.device.create_buffer(&wgpu::BufferDescriptor {
+        label: None,
+        size: 9 * 16,
+        usage: wgpu::BufferUsages::MAP_READ | wgpu::BufferUsages::COPY_DST,
+        mapped_at_creation: false,
+    });
+    let mut encoder = gpu.device.create_command_encoder(&Default::default());
+    encoder.copy_buffer_to_buffer(&sky.coefficients, 0, &readback, 0, 9 * 16);
+    gpu.queue.submit([encoder.finish()]);
+    readback.slice(..).map_async(wgpu::MapMode::Read, |_| {});
+    gpu.device.poll(wgpu::PollType::wait_indefinitely()).unwrap();
+    bytemuck::cast_slice(&readback.slice(..).get_mapped_range().unwrap()).to_vec()
+}
+
+#[test]
+fn the_sky_harmonics_give_the_irradiance_of_known_skies() {
+    let gpu = gpu();
+    let mut sky = SkyIrradiance::new(&gpu).unwrap();
+    let normals = [Vec3::Y, -Vec3::Y, Vec3::X, Vec3::new(0.3, 0.8, -0.52).normalize(), Vec3::new(0.0, -0.6, 0.8)];
+    // A sky of even light L everywhere: E = π L whichever way a surface faces.
+    let even = Vec3::new(0.4, 0.5, 0.7);
+    let sh = project(&gpu, &mut sky, SkyColours { horizon: even, zenith: even, ground: even });
+    for n in normals {
+        let e = irradiance_from(&sh, n);
+        assert!((e - PI * even).abs().max_element() < 2e-3, "even sky: {e} at {n}, not {}", PI * even);
+    }
+    // Light 1 from above the horizon and none from below: E = π (1 + n_y) / 2,
+    // which has harmonics of bands 0 and 1 only, so nine are exact.
+    let sh = project(&gpu, &mut sky, SkyColours { horizon: Vec3::ONE, zenith: Vec3::ONE, ground: Vec3::ZERO });
+    for n in normals {
+        let e = irradiance_from(&sh, n).x;
+        let exact = PI * (1.0 + n.y) / 2.0;
+        assert!((e - exact).abs() < 5e-3, "one-sided sky: {e} at {n}, not {exact}");
+    }
+}
+
+/// `sh_irradiance` of sky_light.wgsl, for the nine coefficients in
+/// `input[0..9]` and the normal in each later element.
+const IRRADIANCE: &str = r#"
+#import lighting::sky_light::sh_irradiance
+@group(0) @binding(0) var<storage, read> input: array<vec4<f32>>;
+@group(0) @binding(1) var<storage, read_write> results: array<vec4<f32>>;
+@compute @workgroup_size(64)
+fn cs_irradiance(@builtin(global_invocation_id) id: vec3<u32>) {
+    if id.x + 9u >= arrayLength(&input) { return; }
+    var sh: array<vec4<f32>, 9>;
+    for (var k = 0u; k < 9u; k++) { sh[k] = input[k]; }
+    results[id.x] = vec4<f32>(sh_irradiance(sh, input[9u + id.x].xyz), 0.0);
+}
+"#;
+
+#[test]
+fn the_shaders_irradiance_is_the_one_written_out_here() {
+    let gpu = gpu();
+    let mut rng = common::rng::Rng::new(5);
+    // Coefficients of a sky whose irradiance stays positive: a strong
+    // constant band and small others.
+    let mut input: Vec<[f32; 4]> = (0..9)
+        .map(|k| [0.0, 1.0, 2.0].map(|c| if k == 0 { 2.0 + c } else { rng.range(-0.3, 0.3) }))
+        .map(|[r, g, b]| [r, g, b, 0.0])
+        .collect();
+    let normals: Vec<Vec3> = (0..32)
+        .map(|_| Vec3::new(rng.range(-1.0, 1.0), rng.range(-1.0, 1.0), rng.range(-1.0, 1.0)).normalize())
+        .collect();
+    input.extend(normals.iter().map(|n| n.extend(0.0).to_array()));
+    let file = ShaderFile {
+        path: "tests/irradiance.wgsl",
+        embedded: IRRADIANCE,
+        imports: &[shader!("lighting/sky_light.wgsl")],
+    };
+    let results = run_compute(&gpu, file, "cs_irradiance", &input, normals.len());
+    for (n, got) in normals.iter().zip(&results) {
+        let want = irradiance_from(&input[..9], *n);
+        let got = Vec3::new(got[0], got[1], got[2]);
+        assert!((got - want).abs().max_element() < 1e-4 * want.max_element().max(1.0), "at {n}: {got}, not {want}");
+    }
 }

@@ -24,7 +24,8 @@ fn compiles_with(file: ShaderFile, path: &str, edits: &[(&str, &str)]) {
 }
 
 /// The city's shader, with the light loop it imports.
-const CITY: ShaderFile = shader!("lighting/city.wgsl", imports: ["lighting/brdf.wgsl", "lighting/lights.wgsl"]);
+const CITY: ShaderFile =
+    shader!("lighting/city.wgsl", imports: ["lighting/brdf.wgsl", "lighting/sky_light.wgsl", "lighting/lights.wgsl"]);
 
 /// Where the ray through the centre of pixel (x, y) of a `width` × `height`
 /// picture from `camera` starts, and its direction.

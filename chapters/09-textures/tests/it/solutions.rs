@@ -256,7 +256,7 @@ fn exercise_3_toksvig_widens_the_metal_highlight_from_afar() {
         &[KEEP_LENGTH],
     );
     compiles_with(
-        shader!("textures/textured.wgsl", imports: ["lighting/brdf.wgsl", "lighting/lights.wgsl", "textures/surface.wgsl"]),
+        shader!("textures/textured.wgsl", imports: ["lighting/brdf.wgsl", "lighting/sky_light.wgsl", "lighting/lights.wgsl", "textures/surface.wgsl"]),
         "textures/textured.wgsl",
         &TOKSVIG,
     );

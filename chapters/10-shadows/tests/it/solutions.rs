@@ -326,7 +326,7 @@ fn exercise_5_a_near_cascade_halves_the_texel_where_the_view_is_close() {
     compiles_with(
         shader!(
             "shadows/scene.wgsl",
-            imports: ["lighting/brdf.wgsl", "lighting/lights.wgsl", "textures/surface.wgsl", "shadows/shadow.wgsl", "shadows/point_shadow.wgsl"]
+            imports: ["lighting/brdf.wgsl", "lighting/sky_light.wgsl", "lighting/lights.wgsl", "textures/surface.wgsl", "shadows/shadow.wgsl", "shadows/point_shadow.wgsl"]
         ),
         "shadows/shadow.wgsl",
         &SECOND_CASCADE,

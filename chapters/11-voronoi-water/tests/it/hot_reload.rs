@@ -13,7 +13,7 @@ use voronoi_water::VoronoiWaterChapter;
 
 /// Every WGSL file the chapter builds pipelines from, with the pieces that
 /// read it.
-const FILES: [&str; 21] = [
+const FILES: [&str; 22] = [
     "voronoi-water/cones.wgsl",      // Voronoi
     "voronoi-water/jump_flood.wgsl", // Voronoi
     "voronoi-water/process.wgsl",    // WaterTexture, Show
@@ -26,6 +26,7 @@ const FILES: [&str; 21] = [
     "lighting/tonemap.wgsl",         // chapter 08's PostChain
     "lighting/fxaa.wgsl",            // chapter 08's PostChain, with --antialiasing post
     "lighting/brdf.wgsl",            // imported by lights.wgsl
+    "lighting/sky_light.wgsl",       // imported by lights.wgsl
     "lighting/lights.wgsl",          // imported by the sea, islands and boat
     "textures/mipmap.wgsl",          // chapter 09's MipMaker, for the water texture
     "textures/surface.wgsl",         // imported by the shadow pass and the boat
@@ -39,8 +40,9 @@ const FILES: [&str; 21] = [
 
 /// The shaders of the chapters it takes pieces from that it does not draw
 /// with, and the pieces that do.
-const NOT_USED: [&str; 8] = [
+const NOT_USED: [&str; 9] = [
     "lighting/brdf_table.wgsl",  // SceneLights's split-sum table: computed once, at start
+    "lighting/irradiance.wgsl",  // SceneLights's sky harmonics: computed when the sky changes
     "lighting/city.wgsl",        // chapter 08's city
     "lighting/sky.wgsl",         // CitySky: this chapter has its own sky
     "textures/textured.wgsl",    // TexturedRenderer: the boat is shadowed
