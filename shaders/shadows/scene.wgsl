@@ -2,7 +2,7 @@
 // in chapter 08, with the sun's light taken away where the shadow map says
 // something stands between the surface and the sun, and (`fs_lantern`) a
 // lantern's light taken away where its cube shadow map says the same.
-#import lighting::lights::{frame, Surface, light_surface_sunlit, phong_surface}
+#import lighting::lights::{frame, Surface, light_surface_sunlit}
 #import textures::surface::{Vertex, Instance, Varyings, vary, material, albedo_map, normal_map, surface_frame, mapped_normal}
 #import shadows::shadow::sunlit
 #import shadows::point_shadow::{point_lit, shadowed_point_light}
@@ -33,7 +33,7 @@ fn shaded(in: Varyings) -> Shaded {
     let albedo_texel = textureSample(albedo_map, surface_sampler, in.uv);
     let albedo = material.diffuse * albedo_texel.rgb;
     let mask = select(1.0, albedo_texel.a, material.flags.y == 1u);
-    let surface = phong_surface(albedo, material.specular, material.shininess);
+    let surface = Surface(albedo, material.specular, material.shininess, material.physical.x, material.physical.y);
     return Shaded(surface, frame3.n, n, material.emissive * mask * in.glow);
 }
 

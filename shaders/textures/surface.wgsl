@@ -79,6 +79,9 @@ struct Material {
     // emissive light), z: glows only at night, w: the vertices' colours
     // multiply the diffuse colour.
     flags: vec4<u32>,
+    // x: roughness, y: metalness, for Cook-Torrance (an MTL's Pr and Pm, or
+    // the roughness Ns gives).
+    physical: vec4<f32>,
 };
 @group(1) @binding(0) var albedo_map: texture_2d<f32>;
 @group(1) @binding(1) var normal_map: texture_2d<f32>;

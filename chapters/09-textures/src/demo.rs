@@ -22,7 +22,7 @@ use lighting::{
 
 use crate::builtin;
 use crate::materials::{self, Materials, SamplerMode, Uploader};
-use crate::mesh::{GpuModel, ModelData, ModelInstance};
+use crate::mesh::{GpuModel, MaterialDesc, ModelData, ModelInstance};
 use crate::mipmaps::MipMaker;
 use crate::obj::{self, LoadedModel, ReadFile};
 use crate::scenes;
@@ -265,6 +265,10 @@ pub struct Featured {
     pub materials: usize,
     /// Whether its vertices carry colours.
     pub vertex_colours: bool,
+    /// Whether its MTL gives roughness or metalness (Pr, Pm): a model made
+    /// for physically based shading, which the stage then shades with
+    /// chapter 08's Cook-Torrance instead of Blinn-Phong.
+    pub physical: bool,
     /// The model's own warnings (the chapter's `warnings` hold them too).
     pub warnings: Vec<String>,
     /// Scale applied to fit the stage, and the load time and memory (for
@@ -284,8 +288,8 @@ impl Featured {
             self.vertices,
             self.objects,
             self.scale,
-            if self.vertex_colours { "; it has vertex colours" } else { "" }
-        )
+            if self.vertex_colours { "; it has vertex colours" } else { "" },
+        ) + if self.physical { "; shaded by Cook-Torrance (its MTL gives Pr or Pm)" } else { "" }
     }
 }
 
@@ -530,6 +534,7 @@ impl Chapter for TexturesChapter {
             objects: builtin.car.objects,
             materials: builtin.car.model.materials.len(),
             vertex_colours: builtin.car.vertex_colours,
+            physical: builtin.car.model.materials.iter().any(MaterialDesc::is_physical),
             warnings: builtin.car.warnings.clone(),
             scale,
             load_ms: None,
@@ -590,6 +595,7 @@ impl Chapter for TexturesChapter {
             objects: loaded.objects,
             materials: loaded.model.materials.len(),
             vertex_colours: loaded.vertex_colours,
+            physical: loaded.model.materials.iter().any(MaterialDesc::is_physical),
             warnings,
             scale,
             load_ms: Some(load_ms),
@@ -652,7 +658,11 @@ impl Chapter for TexturesChapter {
         };
         let lists = frame.timer.cpu("light culling", || clusters::cull(&camera, &lights));
         self.last_lights = lights.len();
-        let options = LoopOptions { culling: true, highlight: Highlight::BlinnPhong, heat_map: false };
+        let highlight = match self.scene {
+            Scene::Stage if self.featured.physical => Highlight::CookTorrance,
+            _ => Highlight::BlinnPhong,
+        };
+        let options = LoopOptions { culling: true, highlight, heat_map: false };
         self.scene_lights.write(gpu, &camera, &day, &lights, &lists, options);
         self.sky.write(gpu, &camera, &day);
         let bytes = (instances.len() * std::mem::size_of::<ModelInstance>()) as u64;

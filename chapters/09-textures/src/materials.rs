@@ -213,6 +213,8 @@ struct MaterialUniform {
     /// emissive light), z: emits only at night, w: vertex colours multiply
     /// the diffuse colour.
     flags: [u32; 4],
+    /// Roughness and metalness for Cook-Torrance (`MaterialDesc::physical`), and padding.
+    physical: [f32; 4],
 }
 
 /// One material's bind groups: as it should be, and with its textures read
@@ -388,6 +390,10 @@ impl Materials {
                 u32::from(desc.at_night),
                 u32::from(desc.vertex_colours),
             ],
+            physical: {
+                let (roughness, metallic) = desc.physical();
+                [roughness, metallic, 0.0, 0.0]
+            },
         };
         let gpu = up.gpu;
         let buffer = gpu.device.create_buffer_init(&wgpu::util::BufferInitDescriptor {

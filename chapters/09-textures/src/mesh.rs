@@ -50,6 +50,10 @@ pub struct MaterialDesc {
     pub specular: f32,
     /// Ns.
     pub shininess: f32,
+    /// Pr and Pm, where an MTL written for physically based shading gives
+    /// them: roughness and metalness, 0 to 1 (`obj.rs` clamps and warns).
+    pub roughness: Option<f32>,
+    pub metallic: Option<f32>,
     /// Ke: light of its own. With an albedo map, its alpha says where.
     pub emissive: Vec3,
     /// Whether the emissive light comes on only at night (lamps, windows).
@@ -66,6 +70,19 @@ pub struct MaterialDesc {
 }
 
 impl MaterialDesc {
+    /// Cook-Torrance's roughness and metalness: Pr and Pm where given, else
+    /// a non-metal with the roughness Walter et al.'s rule gives for Ns
+    /// (`lighting::pbr::roughness_from_shininess`).
+    pub fn physical(&self) -> (f32, f32) {
+        let roughness = self.roughness.unwrap_or_else(|| lighting::pbr::roughness_from_shininess(self.shininess));
+        (roughness, self.metallic.unwrap_or(0.0))
+    }
+
+    /// Whether the MTL gave Pr or Pm: a model made for physically based shading.
+    pub fn is_physical(&self) -> bool {
+        self.roughness.is_some() || self.metallic.is_some()
+    }
+
     /// A plain material: a colour and a highlight, no maps.
     pub fn plain(name: &str, diffuse: Vec3, specular: f32, shininess: f32) -> Self {
         Self {
@@ -73,6 +90,8 @@ impl MaterialDesc {
             diffuse,
             specular,
             shininess,
+            roughness: None,
+            metallic: None,
             emissive: Vec3::ZERO,
             at_night: false,
             vertex_colours: false,

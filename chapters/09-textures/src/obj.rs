@@ -531,8 +531,8 @@ fn read_material_libraries(
                 continue;
             }
             let here = mtl_path.parent().unwrap_or(Path::new("")).to_path_buf();
-            let (materials, warning) = read_mtl(&mtl_path, &bytes, limits.line_bytes)?;
-            warnings.extend(warning);
+            let (materials, mtl_warnings) = read_mtl(&mtl_path, &bytes, limits.line_bytes)?;
+            warnings.extend(mtl_warnings);
             for m in &materials {
                 let mut material = material_of(m);
                 let texture_path = |p: PathBuf| normalise(&here.join(p));
@@ -555,8 +555,8 @@ fn read_material_libraries(
 }
 
 /// The materials of one MTL file through tobj, once its text is decoded
-/// and checked; and the Latin-1 warning, if any.
-fn read_mtl(path: &Path, bytes: &[u8], line_bytes: usize) -> Result<(Vec<tobj::Material>, Option<String>), ModelError> {
+/// and checked; and its warnings: Latin-1, and Pr or Pm out of range.
+fn read_mtl(path: &Path, bytes: &[u8], line_bytes: usize) -> Result<(Vec<tobj::Material>, Vec<String>), ModelError> {
     let name = path.display();
     let text = Text::decode(bytes, line_bytes);
     let mut clean = String::with_capacity(text.bytes.len());
@@ -569,10 +569,45 @@ fn read_mtl(path: &Path, bytes: &[u8], line_bytes: usize) -> Result<(Vec<tobj::M
     if let Some((line, what)) = check_mtl(clean.as_bytes()) {
         return Err(ModelError(format!("{name}: line {line}: {what}")));
     }
-    let (materials, _) =
+    let (mut materials, _) =
         tobj::load_mtl_buf(&mut clean.as_bytes()).map_err(|kind| ModelError(format!("{name}: {kind}")))?;
-    Ok((materials, text.warning(&name.to_string())))
+    let mut warnings: Vec<String> = text.warning(&name.to_string()).into_iter().collect();
+    physical_keys(&name.to_string(), &clean, &mut materials, &mut warnings);
+    Ok((materials, warnings))
 }
+
+// ANCHOR: physical_keys
+/// Pr and Pm, the roughness and metalness that exporters for physically
+/// based shading write (tobj keeps them as unknown keys): a value outside
+/// 0 to 1 is clamped, and one that is not a number is left out, each with a
+/// warning naming the file and the line.
+fn physical_keys(name: &str, text: &str, materials: &mut [tobj::Material], warnings: &mut Vec<String>) {
+    let mut current = None;
+    for (index, line) in text.lines().enumerate() {
+        let mut words = line.split_whitespace();
+        let (Some(key), rest) = (words.next(), words.collect::<Vec<_>>().join(" ")) else { continue };
+        if key == "newmtl" {
+            current = materials.iter().position(|m| m.name == rest);
+            continue;
+        }
+        let (Some(at), "Pr" | "Pm") = (current, key) else { continue };
+        let what = if key == "Pr" { "roughness" } else { "metalness" };
+        let line = index + 1;
+        match rest.parse::<f32>() {
+            Ok(value) if value.is_finite() && !(0.0..=1.0).contains(&value) => {
+                let clamped = value.clamp(0.0, 1.0);
+                warnings.push(format!("{name}: line {line}: {key} {rest} is outside 0 to 1; {what} {clamped} used"));
+                materials[at].unknown_param.insert(key.into(), clamped.to_string());
+            }
+            Ok(value) if value.is_finite() => {}
+            _ => {
+                warnings.push(format!("{name}: line {line}: {key} `{rest}` is not a number; left out"));
+                materials[at].unknown_param.remove(key);
+            }
+        }
+    }
+}
+// ANCHOR_END: physical_keys
 
 /// A file looked for by [`find_file`].
 pub enum Found {
@@ -628,6 +663,9 @@ fn material_of(m: &tobj::Material) -> MaterialDesc {
         diffuse: colour(m.diffuse, 0.8),
         specular: colour(m.specular, 0.0).element_sum() / 3.0,
         shininess: m.shininess.unwrap_or(1.0).max(1.0),
+        // Checked and clamped to 0..1 by `physical_keys` as the MTL was read.
+        roughness: m.unknown_param.get("Pr").and_then(|v| v.trim().parse().ok()),
+        metallic: m.unknown_param.get("Pm").and_then(|v| v.trim().parse().ok()),
         emissive: colour(m.emissive, 0.0),
         at_night: false,
         vertex_colours: false,

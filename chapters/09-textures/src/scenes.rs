@@ -92,6 +92,8 @@ pub fn city_materials() -> Vec<MaterialDesc> {
                     albedo_map: Some(texture(texture_name, "albedo")),
                     normal_map: Some(texture(texture_name, "normal")),
                     texture_folders: Vec::new(),
+                    roughness: None,
+                    metallic: None,
                 },
                 None => MaterialDesc {
                     emissive: s.emissive,

@@ -592,3 +592,54 @@ fn too_many_triangles_or_elements_are_refused_with_the_line() {
     let error = obj::load_within(&dir.join("positions.obj"), &read, limits).unwrap_err().to_string();
     assert!(error.contains("positions.obj: line 101: more than 100 positions"), "{error}");
 }
+
+#[test]
+fn pr_and_pm_are_read_clamped_with_the_line_named_or_derived_from_ns() {
+    let mtl = "newmtl metal\nKd 0.9 0.6 0.2\nPr 0.25\nPm 1\n\
+               newmtl wild\nKd 0.5 0.5 0.5\nPr 1.7\nPm -0.5\n\
+               newmtl garbled\nKd 0.5 0.5 0.5\nPr rough\n\
+               newmtl classic\nKd 0.5 0.5 0.5\nNs 96\n";
+    let obj = "mtllib pbr.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nvn 0 0 1\n\
+               usemtl metal\nf 1//1 2//1 3//1\nusemtl wild\nf 1//1 2//1 3//1\n\
+               usemtl garbled\nf 1//1 2//1 3//1\nusemtl classic\nf 1//1 2//1 3//1\n";
+    let dir = folder("pbr-keys", &[("pbr.obj", obj), ("pbr.mtl", mtl)]);
+    let loaded = load(&dir.join("pbr.obj")).unwrap();
+    let material = |name: &str| loaded.model.materials.iter().find(|m| m.name == name).unwrap().clone();
+    assert_eq!((material("metal").roughness, material("metal").metallic), (Some(0.25), Some(1.0)));
+    assert_eq!((material("wild").roughness, material("wild").metallic), (Some(1.0), Some(0.0)));
+    assert_eq!((material("garbled").roughness, material("garbled").metallic), (None, None));
+    // No Pr or Pm: a non-metal whose roughness comes from Ns by the stated rule.
+    let classic = material("classic");
+    assert!(!classic.is_physical());
+    assert_eq!(classic.physical(), (lighting::pbr::roughness_from_shininess(96.0), 0.0));
+    let about = |line: usize| loaded.warnings.iter().filter(|w| w.contains(&format!("pbr.mtl: line {line}:"))).count();
+    assert_eq!((about(7), about(8), about(11)), (1, 1, 1), "{:#?}", loaded.warnings);
+    assert!(loaded.warnings.iter().any(|w| w.contains("line 7: Pr 1.7 is outside 0 to 1; roughness 1 used")));
+    assert!(loaded.warnings.iter().any(|w| w.contains("line 11: Pr `rough` is not a number")));
+    assert_eq!(about(3) + about(4), 0, "in-range values are not warned about");
+}
+
+#[test]
+fn a_model_with_pr_or_pm_is_shaded_by_cook_torrance() {
+    // A gold pyramid, facing the stage's camera, with and without Pr and Pm.
+    let obj = "mtllib gold.mtl\nv -1 0 -1\nv 1 0 -1\nv 1 0 1\nv -1 0 1\nv 0 1.5 0\nusemtl gold\n\
+               f 1 2 5\nf 2 3 5\nf 3 4 5\nf 4 1 5\n";
+    let classic = "newmtl gold\nKd 1.0 0.77 0.34\nKs 0.5 0.5 0.5\nNs 40\n";
+    let physical = format!("{classic}Pr 0.3\nPm 1\n");
+    let gpu = gpu();
+    let view = common::chapter::view_index::<TexturesChapter>("car").unwrap();
+    let target = Target { format: OFFSCREEN_FORMAT, width: 160, height: 90, samples: 1 };
+    let mut pictures = Vec::new();
+    for (case, mtl) in [("gold-classic", classic.to_string()), ("gold-physical", physical)] {
+        let dir = folder(case, &[("gold.obj", obj), ("gold.mtl", &mtl)]);
+        let mut chapter = chapter_with_model(&gpu, &dir.join("gold.obj"), (160, 90));
+        let shaded = chapter.featured.facts().contains("Cook-Torrance");
+        assert_eq!((chapter.featured.physical, shaded), (case == "gold-physical", case == "gold-physical"));
+        chapter.select_view(view);
+        pictures.push(
+            capture(&gpu, &mut chapter, target, (TexturesChapter::SNAPSHOT_TIME, view), Default::default()).unwrap(),
+        );
+    }
+    let differ = pictures[0].pixels().zip(pictures[1].pixels()).filter(|(a, b)| a != b).count();
+    assert!(differ > 100, "Cook-Torrance and Blinn-Phong draw the same gold pyramid ({differ} pixels differ)");
+}
