@@ -20,8 +20,8 @@ fn hammersley(i: u32, n: u32) -> vec2<f32> {
 }
 
 // A half vector drawn with density D(h) n·h about the normal +z: the
-// inverse of GGX's cumulative distribution in cos θ (Walter et al. 2007,
-// eq. 35 and 36).
+// inverse of GGX's cumulative distribution in cos θ (Walter et al. 2007
+// give it as θ = arctan(α √u / √(1 − u)), the same).
 fn ggx_half_vector(u: vec2<f32>, alpha: f32) -> vec3<f32> {
     let phi = 2.0 * PI * u.x;
     let cos_theta = sqrt((1.0 - u.y) / (1.0 + (alpha * alpha - 1.0) * u.y));

@@ -17,9 +17,10 @@ use common::{Gpu, ShaderError, shader, wgpu};
 /// spike of no width and infinite height): `brdf.wgsl` clamps it too.
 pub const MIN_ROUGHNESS: f32 = 0.045;
 
-/// The Fresnel reflectance of non-metals seen head on: 4 % (glass, water
-/// and most plastics have an index of refraction near 1.5, and
-/// ((1.5 − 1) / (1.5 + 1))² = 0.04).
+/// The Fresnel reflectance of non-metals seen head on: 4 % (glass and most
+/// plastics have an index of refraction near 1.5, and
+/// ((1.5 − 1) / (1.5 + 1))² = 0.04; water, at 1.33, reflects about 2 %,
+/// which this chapter rounds to the same 4 %).
 pub const DIELECTRIC_F0: f32 = 0.04;
 
 /// How a surface reflects, in the metallic-roughness terms of every modern
@@ -47,7 +48,7 @@ pub fn fresnel_f0(base_colour: Vec3, metallic: f32) -> Vec3 {
 }
 
 /// The roughness for a Phong exponent `shininess`, for models that give no
-/// roughness (an MTL file's `Ns`): Walter et al. (2007, §5.2) match Phong's
+/// roughness (an MTL file's `Ns`): Walter et al. (2007) match Phong's
 /// exponent to Beckmann's width by s = 2/α² − 2, and GGX's α is close to
 /// Beckmann's for the narrow lobes shininess describes; roughness = √α.
 pub fn roughness_from_shininess(shininess: f32) -> f32 {
