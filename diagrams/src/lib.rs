@@ -51,6 +51,7 @@ pub fn all() -> Vec<(&'static str, String)> {
         ("fxaa.svg", lighting::fxaa()),
         ("microfacet-terms.svg", lighting::microfacet_terms()),
         ("white-furnace.svg", lighting::white_furnace()),
+        ("prefiltered-lobe.svg", lighting::prefiltered_lobe()),
         ("tangent-from-uvs.svg", textures::tangent_from_uvs()),
         ("texel-footprint.svg", textures::texel_footprint()),
         ("footprints.svg", textures::footprints()),

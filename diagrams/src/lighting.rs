@@ -614,3 +614,66 @@ pub fn white_furnace() -> String {
     svg.text(axes.at(0.55, 0.56), "Cook-Torrance, white metal, roughness 0.5", 11.0, "start", BLUE);
     svg.finish()
 }
+
+/// Chapter 08: the lobe a prefiltered sky assumes against the one a
+/// surface has. Seen 70° from its normal, a rough surface's specular lobe
+/// (D V n·l, `lighting::pbr`, in the plane of n and v) is cut off at the
+/// horizon and pulled up towards n; the prefiltered cube blurs as though the
+/// surface faced the mirror direction r and were seen from it (D n·l with
+/// n = v = r), a lobe the same all round r. Each is scaled to its peak.
+pub fn prefiltered_lobe() -> String {
+    use common::glam::Vec3;
+    use lighting::pbr::{ggx_alpha, ggx_distribution, smith_visibility};
+    let mut svg = Svg::new(560.0, 300.0);
+    let origin = Vec2::new(280.0, 250.0);
+    let scale = 190.0;
+    // Directions in the plane of n (up) and v: angle from n, positive towards +x.
+    let dir = |angle: f32| Vec3::new(angle.to_radians().sin(), angle.to_radians().cos(), 0.0);
+    let screen = |d: Vec3, length: f32| origin + Vec2::new(d.x, -d.y) * length;
+    let (view_angle, roughness) = (-70.0f32, 0.6);
+    let (n, v) = (Vec3::Y, dir(view_angle));
+    let r = dir(-view_angle);
+    let alpha = ggx_alpha(roughness);
+    let lobe = |weight: &dyn Fn(Vec3) -> f32, from: f32, to: f32| {
+        let angles: Vec<f32> = (0..=360).map(|i| from + (to - from) * i as f32 / 360.0).collect();
+        let values: Vec<f32> = angles.iter().map(|&a| weight(dir(a)).max(0.0)).collect();
+        let peak = values.iter().cloned().fold(0.0, f32::max);
+        angles.iter().zip(values).map(|(&a, w)| screen(dir(a), scale * w / peak)).collect::<Vec<Vec2>>()
+    };
+    let real = |l: Vec3| {
+        let h = (l + v).normalize();
+        ggx_distribution(n.dot(h), alpha) * smith_visibility(n.dot(v), n.dot(l).max(0.0), alpha) * n.dot(l).max(0.0)
+    };
+    let assumed = |l: Vec3| ggx_distribution(r.dot((l + r).normalize()), alpha) * r.dot(l).max(0.0);
+    svg.line(origin - Vec2::new(250.0, 0.0), origin + Vec2::new(250.0, 0.0), INK, 2.0);
+    svg.polyline(&lobe(&assumed, -view_angle - 90.0, -view_angle + 90.0), BLUE, 2.0);
+    svg.polyline(&lobe(&real, -90.0, 90.0), ACCENT, 2.4);
+    svg.arrow(origin, screen(n, 120.0), INK);
+    svg.arrow(screen(v, 150.0), origin, MUTED);
+    svg.dashed(origin, screen(r, 225.0), BLUE);
+    svg.text(screen(n, 128.0), "n", 13.0, "middle", INK);
+    svg.text(screen(v, 162.0), "eye (v)", 12.0, "middle", MUTED);
+    svg.text(screen(r, 238.0), "r", 13.0, "middle", BLUE);
+    svg.text(
+        Vec2::new(20.0, 26.0),
+        "the lobe the surface has: D V n·l, cut off at the horizon, pulled up by n·l",
+        12.0,
+        "start",
+        ACCENT,
+    );
+    svg.text(
+        Vec2::new(20.0, 44.0),
+        "the lobe the cube assumes: D n·l with n = v = r, round about r, dipping below the surface",
+        12.0,
+        "start",
+        BLUE,
+    );
+    svg.text(
+        origin + Vec2::new(0.0, 30.0),
+        "roughness 0.6, seen 70° from the normal; each lobe scaled to its peak",
+        11.0,
+        "middle",
+        MUTED,
+    );
+    svg.finish()
+}

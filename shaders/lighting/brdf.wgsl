@@ -3,8 +3,9 @@
 // some of which hide others (the visibility V, Smith's height-correlated
 // masking and shadowing), each reflecting by Fresnel's law (F, Schlick's
 // approximation). pbr.rs holds the same formulas, which the tests integrate.
-// Pure functions, no bindings: lights.wgsl shades with them, and
-// brdf_table.wgsl integrates them into the split-sum table.
+// Pure functions, no bindings: lights.wgsl shades with them,
+// brdf_table.wgsl integrates them into the split-sum table, and
+// prefilter.wgsl blurs the sky by them.
 #define_import_path lighting::brdf
 
 const PI: f32 = 3.14159265358979;
@@ -88,3 +89,23 @@ fn cook_torrance(
     return diffuse + specular;
 }
 // ANCHOR_END: cook_torrance
+
+// ANCHOR: sampling
+// Importance sampling, for the integrals the compute passes take over GGX
+// (brdf_table.wgsl, prefilter.wgsl).
+// The i-th of n points spread evenly over the unit square (Hammersley):
+// i / n across, and i's bits mirrored about the binary point down.
+fn hammersley(i: u32, n: u32) -> vec2<f32> {
+    return vec2<f32>(f32(i) / f32(n), f32(reverseBits(i)) * 2.3283064365386963e-10);
+}
+
+// A half vector drawn with density D(h) n·h about the normal +z: the
+// inverse of GGX's cumulative distribution in cos θ (Walter et al. 2007
+// give it as θ = arctan(α √u / √(1 − u)), the same).
+fn ggx_half_vector(u: vec2<f32>, alpha: f32) -> vec3<f32> {
+    let phi = 2.0 * PI * u.x;
+    let cos_theta = sqrt((1.0 - u.y) / (1.0 + (alpha * alpha - 1.0) * u.y));
+    let sin_theta = sqrt(1.0 - cos_theta * cos_theta);
+    return vec3<f32>(sin_theta * cos(phi), sin_theta * sin(phi), cos_theta);
+}
+// ANCHOR_END: sampling

@@ -6,31 +6,13 @@
 // The integral is estimated by importance sampling: half vectors drawn
 // where GGX puts its facets, so that few samples are wasted on directions
 // that reflect nothing.
-#import lighting::brdf::{PI, ggx_alpha, smith_visibility}
+#import lighting::brdf::{ggx_alpha, ggx_half_vector, hammersley, smith_visibility}
 
 @group(0) @binding(0) var table: texture_storage_2d<rgba16float, write>;
 
-// ANCHOR: sampling
+// ANCHOR: integrate
 const SAMPLES: u32 = 1024u;
 
-// The i-th of n points spread evenly over the unit square (Hammersley):
-// i / n across, and i's bits mirrored about the binary point down.
-fn hammersley(i: u32, n: u32) -> vec2<f32> {
-    return vec2<f32>(f32(i) / f32(n), f32(reverseBits(i)) * 2.3283064365386963e-10);
-}
-
-// A half vector drawn with density D(h) n·h about the normal +z: the
-// inverse of GGX's cumulative distribution in cos θ (Walter et al. 2007
-// give it as θ = arctan(α √u / √(1 − u)), the same).
-fn ggx_half_vector(u: vec2<f32>, alpha: f32) -> vec3<f32> {
-    let phi = 2.0 * PI * u.x;
-    let cos_theta = sqrt((1.0 - u.y) / (1.0 + (alpha * alpha - 1.0) * u.y));
-    let sin_theta = sqrt(1.0 - cos_theta * cos_theta);
-    return vec3<f32>(sin_theta * cos(phi), sin_theta * sin(phi), cos_theta);
-}
-// ANCHOR_END: sampling
-
-// ANCHOR: integrate
 @compute @workgroup_size(8, 8)
 fn cs_brdf_table(@builtin(global_invocation_id) id: vec3<u32>) {
     let size = textureDimensions(table);

@@ -58,6 +58,9 @@ struct Light {
 @group(0) @binding(5) var brdf_sampler: sampler;
 // The sky's radiance in nine spherical harmonics (irradiance.rs).
 @group(0) @binding(6) var<storage, read> sky_harmonics: array<vec4<f32>, 9>;
+// The sky blurred for each roughness, one mip level each (prefilter.wgsl).
+@group(0) @binding(7) var sky_cube: texture_cube<f32>;
+@group(0) @binding(8) var sky_sampler: sampler;
 // ANCHOR_END: frame
 
 // How a surface answers light (chapter 09 fills it from textures): Phong's
@@ -124,9 +127,9 @@ fn reflected(surface: Surface, n: vec3<f32>, v: vec3<f32>, l: vec3<f32>, radianc
 // times the ambient colour, the same whichever way the surface faces. For
 // Cook-Torrance, the sky itself: its body diffuses the irradiance the
 // harmonics give for its normal, where it is not a metal; its facets
-// reflect what the split-sum table says they reflect of an even sky,
-// f0 × A + B, here of the sky's mean radiance (a picture of the sky
-// blurred by roughness, a prefiltered map, would give the right direction).
+// reflect the sky seen in the mirror direction, blurred for its roughness
+// (the prefiltered cube's level), times what the split-sum table says
+// they reflect, f0 × A + B.
 fn sky_light(surface: Surface, n: vec3<f32>, v: vec3<f32>) -> vec3<f32> {
     if frame.options.z != 2u {
         return surface.albedo * frame.ambient.rgb;
@@ -136,9 +139,10 @@ fn sky_light(surface: Surface, n: vec3<f32>, v: vec3<f32>) -> vec3<f32> {
     let split = textureSampleLevel(brdf_table, brdf_sampler, vec2<f32>(n_dot_v, roughness), 0.0).xy;
     let specular = fresnel_f0(surface.albedo, surface.metallic) * split.x + split.y;
     let diffuse = (vec3<f32>(1.0) - specular) * (1.0 - clamp(surface.metallic, 0.0, 1.0)) * surface.albedo;
-    // Y₀₀ = 1 / (2√π): the first coefficient times it is the mean radiance.
-    let mean_sky = sky_harmonics[0].rgb * 0.282095;
-    return diffuse * sh_irradiance(sky_harmonics, n) / PI + specular * mean_sky;
+    // Level 0 is a mirror's sky, the last roughness 1's (prefiltered_sky.rs).
+    let level = roughness * f32(textureNumLevels(sky_cube) - 1u);
+    let mirrored = textureSampleLevel(sky_cube, sky_sampler, reflect(-v, n), level).rgb;
+    return diffuse * sh_irradiance(sky_harmonics, n) / PI + specular * mirrored;
 }
 // ANCHOR_END: sky_light
 

@@ -30,6 +30,12 @@ impl GpuInstance {
     }
 
     pub fn new(model: Mat4, material: Material) -> Self {
+        Self::with_material_index(model, material as u32)
+    }
+
+    /// With the index of its material in the material buffer, which may
+    /// be one after the city's own (`material_spheres`).
+    pub fn with_material_index(model: Mat4, material: u32) -> Self {
         let normal = Mat3::from_mat4(model).inverse().transpose();
         Self {
             model: model.to_cols_array_2d(),
@@ -38,7 +44,7 @@ impl GpuInstance {
                 normal.y_axis.extend(0.0).into(),
                 normal.z_axis.extend(0.0).into(),
             ],
-            material: material as u32,
+            material,
             _padding: [0; 3],
         }
     }
@@ -217,9 +223,10 @@ impl CityMeshes {
     }
 
     /// Writes this frame's instances: the still pieces and this frame's
-    /// others (the moving ones, the countryside's), grouped by shape, then
-    /// the models', so that each mesh is one instanced draw.
-    pub(crate) fn write(&mut self, gpu: &Gpu, moving: &[Piece]) {
+    /// others (the moving ones, the countryside's, and `spheres` drawn
+    /// with the city's sphere), grouped by shape, then the models', so
+    /// that each mesh is one instanced draw.
+    pub(crate) fn write(&mut self, gpu: &Gpu, moving: &[Piece], spheres: &[GpuInstance]) {
         let mut all = Vec::new();
         self.ranges.clear();
         for (i, still) in self.still.iter().enumerate() {
@@ -227,6 +234,9 @@ impl CityMeshes {
             all.extend_from_slice(still);
             if let Some(shape) = Shape::ALL.get(i) {
                 all.extend(moving.iter().filter(|p| p.shape == *shape).map(GpuInstance::of));
+                if *shape == Shape::Sphere {
+                    all.extend_from_slice(spheres);
+                }
             }
             self.ranges.push(start..all.len() as u32);
         }

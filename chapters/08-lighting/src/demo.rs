@@ -19,6 +19,7 @@ use crate::city_sky::CitySky;
 use crate::clusters::{self, CLUSTERS, ClusterLists};
 use crate::countryside::{self, Countryside};
 use crate::lights::{self, Daylight, Light, TimeOfDay, daylight};
+use crate::material_spheres;
 use crate::moving_parts::MovingParts;
 use crate::paths;
 use crate::post::{HdrTarget, PostChain, PostOutput, PostSettings};
@@ -26,7 +27,7 @@ use crate::scene_lights::{Highlight, LoopOptions, MAX_LIGHTS, SceneLights};
 
 // ANCHOR: views
 /// Every view, once: what it shows, and for a preset where the camera goes.
-pub const VIEW_TABLE: [ViewRow<Settings, CameraPreset>; 36] = [
+pub const VIEW_TABLE: [ViewRow<Settings, CameraPreset>; 38] = [
     ViewRow::mode("day", "the city at noon, from above", Settings::DAY),
     ViewRow::mode("night", "the city at night: street lamps, lit buildings, headlights, bloom", Settings::NIGHT),
     ViewRow::preset(
@@ -58,6 +59,12 @@ pub const VIEW_TABLE: [ViewRow<Settings, CameraPreset>; 36] = [
         "the same, physically based: smooth glass's small, bright highlight and the sky it reflects at the rim",
         Settings { shading: Shading::Phong, highlight: Highlight::CookTorrance, ..Settings::SPHERE },
         CameraPreset::Sphere,
+    ),
+    ViewRow::preset(
+        "spheres",
+        "physically based, in the morning: roughness rising from 0 to 1 left to right, red paint above and gold below; the first gold sphere a mirror",
+        Settings { highlight: Highlight::CookTorrance, material_spheres: true, ..Settings::SPHERE },
+        CameraPreset::MaterialSpheres,
     ),
     ViewRow::mode(
         "pbr-day",
@@ -170,6 +177,11 @@ pub const VIEW_TABLE: [ViewRow<Settings, CameraPreset>; 36] = [
     )
     .same_picture_as("day")
     .antialiasing(Antialiasing::Post),
+    ViewRow::bench(
+        "sky-every-frame",
+        "bench: pbr-day with the sky's harmonics and prefiltered cube computed again every frame, as when the day turns",
+        Settings { highlight: Highlight::CookTorrance, sky_every_frame: true, ..Settings::DAY },
+    ),
     ViewRow::bench("lights-1", "bench: the night city with 1 light, culled", Settings::bench(1, true)),
     ViewRow::bench("lights-16", "bench: 16 lights, culled per cluster", Settings::bench(16, true)),
     ViewRow::bench("lights-64", "bench: 64 lights, culled per cluster", Settings::bench(64, true)),
@@ -188,6 +200,8 @@ pub const VIEW_TABLE: [ViewRow<Settings, CameraPreset>; 36] = [
 pub enum CameraPreset {
     /// Close to the glass sphere ([`sphere_camera`]).
     Sphere,
+    /// In front of the material spheres ([`material_spheres_camera`]).
+    MaterialSpheres,
     /// Riding behind the first car ([`follow_camera`]) until the learner moves.
     Follow,
     /// At eye height in the avenue along x = 0 ([`street_camera`]).
@@ -233,6 +247,7 @@ impl CameraPreset {
         let still = |camera| (camera, None);
         match self {
             Self::Sphere => still(sphere_camera(city, aspect)),
+            Self::MaterialSpheres => still(material_spheres_camera(aspect)),
             Self::Street => still(street_camera(aspect)),
             Self::Rooftop => still(rooftop_camera(city, aspect)),
             Self::Lollipop => still(lollipop_camera(aspect)),
@@ -363,6 +378,11 @@ pub struct Settings {
     /// The countryside, the billboard and its spots around the city (off:
     /// the city alone, as the bench measures its lights).
     pub countryside: bool,
+    /// The two rows of material spheres south of the city (`material_spheres`).
+    pub material_spheres: bool,
+    /// The sky's light computed again every frame, as if the day turned:
+    /// the bench's measure of what that costs.
+    pub sky_every_frame: bool,
 }
 
 impl Settings {
@@ -381,6 +401,8 @@ impl Settings {
         display: Display::Scene,
         exposure: 1.0,
         countryside: true,
+        material_spheres: false,
+        sky_every_frame: false,
     };
 
     /// The city at noon: what the chapter starts with.
@@ -426,6 +448,13 @@ pub fn street_camera(aspect: f32) -> Camera {
 pub fn sphere_camera(city: &City, aspect: f32) -> Camera {
     let centre = city.sphere_building + Vec3::Y * 24.0;
     Camera { near: 0.3, far: 900.0, ..Camera::looking_at(centre + Vec3::new(-18.0, 6.0, 34.0), centre, aspect) }
+}
+
+/// South of the material spheres, looking north at them with the city
+/// behind, just far enough back to see both rows whole.
+pub fn material_spheres_camera(aspect: f32) -> Camera {
+    let centre = material_spheres::CENTRE;
+    Camera { near: 0.3, far: 900.0, ..Camera::looking_at(centre + Vec3::Z * 19.0, centre, aspect) }
 }
 
 /// Behind and above a car, looking where it goes.
@@ -623,7 +652,7 @@ impl Chapter for LightingChapter {
         let scene_lights = SceneLights::new(gpu)?;
         let materials = device.create_buffer_init(&wgpu::util::BufferInitDescriptor {
             label: Some("materials"),
-            contents: bytemuck::cast_slice(&materials(0.0, true)),
+            contents: bytemuck::cast_slice(&all_materials(0.0, true)),
             usage: wgpu::BufferUsages::STORAGE | wgpu::BufferUsages::COPY_DST,
         });
         let city_layout = device.create_bind_group_layout(&wgpu::BindGroupLayoutDescriptor {
@@ -729,7 +758,7 @@ impl Chapter for LightingChapter {
         if s.lights == LightCount::City && s.countryside {
             lights.extend(self.billboard.lights(day.night));
         }
-        let mut materials = materials(day.night, s.highlights);
+        let mut materials = all_materials(day.night, s.highlights);
         if let Display::Term(term) = s.display {
             term.isolate(&mut day, &mut lights, &mut materials);
         }
@@ -743,6 +772,17 @@ impl Chapter for LightingChapter {
         self.last_light_count = lights.len();
         let options =
             LoopOptions { culling: s.culling, highlight: s.highlight, heat_map: s.display == Display::LightTiles };
+        if s.sky_every_frame {
+            // Computed again and waited for, so that the bench's CPU clock
+            // measures the passes from start to end (a software GPU's
+            // timestamps need not cover a compute pass's work).
+            self.scene_lights.forget_sky();
+            frame.timer.cpu("sky light to the end", || {
+                self.scene_lights.update_sky(gpu, &day, frame.timer);
+                let _ = gpu.device.poll(wgpu::PollType::wait_indefinitely());
+            });
+        }
+        self.scene_lights.update_sky(gpu, &day, frame.timer);
         self.scene_lights.write(gpu, &camera, &day, &lights, &self.last_lists, options);
         let mut pieces = traffic.pieces();
         pieces.extend(self.moving_parts.pieces(frame.time));
@@ -750,7 +790,8 @@ impl Chapter for LightingChapter {
             pieces.extend_from_slice(&self.countryside_pieces);
             pieces.push(Countryside::water(frame.time));
         }
-        self.meshes.write(gpu, &pieces);
+        let spheres = if s.material_spheres { material_spheres::instances() } else { Vec::new() };
+        self.meshes.write(gpu, &pieces, &spheres);
         gpu.queue.write_buffer(&self.materials, 0, bytemuck::cast_slice(&materials));
         self.sky.write(gpu, &camera, &day);
 
@@ -818,6 +859,7 @@ impl Chapter for LightingChapter {
         }
         ui.checkbox(&mut s.culling, "cull lights per cluster (off: every fragment visits every light)");
         ui.checkbox(&mut s.countryside, "countryside and billboard");
+        ui.checkbox(&mut s.material_spheres, "material spheres (south of the city)");
         ui.checkbox(&mut s.bloom_on, "bloom");
         ui.add(egui::Slider::new(&mut s.bloom.threshold, 0.2..=4.0).text("bloom threshold"));
         ui.add(egui::Slider::new(&mut s.bloom.strength, 0.0..=2.0).text("bloom strength"));
@@ -887,6 +929,14 @@ impl Chapter for LightingChapter {
             self.post.bloom().format
         )
     }
+}
+
+/// The material buffer: the city's materials, then the material spheres'
+/// (whose instances index past the city's).
+fn all_materials(night: f32, highlights: bool) -> Vec<GpuMaterial> {
+    let mut all = materials(night, highlights);
+    all.extend(material_spheres::materials(highlights));
+    all
 }
 
 /// What [`scenery`] makes.

@@ -8,7 +8,7 @@
 
 use common::chapter::uniform_entry;
 use common::glam::Vec3;
-use common::{Gpu, ShaderError, shader, wgpu};
+use common::{Gpu, PassTimer, ShaderError, shader, wgpu};
 
 /// What the ground below the horizon sends back of the sky's light: a
 /// stand-in for the city and its fields, which this chapter does not
@@ -29,7 +29,8 @@ impl SkyColours {
         Self { horizon: day.horizon, zenith: day.zenith, ground: day.horizon * GROUND_REFLECTANCE }
     }
 
-    fn to_gpu(self) -> [[f32; 4]; 3] {
+    /// `SkyColours` in irradiance.wgsl and prefilter.wgsl.
+    pub(crate) fn to_gpu(self) -> [[f32; 4]; 3] {
         [self.horizon.extend(0.0).into(), self.zenith.extend(0.0).into(), self.ground.extend(0.0).into()]
     }
 }
@@ -106,16 +107,25 @@ impl SkyIrradiance {
         Ok(Self { colours, coefficients, pipeline, group, projected: None })
     }
 
+    /// Forgets the sky last computed, so that the next `update` computes
+    /// it whatever it is.
+    pub fn forget(&mut self) {
+        self.projected = None;
+    }
+
     /// Projects `sky` if it differs from the sky last projected: one
     /// workgroup's dispatch, submitted before the frame that reads it.
-    pub fn update(&mut self, gpu: &Gpu, sky: SkyColours) {
+    pub fn update(&mut self, gpu: &Gpu, sky: SkyColours, timer: &PassTimer) {
         if self.projected == Some(sky) {
             return;
         }
         gpu.queue.write_buffer(&self.colours, 0, bytemuck::cast_slice(&sky.to_gpu()));
         let mut encoder = gpu.device.create_command_encoder(&Default::default());
         {
-            let mut pass = encoder.begin_compute_pass(&Default::default());
+            let mut pass = encoder.begin_compute_pass(&wgpu::ComputePassDescriptor {
+                label: Some("sky harmonics"),
+                timestamp_writes: timer.compute_pass("sky harmonics"),
+            });
             pass.set_pipeline(&self.pipeline);
             pass.set_bind_group(0, &self.group, &[]);
             pass.dispatch_workgroups(1, 1, 1);

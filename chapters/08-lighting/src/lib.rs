@@ -20,6 +20,8 @@ pub mod lights;
 pub mod pbr;
 // The sky as a light: its radiance in nine spherical harmonics, by compute.
 pub mod irradiance;
+// The sky as a mirror: a cube map blurred by roughness, level by level, by compute.
+pub mod prefiltered_sky;
 // The city's pieces on the GPU, shaded flat, Gouraud or Phong.
 pub mod city_meshes;
 // Which lights reach which cluster of the view.
@@ -40,6 +42,8 @@ pub mod countryside;
 pub mod moving_parts;
 // The billboard on the hill, lit by spot lights.
 pub mod billboard;
+// Two rows of spheres, rougher left to right: paint above, gold below.
+pub mod material_spheres;
 // The chapter itself: its settings, views, cameras and frame.
 pub mod demo;
 

@@ -10,6 +10,7 @@ use crate::clusters::{self, CLUSTERS, ClusterLists};
 use crate::irradiance::{SkyColours, SkyIrradiance};
 use crate::lights::{Daylight, GpuLight, Light};
 use crate::pbr::BrdfTable;
+use crate::prefiltered_sky::PrefilteredSky;
 
 /// Which highlight.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -81,13 +82,16 @@ pub struct SceneLights {
     indices: wgpu::Buffer,
     brdf_table: BrdfTable,
     sky: SkyIrradiance,
+    sky_mirror: PrefilteredSky,
     pub layout: wgpu::BindGroupLayout,
     pub group: wgpu::BindGroup,
 }
 
 impl SceneLights {
-    /// Computes the split-sum table first (a compute pass), so it fails
-    /// only where `brdf_table.wgsl` does.
+    /// Computes the split-sum table (a compute pass) and readies the sky's
+    /// harmonics and its prefiltered cube, which the first `write` fills:
+    /// it fails where `brdf_table.wgsl`, `irradiance.wgsl` or
+    /// `prefilter.wgsl` does.
     pub fn new(gpu: &Gpu) -> Result<Self, ShaderError> {
         let device = &gpu.device;
         let stages = wgpu::ShaderStages::VERTEX_FRAGMENT;
@@ -102,6 +106,17 @@ impl SceneLights {
                 wgpu::BindGroupLayoutEntry { visibility: stages, ..texture_entry(4, FILTERABLE) },
                 wgpu::BindGroupLayoutEntry { visibility: stages, ..sampler_entry(5) },
                 storage_entry(6, stages),
+                wgpu::BindGroupLayoutEntry {
+                    binding: 7,
+                    visibility: stages,
+                    ty: wgpu::BindingType::Texture {
+                        sample_type: FILTERABLE,
+                        view_dimension: wgpu::TextureViewDimension::Cube,
+                        multisampled: false,
+                    },
+                    count: None,
+                },
+                wgpu::BindGroupLayoutEntry { visibility: stages, ..sampler_entry(8) },
             ],
         });
         let buffer = |label, size: u64, usage| {
@@ -115,8 +130,9 @@ impl SceneLights {
         let indices = buffer("cluster lights", 4 * 4096, storage);
         let brdf_table = BrdfTable::new(gpu)?;
         let sky = SkyIrradiance::new(gpu)?;
-        let group = Self::group(device, &layout, [&frame, &lights, &ranges, &indices], &brdf_table, &sky);
-        Ok(Self { frame, lights, ranges, indices, brdf_table, sky, layout, group })
+        let sky_mirror = PrefilteredSky::new(gpu)?;
+        let group = Self::group(device, &layout, [&frame, &lights, &ranges, &indices], &brdf_table, &sky, &sky_mirror);
+        Ok(Self { frame, lights, ranges, indices, brdf_table, sky, sky_mirror, layout, group })
     }
 
     fn group(
@@ -125,6 +141,7 @@ impl SceneLights {
         buffers: [&wgpu::Buffer; 4],
         table: &BrdfTable,
         sky: &SkyIrradiance,
+        sky_mirror: &PrefilteredSky,
     ) -> wgpu::BindGroup {
         let mut entries: Vec<wgpu::BindGroupEntry> = buffers
             .iter()
@@ -134,7 +151,27 @@ impl SceneLights {
         entries.push(wgpu::BindGroupEntry { binding: 4, resource: wgpu::BindingResource::TextureView(&table.view) });
         entries.push(wgpu::BindGroupEntry { binding: 5, resource: wgpu::BindingResource::Sampler(&table.sampler) });
         entries.push(wgpu::BindGroupEntry { binding: 6, resource: sky.coefficients.as_entire_binding() });
+        entries
+            .push(wgpu::BindGroupEntry { binding: 7, resource: wgpu::BindingResource::TextureView(&sky_mirror.view) });
+        entries
+            .push(wgpu::BindGroupEntry { binding: 8, resource: wgpu::BindingResource::Sampler(&sky_mirror.sampler) });
         device.create_bind_group(&wgpu::BindGroupDescriptor { label: Some("lights"), layout, entries: &entries })
+    }
+
+    /// Makes the next `write` compute the sky's light again even if the
+    /// sky has not changed: for the bench, which measures what a turning
+    /// day costs at a fixed scene time.
+    pub fn forget_sky(&mut self) {
+        self.sky.forget();
+        self.sky_mirror.forget();
+    }
+
+    /// Computes the sky's light (its harmonics and its prefiltered cube)
+    /// if the sky of `day` differs from the last one, timing the passes on
+    /// `timer`; `write` does it untimed otherwise.
+    pub fn update_sky(&mut self, gpu: &Gpu, day: &Daylight, timer: &common::PassTimer) {
+        self.sky.update(gpu, SkyColours::of(day), timer);
+        self.sky_mirror.update(gpu, SkyColours::of(day), timer);
     }
 
     /// Writes the frame: the camera, the daylight, `lights` (at most
@@ -161,7 +198,7 @@ impl SceneLights {
             grid: [clusters::GRID[0], clusters::GRID[1], clusters::GRID[2], 0],
         };
         gpu.queue.write_buffer(&self.frame, 0, bytemuck::bytes_of(&frame));
-        self.sky.update(gpu, SkyColours::of(day));
+        self.update_sky(gpu, day, &common::PassTimer::off());
         let gpu_lights: Vec<GpuLight> = lights[..count].iter().map(Light::to_gpu).collect();
         if !gpu_lights.is_empty() {
             gpu.queue.write_buffer(&self.lights, 0, bytemuck::cast_slice(&gpu_lights));
@@ -177,7 +214,8 @@ impl SceneLights {
                     mapped_at_creation: false,
                 });
                 let buffers = [&self.frame, &self.lights, &self.ranges, &self.indices];
-                self.group = Self::group(&gpu.device, &self.layout, buffers, &self.brdf_table, &self.sky);
+                let (table, sky, mirror) = (&self.brdf_table, &self.sky, &self.sky_mirror);
+                self.group = Self::group(&gpu.device, &self.layout, buffers, table, sky, mirror);
             }
             gpu.queue.write_buffer(&self.ranges, 0, bytemuck::cast_slice(&lists.ranges));
             if !lists.indices.is_empty() {

@@ -12,6 +12,7 @@ mod camera_flag;
 mod extremes;
 mod fxaa;
 mod pbr;
+mod prefiltered_sky;
 mod shading;
 mod solutions;
 mod tone_map;

@@ -22,7 +22,7 @@ use lighting::{Display, Highlight, LightTerm, LightingChapter, Settings};
 
 /// Σ over a grid of half vectors h about the normal +z of g(h) dω_h:
 /// `rings` steps of θ_h from 0 to π/2, `spokes` of φ_h around.
-fn over_half_vectors(rings: usize, spokes: usize, g: impl Fn(Vec3) -> f32) -> f32 {
+pub(crate) fn over_half_vectors(rings: usize, spokes: usize, g: impl Fn(Vec3) -> f32) -> f32 {
     let (d_theta, d_phi) = (FRAC_PI_2 / rings as f32, 2.0 * PI / spokes as f32);
     let mut sum = 0.0f64;
     for i in 0..rings {
@@ -151,7 +151,7 @@ fn fresnel_is_f0_head_on_and_one_at_grazing() {
     assert!(r(0.0) == 1.0 && r(8.0) > r(96.0) && r(1e6) < 0.05);
 }
 
-fn gpu() -> Gpu {
+pub(crate) fn gpu() -> Gpu {
     Gpu::headless(LightingChapter::gpu_needs()).expect("an adapter (lavapipe will do)")
 }
 
@@ -210,6 +210,18 @@ fn cs_evaluate(@builtin(global_invocation_id) id: vec3<u32>) {
 /// `outputs` vec4s (binding 1), one invocation of 64 per output, and reads
 /// them back.
 fn run_compute(gpu: &Gpu, file: ShaderFile, entry: &str, input: &[[f32; 4]], outputs: usize) -> Vec<[f32; 4]> {
+    run_compute_with(gpu, file, entry, input, outputs, &[])
+}
+
+/// [`run_compute`] with more bindings after the two, from binding 2.
+pub(crate) fn run_compute_with(
+    gpu: &Gpu,
+    file: ShaderFile,
+    entry: &str,
+    input: &[[f32; 4]],
+    outputs: usize,
+    more: &[wgpu::BindingResource],
+) -> Vec<[f32; 4]> {
     use wgpu::util::DeviceExt as _;
     let module = file.module(gpu).unwrap();
     let device = &gpu.device;
@@ -243,9 +255,16 @@ fn run_compute(gpu: &Gpu, file: ShaderFile, entry: &str, input: &[[f32; 4]], out
         label: None,
         layout: &pipeline.get_bind_group_layout(0),
         entries: &[
-            wgpu::BindGroupEntry { binding: 0, resource: input.as_entire_binding() },
-            wgpu::BindGroupEntry { binding: 1, resource: output.as_entire_binding() },
-        ],
+            vec![
+                wgpu::BindGroupEntry { binding: 0, resource: input.as_entire_binding() },
+                wgpu::BindGroupEntry { binding: 1, resource: output.as_entire_binding() },
+            ],
+            more.iter()
+                .enumerate()
+                .map(|(i, resource)| wgpu::BindGroupEntry { binding: 2 + i as u32, resource: resource.clone() })
+                .collect(),
+        ]
+        .concat(),
     });
     let mut encoder = device.create_command_encoder(&Default::default());
     {
@@ -344,7 +363,7 @@ fn irradiance_from(sh: &[[f32; 4]], n: Vec3) -> Vec3 {
 }
 
 fn project(gpu: &Gpu, sky: &mut SkyIrradiance, colours: SkyColours) -> Vec<[f32; 4]> {
-    sky.update(gpu, colours);
+    sky.update(gpu, colours, &common::PassTimer::off());
     let readback = gpu.device.create_buffer(&wgpu::BufferDescriptor {
         label: None,
         size: 9 * 16,

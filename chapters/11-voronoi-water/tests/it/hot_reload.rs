@@ -40,9 +40,10 @@ const FILES: [&str; 22] = [
 
 /// The shaders of the chapters it takes pieces from that it does not draw
 /// with, and the pieces that do.
-const NOT_USED: [&str; 9] = [
+const NOT_USED: [&str; 10] = [
     "lighting/brdf_table.wgsl",  // SceneLights's split-sum table: computed once, at start
     "lighting/irradiance.wgsl",  // SceneLights's sky harmonics: computed when the sky changes
+    "lighting/prefilter.wgsl",   // SceneLights's prefiltered sky: computed when the sky changes
     "lighting/city.wgsl",        // chapter 08's city
     "lighting/sky.wgsl",         // CitySky: this chapter has its own sky
     "textures/textured.wgsl",    // TexturedRenderer: the boat is shadowed
