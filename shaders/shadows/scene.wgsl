@@ -3,7 +3,7 @@
 // something stands between the surface and the sun, and (`fs_lantern`) a
 // lantern's light taken away where its cube shadow map says the same.
 #import lighting::lights::{frame, Surface, light_surface_sunlit}
-#import textures::surface::{Vertex, Instance, Varyings, vary, material, albedo_map, normal_map, surface_frame, mapped_normal}
+#import textures::surface::{Vertex, Instance, Varyings, vary, material, albedo_map, normal_map, physical_at, surface_frame, mapped_normal}
 #import shadows::shadow::sunlit
 #import shadows::point_shadow::{point_lit, shadowed_point_light}
 
@@ -33,7 +33,8 @@ fn shaded(in: Varyings) -> Shaded {
     let albedo_texel = textureSample(albedo_map, surface_sampler, in.uv);
     let albedo = material.diffuse * albedo_texel.rgb;
     let mask = select(1.0, albedo_texel.a, material.flags.y == 1u);
-    let surface = Surface(albedo, material.specular, material.shininess, material.physical.x, material.physical.y);
+    let physical = physical_at(in.uv, surface_sampler);
+    let surface = Surface(albedo, material.specular, material.shininess, physical.x, physical.y);
     return Shaded(surface, frame3.n, n, material.emissive * mask * in.glow);
 }
 

@@ -88,6 +88,20 @@ struct Material {
 // Storage, not uniform: `textured.wgsl` branches on `flags`, and lavapipe
 // would compile a new shader for every material bound (lights.wgsl's `frame`).
 @group(1) @binding(2) var<storage, read> material: Material;
+// ANCHOR: physical_maps
+// An MTL's map_Pr and map_Pm, read as data: their red channel (a grey
+// image's value) multiplies the roughness and metalness; white where a
+// material has none.
+@group(1) @binding(3) var roughness_map: texture_2d<f32>;
+@group(1) @binding(4) var metallic_map: texture_2d<f32>;
+
+// Roughness and metalness at `uv`: the material's, times its maps'.
+fn physical_at(uv: vec2<f32>, maps: sampler) -> vec2<f32> {
+    let roughness = textureSample(roughness_map, maps, uv).r;
+    let metallic = textureSample(metallic_map, maps, uv).r;
+    return material.physical.xy * vec2<f32>(roughness, metallic);
+}
+// ANCHOR_END: physical_maps
 // ANCHOR_END: material
 
 // ANCHOR: tbn

@@ -5,7 +5,7 @@
 // fragment (Phong shading), per vertex (Gouraud) or per face (flat), as
 // chapter 08's city is; the textures are read per fragment in all three.
 #import lighting::lights::{frame, Surface, light_surface, phong_surface}
-#import textures::surface::{Vertex, Instance, Varyings, vary, material, albedo_map, normal_map, Frame3, surface_frame, mapped_normal}
+#import textures::surface::{Vertex, Instance, Varyings, vary, material, albedo_map, normal_map, physical_at, Frame3, surface_frame, mapped_normal}
 
 // ANCHOR: bindings
 // How this frame reads surfaces (lib.rs: ViewOptions).
@@ -55,7 +55,8 @@ fn glow_at(glow: f32, albedo_texel: vec4<f32>) -> vec3<f32> {
 // The light a surface with normal n sends to the eye, and its own glow.
 fn shade(in: Varyings, n: vec3<f32>, albedo_texel: vec4<f32>) -> vec4<f32> {
     let albedo = albedo_at(in.colour, albedo_texel);
-    let lit = light_surface(in.world, n, Surface(albedo, material.specular, material.shininess, material.physical.x, material.physical.y));
+    let physical = physical_at(in.uv, surface_sampler);
+    let lit = light_surface(in.world, n, Surface(albedo, material.specular, material.shininess, physical.x, physical.y));
     return vec4<f32>(lit + glow_at(in.glow, albedo_texel), 1.0);
 }
 
@@ -151,7 +152,8 @@ fn fs_flat(in: FlatVaryings) -> @location(0) vec4<f32> {
     let outwards = select(across, -across, dot(across, in.normal) < 0.0);
     let face = select(normalize(in.normal), normalize(outwards), dot(across, across) > 1e-30);
     let texel = textureSample(albedo_map, surface_sampler, in.uv);
-    let lit = light_surface(in.corner, face, Surface(albedo_at(in.colour, texel), material.specular, material.shininess, material.physical.x, material.physical.y));
+    let physical = physical_at(in.uv, surface_sampler);
+    let lit = light_surface(in.corner, face, Surface(albedo_at(in.colour, texel), material.specular, material.shininess, physical.x, physical.y));
     return vec4<f32>(lit + glow_at(in.glow, texel), 1.0);
 }
 // ANCHOR_END: flat

@@ -289,7 +289,7 @@ impl Featured {
             self.objects,
             self.scale,
             if self.vertex_colours { "; it has vertex colours" } else { "" },
-        ) + if self.physical { "; shaded by Cook-Torrance (its MTL gives Pr or Pm)" } else { "" }
+        ) + if self.physical { "; shaded by Cook-Torrance (its MTL gives Pr, Pm or their maps)" } else { "" }
     }
 }
 

@@ -223,7 +223,7 @@ pub struct GpuMaterial {
     pub desc: MaterialDesc,
     pub group: wgpu::BindGroup,
     pub swapped_group: wgpu::BindGroup,
-    /// "albedo" or "normal map", and where it was found.
+    /// "albedo", "normal map", "roughness map" or "metalness map", and where it was found.
     pub maps: Vec<(&'static str, TextureSource)>,
 }
 
@@ -274,6 +274,9 @@ impl Materials {
                 // Storage, not uniform: the shader branches on `flags` (see `storage_entry`).
                 // Gouraud shading reads the highlight's strength in the vertex shader.
                 storage_entry(2, wgpu::ShaderStages::VERTEX_FRAGMENT),
+                // map_Pr and map_Pm.
+                texture_entry(3, FILTERABLE),
+                texture_entry(4, FILTERABLE),
             ],
         });
         let one = |rgba: [u8; 4]| RgbaImage::from_pixel(1, 1, common::image::Rgba(rgba));
@@ -379,6 +382,17 @@ impl Materials {
             }
             None => self.flat_normal.clone(),
         };
+        // Data, like a normal map; white (1) where the material has none.
+        let mut data_map = |map: &Option<PathBuf>, what: &'static str| match map {
+            Some(path) => {
+                let (texture, source) = self.texture(up, path, false, desc);
+                maps.push((what, source));
+                texture
+            }
+            None => self.white.clone(),
+        };
+        let roughness = data_map(&desc.roughness_map, "roughness map");
+        let metallic = data_map(&desc.metallic_map, "metalness map");
         let uniform = MaterialUniform {
             diffuse: desc.diffuse.into(),
             specular: desc.specular,
@@ -409,6 +423,8 @@ impl Materials {
                     wgpu::BindGroupEntry { binding: 0, resource: wgpu::BindingResource::TextureView(albedo) },
                     wgpu::BindGroupEntry { binding: 1, resource: wgpu::BindingResource::TextureView(normal) },
                     wgpu::BindGroupEntry { binding: 2, resource: buffer.as_entire_binding() },
+                    wgpu::BindGroupEntry { binding: 3, resource: wgpu::BindingResource::TextureView(&roughness.view) },
+                    wgpu::BindGroupEntry { binding: 4, resource: wgpu::BindingResource::TextureView(&metallic.view) },
                 ],
             })
         };

@@ -64,23 +64,36 @@ pub struct MaterialDesc {
     pub albedo_map: Option<PathBuf>,
     /// map_Bump, bump or norm: a tangent-space normal map, read as data.
     pub normal_map: Option<PathBuf>,
+    /// map_Pr and map_Pm: roughness and metalness maps, read as data, whose
+    /// red channel (a grey image's value) multiplies Pr and Pm.
+    pub roughness_map: Option<PathBuf>,
+    pub metallic_map: Option<PathBuf>,
     /// Where else to look for a map by its file name alone, in order, when
     /// its path does not lead to it (a file made on another machine).
     pub texture_folders: Vec<PathBuf>,
 }
 
 impl MaterialDesc {
-    /// Cook-Torrance's roughness and metalness: Pr and Pm where given, else
-    /// a non-metal with the roughness Walter et al.'s rule gives for Ns
-    /// (`lighting::pbr::roughness_from_shininess`).
+    /// Cook-Torrance's roughness and metalness, which the maps multiply:
+    /// Pr and Pm where given; else 1 where a map gives the value alone;
+    /// else a non-metal with the roughness Walter et al.'s rule gives for
+    /// Ns (`lighting::pbr::roughness_from_shininess`).
     pub fn physical(&self) -> (f32, f32) {
-        let roughness = self.roughness.unwrap_or_else(|| lighting::pbr::roughness_from_shininess(self.shininess));
-        (roughness, self.metallic.unwrap_or(0.0))
+        let by_map = |map: &Option<PathBuf>| map.as_ref().map(|_| 1.0);
+        let roughness = self
+            .roughness
+            .or(by_map(&self.roughness_map))
+            .unwrap_or_else(|| lighting::pbr::roughness_from_shininess(self.shininess));
+        (roughness, self.metallic.or(by_map(&self.metallic_map)).unwrap_or(0.0))
     }
 
-    /// Whether the MTL gave Pr or Pm: a model made for physically based shading.
+    /// Whether the MTL gave Pr, Pm or their maps: a model made for
+    /// physically based shading.
     pub fn is_physical(&self) -> bool {
-        self.roughness.is_some() || self.metallic.is_some()
+        self.roughness.is_some()
+            || self.metallic.is_some()
+            || self.roughness_map.is_some()
+            || self.metallic_map.is_some()
     }
 
     /// A plain material: a colour and a highlight, no maps.
@@ -97,6 +110,8 @@ impl MaterialDesc {
             vertex_colours: false,
             albedo_map: None,
             normal_map: None,
+            roughness_map: None,
+            metallic_map: None,
             texture_folders: Vec::new(),
         }
     }

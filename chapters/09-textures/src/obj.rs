@@ -152,6 +152,8 @@ fn untextured(materials: &mut Vec<MaterialDesc>, index: usize) -> usize {
         name: format!("{} (no texture coordinates)", materials[index].name),
         albedo_map: None,
         normal_map: None,
+        roughness_map: None,
+        metallic_map: None,
         ..materials[index].clone()
     };
     if let Some(i) = materials.iter().position(|m| *m == plain) {
@@ -538,6 +540,8 @@ fn read_material_libraries(
                 let texture_path = |p: PathBuf| normalise(&here.join(p));
                 material.albedo_map = material.albedo_map.map(texture_path);
                 material.normal_map = material.normal_map.map(texture_path);
+                material.roughness_map = material.roughness_map.map(texture_path);
+                material.metallic_map = material.metallic_map.map(texture_path);
                 // Where else to look for a texture by its name alone: beside
                 // the MTL, then beside the OBJ.
                 material.texture_folders = vec![here.clone()];
@@ -671,6 +675,8 @@ fn material_of(m: &tobj::Material) -> MaterialDesc {
         vertex_colours: false,
         albedo_map: albedo_map.as_deref().and_then(texture_file),
         normal_map: normal_map.as_deref().and_then(texture_file),
+        roughness_map: m.unknown_param.get("map_Pr").and_then(|s| texture_file(s)),
+        metallic_map: m.unknown_param.get("map_Pm").and_then(|s| texture_file(s)),
         texture_folders: Vec::new(),
     }
 }

@@ -91,6 +91,8 @@ pub fn city_materials() -> Vec<MaterialDesc> {
                     vertex_colours: false,
                     albedo_map: Some(texture(texture_name, "albedo")),
                     normal_map: Some(texture(texture_name, "normal")),
+                    roughness_map: None,
+                    metallic_map: None,
                     texture_folders: Vec::new(),
                     roughness: None,
                     metallic: None,

@@ -620,6 +620,20 @@ fn pr_and_pm_are_read_clamped_with_the_line_named_or_derived_from_ns() {
 }
 
 #[test]
+fn map_pr_and_map_pm_are_read_beside_the_mtl_and_alone_give_the_value() {
+    let mtl = "newmtl mapped\nKd 1 1 1\nmap_Pr -imfchan l maps/rough.png\nmap_Pm metal.png\nPm 0.5\n";
+    let obj = "mtllib pbr.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nvt 0 0\nvt 1 0\nvt 0 1\nusemtl mapped\nf 1/1 2/2 3/3\n";
+    let dir = folder("pbr-maps", &[("pbr.obj", obj), ("pbr.mtl", mtl)]);
+    let loaded = load(&dir.join("pbr.obj")).unwrap();
+    let material = first_material(&loaded);
+    assert_eq!(material.roughness_map.as_deref(), Some(dir.join("maps/rough.png").as_path()));
+    assert_eq!(material.metallic_map.as_deref(), Some(dir.join("metal.png").as_path()));
+    // The map alone gives the roughness (times 1); Pm scales its map.
+    assert!(material.is_physical());
+    assert_eq!(material.physical(), (1.0, 0.5));
+}
+
+#[test]
 fn a_model_with_pr_or_pm_is_shaded_by_cook_torrance() {
     // A gold pyramid, facing the stage's camera, with and without Pr and Pm.
     let obj = "mtllib gold.mtl\nv -1 0 -1\nv 1 0 -1\nv 1 0 1\nv -1 0 1\nv 0 1.5 0\nusemtl gold\n\
@@ -642,4 +656,65 @@ fn a_model_with_pr_or_pm_is_shaded_by_cook_torrance() {
     }
     let differ = pictures[0].pixels().zip(pictures[1].pixels()).filter(|(a, b)| a != b).count();
     assert!(differ > 100, "Cook-Torrance and Blinn-Phong draw the same gold pyramid ({differ} pixels differ)");
+}
+
+/// A roughness or metalness map shades each texel as the same material with
+/// that texel's value as Pr or Pm does: a panel whose map is black on its
+/// left half and white on its right draws, pixel for pixel, either the
+/// panel with the low value throughout or the one with the high value,
+/// and plenty of each (only the seam between the halves, where the
+/// sampler blends them, may be neither). Made to fail by reading the
+/// roughness from the metalness map (white where the material has none),
+/// and by leaving the maps out of `physical_at`: every pixel then drew as
+/// the high value.
+#[test]
+fn roughness_and_metalness_maps_shade_each_texel_as_its_value_would() {
+    let halves = common::image::RgbaImage::from_fn(64, 64, |x, _| {
+        common::image::Rgba(if x < 32 { [0, 0, 0, 255] } else { [255, 255, 255, 255] })
+    });
+    let mut png = std::io::Cursor::new(Vec::new());
+    common::image::DynamicImage::ImageRgba8(halves).write_to(&mut png, common::image::ImageFormat::Png).unwrap();
+    let png = png.into_inner();
+    // A panel facing the stage's camera, its texture across it.
+    let obj = b"mtllib panel.mtl\nv 1 0 0\nv -1 0 0\nv -1 2 0\nv 1 2 0\nvt 0 0\nvt 1 0\nvt 1 1\nvt 0 1\nvn 0 0 -1\n\
+                usemtl m\nf 1/1/1 2/2/1 3/3/1\nf 1/1/1 3/3/1 4/4/1\n";
+    let gpu = gpu();
+    let view = common::chapter::view_index::<TexturesChapter>("car").unwrap();
+    let target = Target { format: OFFSCREEN_FORMAT, width: 640, height: 360, samples: 1 };
+    let draw = |case: &str, mtl: String| {
+        let dir = folder_of_bytes(case, &[("panel.obj", obj), ("panel.mtl", mtl.as_bytes()), ("halves.png", &png)]);
+        let mut chapter = chapter_with_model(&gpu, &dir.join("panel.obj"), (640, 360));
+        assert!(chapter.warnings.is_empty(), "{case}: {:?}", chapter.warnings);
+        assert!(chapter.featured.physical, "{case} is shaded by Cook-Torrance");
+        chapter.select_view(view);
+        // Bloom spreads a highlight over its neighbours: off, so that each
+        // pixel shows its own texel's light alone.
+        chapter.settings.bloom = false;
+        capture(&gpu, &mut chapter, target, (TexturesChapter::SNAPSHOT_TIME, view), Default::default()).unwrap()
+    };
+    let gold = "newmtl m\nKd 1.0 0.77 0.34\n";
+    for (key, other) in [("Pr", "Pm 1"), ("Pm", "Pr 0.3")] {
+        let mapped = draw(&format!("{key}-map"), format!("{gold}{other}\nmap_{key} halves.png\n"));
+        let low = draw(&format!("{key}-0"), format!("{gold}{other}\n{key} 0\n"));
+        let high = draw(&format!("{key}-1"), format!("{gold}{other}\n{key} 1\n"));
+        let close = |a: &[u8], b: &[u8]| a.iter().zip(b).all(|(x, y)| x.abs_diff(*y) <= 1);
+        let (mut as_low, mut as_high, mut neither, mut differ) = (0, 0, 0, 0);
+        for ((m, l), h) in mapped.pixels().zip(low.pixels()).zip(high.pixels()) {
+            if close(&l.0, &h.0) {
+                continue; // the background, and wherever the value makes no difference
+            }
+            differ += 1;
+            match (close(&m.0, &l.0), close(&m.0, &h.0)) {
+                (true, _) => as_low += 1,
+                (_, true) => as_high += 1,
+                _ => neither += 1,
+            }
+        }
+        eprintln!("map_{key}: {as_low} pixels as {key} 0, {as_high} as {key} 1, {neither} neither, of {differ}");
+        assert!(differ > 500, "{key} 0 and {key} 1 look alike ({differ} pixels differ)");
+        assert!(
+            as_low > differ / 4 && as_high > differ / 4 && neither < differ / 8,
+            "map_{key}: {as_low} pixels as {key} 0, {as_high} as {key} 1, {neither} neither, of {differ}"
+        );
+    }
 }
