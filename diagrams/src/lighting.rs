@@ -618,7 +618,8 @@ pub fn white_furnace() -> String {
 /// Chapter 08: the lobe a prefiltered sky assumes against the one a
 /// surface has. Seen 70° from its normal, a rough surface's specular lobe
 /// (D V n·l, `lighting::pbr`, in the plane of n and v) is cut off at the
-/// horizon and pulled up towards n; the prefiltered cube blurs as though the
+/// horizon and bent up towards n, where its facets shadow one another (V);
+/// the prefiltered cube blurs as though the
 /// surface faced the mirror direction r and were seen from it (D n·l with
 /// n = v = r), a lobe the same all round r. Each is scaled to its peak.
 pub fn prefiltered_lobe() -> String {
@@ -656,7 +657,7 @@ pub fn prefiltered_lobe() -> String {
     svg.text(screen(r, 238.0), "r", 13.0, "middle", BLUE);
     svg.text(
         Vec2::new(20.0, 26.0),
-        "the lobe the surface has: D V n·l, cut off at the horizon, pulled up by n·l",
+        "the lobe the surface has: D V n·l, cut off at the horizon, bent up by shadowing (V)",
         12.0,
         "start",
         ACCENT,
@@ -668,12 +669,7 @@ pub fn prefiltered_lobe() -> String {
         "start",
         BLUE,
     );
-    svg.text(
-        origin + Vec2::new(0.0, 30.0),
-        "roughness 0.6, seen 70° from the normal; each lobe scaled to its peak",
-        11.0,
-        "middle",
-        MUTED,
-    );
+    let caption = format!("roughness {roughness}, seen {}° from the normal; each lobe scaled to its peak", -view_angle);
+    svg.text(origin + Vec2::new(0.0, 30.0), &caption, 11.0, "middle", MUTED);
     svg.finish()
 }

@@ -139,8 +139,9 @@ fn sky_light(surface: Surface, n: vec3<f32>, v: vec3<f32>) -> vec3<f32> {
     let split = textureSampleLevel(brdf_table, brdf_sampler, vec2<f32>(n_dot_v, roughness), 0.0).xy;
     let specular = fresnel_f0(surface.albedo, surface.metallic) * split.x + split.y;
     let diffuse = (vec3<f32>(1.0) - specular) * (1.0 - clamp(surface.metallic, 0.0, 1.0)) * surface.albedo;
-    // Level 0 is a mirror's sky, the last roughness 1's (prefiltered_sky.rs).
-    let level = roughness * f32(textureNumLevels(sky_cube) - 1u);
+    // Level 0 is a mirror's sky, the last roughness 1's (prefiltered_sky.rs):
+    // by the roughness as given, since the cube needs no floor to stay finite.
+    let level = clamp(surface.roughness, 0.0, 1.0) * f32(textureNumLevels(sky_cube) - 1u);
     let mirrored = textureSampleLevel(sky_cube, sky_sampler, reflect(-v, n), level).rgb;
     return diffuse * sh_irradiance(sky_harmonics, n) / PI + specular * mirrored;
 }

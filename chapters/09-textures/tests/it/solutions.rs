@@ -199,8 +199,8 @@ fn toksvig(average_length: f32, shininess: f32) -> f32 {
 fn shade_with(in: Varyings, n: vec3<f32>, albedo_texel: vec4<f32>, shininess: f32) -> vec4<f32> {",
     ),
     (
-        "Surface(albedo, material.specular, material.shininess, material.physical.x, material.physical.y)",
-        "Surface(albedo, material.specular, shininess, material.physical.x, material.physical.y)",
+        "Surface(albedo, material.specular, material.shininess, physical.x, physical.y)",
+        "Surface(albedo, material.specular, shininess, physical.x, physical.y)",
     ),
     (
         "        let texel = textureSample(normal_map, surface_sampler, in.uv).xyz;
