@@ -8,9 +8,10 @@ use anyhow::{Context as _, bail};
 
 use crate::{cargo, root};
 
-/// Builds `book/book/`. With `check_snapshots`, first renders every view
-/// and compares it with its reference, so no figure can be out of date.
-pub fn build(check_snapshots: bool) -> anyhow::Result<()> {
+/// Builds `book/book/`, its browser program compiled by `profile`. With
+/// `check_snapshots`, first renders every view and compares it with its
+/// reference, so no figure can be out of date.
+pub fn build(check_snapshots: bool, profile: crate::web::Profile) -> anyhow::Result<()> {
     if check_snapshots {
         crate::prerequisites::ensure_adapter()?;
         cargo(&["run", "--quiet", "-p", "snapshots"])?;
@@ -34,7 +35,7 @@ pub fn build(check_snapshots: bool) -> anyhow::Result<()> {
     let html = book.join("book");
     // Every page's live frame points into live/: built now, so the link
     // check below fails if a chapter's page is missing.
-    crate::web::build(&html)?;
+    crate::web::build(&html, profile)?;
     let broken = check_links(&html)?;
     if !broken.is_empty() {
         bail!("broken links in the book:\n  {}", broken.join("\n  "));

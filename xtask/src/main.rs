@@ -37,13 +37,13 @@ fn main() -> ExitCode {
     let result = match args.first().map(String::as_str) {
         Some("test") => test(),
         Some("snapshot") => snapshot(&args[1..]),
-        Some("book") => book::build(true),
+        Some("book") => book::build(true, web::Profile::Published),
         Some("bench") => bench(&args[1..]),
         Some("window") => window_test::run(&args[1..]),
         Some("assets") => assets::generate(),
         Some("figures") => figures::run(&args[1..]),
         Some("serve") => web::serve(&args[1..]),
-        Some("web") => web::build(&root().join("book/book")),
+        Some("web") => web::build(&root().join("book/book"), web::Profile::Published),
         Some("browser") => web::browser_test(&args[1..]),
         Some("help" | "--help" | "-h") | None => {
             print!("{}", USAGE);
@@ -173,7 +173,8 @@ fn test() -> anyhow::Result<()> {
     // two cores busy.)
     step("window", &|| window_test::run_built(&[]))?;
     // `cargo test` has just compared every snapshot; the book only copies them.
-    step("book", &|| book::build(false))?;
+    // Its browser program without link-time optimisation (`web::Profile`).
+    step("book", &|| book::build(false, web::Profile::Test))?;
     step("browser", &|| web::browser_test(&[]))?;
     println!("\nxtask test: all checks passed in {:.0} s", started.elapsed().as_secs_f64());
     Ok(())

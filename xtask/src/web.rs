@@ -14,8 +14,28 @@ use anyhow::{Context as _, bail, ensure};
 use crate::{cargo, chapter_names, root, target_dir};
 
 const WASM_TARGET: &str = "wasm32-unknown-unknown";
-/// The cargo profile of the browser build (see the workspace Cargo.toml).
-const PROFILE: &str = "web";
+/// How the browser program is compiled (the profiles are in the workspace
+/// Cargo.toml).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Profile {
+    /// As the book is published: small downloads first (`web`: fat LTO,
+    /// one codegen unit, `opt-level = "z"`). `cargo xtask book` and the
+    /// browser bench.
+    Published,
+    /// For `cargo xtask test`: the same program without link-time
+    /// optimisation (`web-test`), which took most of the browser build's
+    /// time and changes what the pages download, not what they do.
+    Test,
+}
+
+impl Profile {
+    fn name(self) -> &'static str {
+        match self {
+            Profile::Published => "web",
+            Profile::Test => "web-test",
+        }
+    }
+}
 
 /// Rust's WebAssembly target, installed with rustup when it is missing (as
 /// the Vulkan driver is installed for the tests), or the command to run.
@@ -40,7 +60,7 @@ fn ensure_wasm_target() -> anyhow::Result<()> {
 /// chapter) and writes `live/` under `out`: the program and its script
 /// once, and a page per chapter, `live/<chapter>/index.html`, that loads
 /// them and names its chapter.
-pub fn build(out: &Path) -> anyhow::Result<()> {
+pub fn build(out: &Path, profile: Profile) -> anyhow::Result<()> {
     ensure_wasm_target()?;
     let chapters = chapter_names()?;
     cargo(&[
@@ -49,7 +69,7 @@ pub fn build(out: &Path) -> anyhow::Result<()> {
         "--target",
         WASM_TARGET,
         "--profile",
-        PROFILE,
+        profile.name(),
         "-p",
         "course",
         "--bin",
@@ -62,7 +82,7 @@ pub fn build(out: &Path) -> anyhow::Result<()> {
         std::fs::remove_dir_all(&live)?;
     }
     std::fs::create_dir_all(&live)?;
-    let wasm = target_dir().join(WASM_TARGET).join(PROFILE).join(format!("{PROGRAM}.wasm"));
+    let wasm = target_dir().join(WASM_TARGET).join(profile.name()).join(format!("{PROGRAM}.wasm"));
     wasm_bindgen_cli_support::Bindgen::new()
         .input_path(&wasm)
         .out_name(PROGRAM)
@@ -358,6 +378,8 @@ pub fn bench(tabulate_only: bool) -> anyhow::Result<()> {
     let chromium = ensure_chromium()?;
     let html = root().join("book/book");
     ensure!(html.join("live").is_dir(), "{} has no live chapters: run `cargo xtask book` first", html.display());
+    // The pages as published: `cargo xtask test` leaves its own build there.
+    build(&html, Profile::Published)?;
     let chapters = chapter_names()?;
     let port = serve_in_background(&html, 0)?;
     let url = format!("http://127.0.0.1:{port}");
