@@ -769,8 +769,9 @@ fn picture_alone(page: &ChapterPage) -> anyhow::Result<image::RgbaImage> {
 /// and chapter 09's stage (`car`), which goes through the code chapters 08
 /// to 11 share every frame (chapter 08's lights and post chain, 09's
 /// materials and textured renderer; the natively measured leak of 08–11
-/// was there) with a small scene. Its city took SwiftShader 2.5 s a frame,
-/// 156 s of the 60 frames watched; the stage, 20. A leak put back in
+/// was there) with a small scene. Watching the city instead, the memory
+/// checks (the runner's included) took 187 s in SwiftShader; with the
+/// stage, 31 s. A leak put back in
 /// `SceneLights::write` (100 KB a frame) failed it at 97.7 KB a frame.
 /// Every chapter's first view is also watched natively, in the window test.
 const MEMORY_CHAPTERS: [(&str, &str); 2] = [("triangle", ""), ("textures", "?view=car")];
