@@ -680,10 +680,10 @@ fn roughness_and_metalness_maps_shade_each_texel_as_its_value_would() {
                 usemtl m\nf 1/1/1 2/2/1 3/3/1\nf 1/1/1 3/3/1 4/4/1\n";
     let gpu = gpu();
     let view = common::chapter::view_index::<TexturesChapter>("car").unwrap();
-    let target = Target { format: OFFSCREEN_FORMAT, width: 640, height: 360, samples: 1 };
+    let target = Target { format: OFFSCREEN_FORMAT, width: 320, height: 180, samples: 1 };
     let draw = |case: &str, mtl: String| {
         let dir = folder_of_bytes(case, &[("panel.obj", obj), ("panel.mtl", mtl.as_bytes()), ("halves.png", &png)]);
-        let mut chapter = chapter_with_model(&gpu, &dir.join("panel.obj"), (640, 360));
+        let mut chapter = chapter_with_model(&gpu, &dir.join("panel.obj"), (320, 180));
         assert!(chapter.warnings.is_empty(), "{case}: {:?}", chapter.warnings);
         assert!(chapter.featured.physical, "{case} is shaded by Cook-Torrance");
         chapter.select_view(view);
