@@ -4,7 +4,9 @@
 //!
 //! - the still picture (`?view=…&time=…&size=800x450`, the `--screenshot`
 //!   path) read back from the canvas matches the native snapshot by FLIP,
-//!   within the chapter's browser tolerance (SwiftShader is not lavapipe);
+//!   within the chapter's browser tolerance (SwiftShader is not lavapipe),
+//!   for its first view and for the few in `MORE_STILLS` (chapter 08's
+//!   physically based spheres);
 //! - the live page draws frames (of the chapters that draw chapter 03's
 //!   terrain, whose frames take seconds in SwiftShader, only chapter 03's
 //!   page is run live); on chapters 01, 02 and one of the four that finish
@@ -460,18 +462,15 @@ const LIVE_TERRAIN_CHAPTER: &str = "terrain";
 /// are checked to draw live, and no more.
 const LIVE_POST_CHAPTER: &str = "shadows";
 
-// ANCHOR: chapter
-fn test_chapter(browser: &Browser, base: &str, entry: &course::Record) -> anyhow::Result<Comparison> {
-    let begun = Instant::now();
-    let mut steps = Vec::new();
-    // When each step was done, for the log.
-    macro_rules! lap {
-        ($what:literal) => {
-            steps.push(format!("{} {:.0} s", $what, begun.elapsed().as_secs_f64()))
-        };
-    }
-    // The still picture, through the --screenshot path, against the snapshot.
-    let view = entry.first_snapshot_view().context("no snapshot view")?.name;
+/// Views whose still pictures are compared too, beside each chapter's first:
+/// physically based shading lit by its sky, whose light compute passes
+/// make on the page's GPU.
+const MORE_STILLS: [(&str, &str); 1] = [("lighting", "spheres")];
+
+/// The still picture of `view` (`?view=…&time=…&size=…`, the --screenshot
+/// path) read back from the canvas, against the native snapshot within the
+/// chapter's browser tolerance, with no console errors on the way.
+fn still(browser: &Browser, base: &str, entry: &course::Record, view: &str) -> anyhow::Result<Comparison> {
     let query = format!("?view={view}&time={}&size={WIDTH}x{HEIGHT}", entry.snapshot_time);
     let page = ChapterPage::open(browser, &page_url(base, entry.name, &query))?;
     let progress = page.wait_status("picture")?;
@@ -509,8 +508,27 @@ fn test_chapter(browser: &Browser, base: &str, entry: &course::Record) -> anyhow
         );
     }
     no_console_errors(&page)?;
-    drop(page);
+    Ok(comparison)
+}
+
+// ANCHOR: chapter
+fn test_chapter(browser: &Browser, base: &str, entry: &course::Record) -> anyhow::Result<Comparison> {
+    let begun = Instant::now();
+    let mut steps = Vec::new();
+    // When each step was done, for the log.
+    macro_rules! lap {
+        ($what:literal) => {
+            steps.push(format!("{} {:.0} s", $what, begun.elapsed().as_secs_f64()))
+        };
+    }
+    // The still picture, through the --screenshot path, against the snapshot.
+    let view = entry.first_snapshot_view().context("no snapshot view")?.name;
+    let comparison = still(browser, base, entry, view)?;
     lap!("still");
+    for (_, view) in MORE_STILLS.iter().filter(|(chapter, _)| *chapter == entry.name) {
+        still(browser, base, entry, view).with_context(|| format!("the still of {view}"))?;
+        lap!("physically based still");
+    }
     // Chapters 04-07 draw chapter 03's terrain and more (rocks, sky, three
     // cameras' worth of water), whose live frames take 8.6 to 59.0 s each
     // in SwiftShader (book/src/bench/web.md). Their still picture above is
