@@ -781,8 +781,9 @@ impl Chapter for LightingChapter {
                 self.scene_lights.update_sky(gpu, &day, frame.timer);
                 let _ = gpu.device.poll(wgpu::PollType::wait_indefinitely());
             });
+        } else {
+            self.scene_lights.update_sky(gpu, &day, frame.timer);
         }
-        self.scene_lights.update_sky(gpu, &day, frame.timer);
         self.scene_lights.write(gpu, &camera, &day, &lights, &self.last_lists, options);
         let mut pieces = traffic.pieces();
         pieces.extend(self.moving_parts.pieces(frame.time));

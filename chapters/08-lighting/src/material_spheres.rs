@@ -8,7 +8,7 @@ use common::glam::{Mat4, Vec3};
 
 use crate::city::Material;
 use crate::city_meshes::{GpuInstance, GpuMaterial};
-use crate::pbr::ggx_alpha;
+use crate::pbr::shininess_from_roughness;
 
 // ANCHOR: spheres
 /// The rows' roughness, left to right.
@@ -25,14 +25,12 @@ pub const SPACING: f32 = 5.0;
 /// each roughness, then gold.
 pub fn materials(highlights: bool) -> Vec<GpuMaterial> {
     let sphere = |base: Vec3, metallic: f32, roughness: f32| {
-        // For Phong's highlights, the exponent the roughness rule inverts to
-        // (pbr::roughness_from_shininess).
-        let alpha = ggx_alpha(roughness);
         GpuMaterial {
             albedo: base.into(),
             specular: if highlights { 0.5 } else { 0.0 },
             emissive: [0.0; 3],
-            shininess: 2.0 / (alpha * alpha) - 2.0,
+            // For Phong's highlights.
+            shininess: shininess_from_roughness(roughness),
             albedo_high: base.into(),
             high_from: 0.0,
             high_to: 1.0,

@@ -54,6 +54,13 @@ pub fn fresnel_f0(base_colour: Vec3, metallic: f32) -> Vec3 {
 pub fn roughness_from_shininess(shininess: f32) -> f32 {
     (2.0 / (shininess.max(0.0) + 2.0)).powf(0.25)
 }
+
+/// The same rule the other way, s = 2/α² − 2: the Phong exponent for a
+/// roughness, for surfaces made with one to be shaded by Phong's models too.
+pub fn shininess_from_roughness(roughness: f32) -> f32 {
+    let alpha = ggx_alpha(roughness);
+    2.0 / (alpha * alpha) - 2.0
+}
 // ANCHOR_END: parameters
 
 // ANCHOR: terms

@@ -17,7 +17,6 @@ use crate::irradiance::SkyColours;
 /// and blurred again when the sky changes.
 pub struct PrefilteredSky {
     colours: wgpu::Buffer,
-    pub texture: wgpu::Texture,
     /// All six faces and all levels, as a cube: what `lights.wgsl` samples.
     pub view: wgpu::TextureView,
     /// Linear between texels and between levels.
@@ -139,7 +138,7 @@ impl PrefilteredSky {
             mipmap_filter: wgpu::MipmapFilterMode::Linear,
             ..Default::default()
         });
-        Ok(Self { colours, texture, view, sampler, pipeline, levels, filtered: None })
+        Ok(Self { colours, view, sampler, pipeline, levels, filtered: None })
     }
 
     /// Forgets the sky last computed, so that the next `update` computes

@@ -170,8 +170,9 @@ impl SceneLights {
     /// if the sky of `day` differs from the last one, timing the passes on
     /// `timer`; `write` does it untimed otherwise.
     pub fn update_sky(&mut self, gpu: &Gpu, day: &Daylight, timer: &common::PassTimer) {
-        self.sky.update(gpu, SkyColours::of(day), timer);
-        self.sky_mirror.update(gpu, SkyColours::of(day), timer);
+        let sky = SkyColours::of(day);
+        self.sky.update(gpu, sky, timer);
+        self.sky_mirror.update(gpu, sky, timer);
     }
 
     /// Writes the frame: the camera, the daylight, `lights` (at most
