@@ -797,7 +797,7 @@ const MEMORY_CHAPTERS: [(&str, &str); 2] = [("triangle", ""), ("textures", "?vie
 /// Watches the page's live heap (the bytes its allocator has handed out
 /// and not taken back) at every frame for `common::leak::WATCHED_FRAMES`
 /// frames, on a small canvas after ten frames to settle; fails when it
-/// grew by more than `common::leak::LEAK_BOUND` a frame (the median of the
+/// grew by more than `common::leak::HEAP_LEAK_BOUND` a frame (the median of the
 /// stretches' slopes: a leak raises every stretch, a one-off one).
 /// Returns a summary.
 fn memory_stays_flat(browser: &Browser, base: &str, chapter: &str, query: &str) -> anyhow::Result<String> {
@@ -816,13 +816,13 @@ fn memory_stays_flat(browser: &Browser, base: &str, chapter: &str, query: &str) 
         .context("the page reports no memory")?;
     let per_frame = common::leak::growth_per_frame(&values).context("too few readings")?;
     ensure!(
-        per_frame <= common::leak::LEAK_BOUND,
+        per_frame <= common::leak::HEAP_LEAK_BOUND,
         "the page's live heap grew by {:.1} KB a frame over {} frames (the median of {} stretches; more than {:.0} KB): \
          a leak; read {values:?}",
         per_frame / 1024.0,
         values.last().map_or(0, |r| r.0) - values[0].0,
         common::leak::STRETCHES,
-        common::leak::LEAK_BOUND / 1024.0
+        common::leak::HEAP_LEAK_BOUND / 1024.0
     );
     no_console_errors(&page)?;
     Ok(format!("{chapter}{query} {:+.1} KB a frame", per_frame / 1024.0))

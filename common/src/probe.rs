@@ -103,7 +103,7 @@ mod tests {
             pitch: -0.25,
             ..Camera::looking_at(glam::Vec3::ZERO, glam::Vec3::NEG_Z, 1.0)
         };
-        let memory = MemoryUse { process: Some(1234), gpu: None };
+        let memory = MemoryUse { process: Some(1234), heap: Some(567), gpu: None };
         let report = Report {
             drawn: 7,
             skipped: 2,
@@ -117,7 +117,7 @@ mod tests {
         assert_eq!(
             line,
             "drawn=7 skipped=2 surface=800x600 view=default typing=1 held=0 looked=5 \
-             memory=1234 gpu=n/a camera=1.0000 2.0000 3.0000 0.50000 -0.25000\n"
+             memory=1234 heap=567 gpu=n/a camera=1.0000 2.0000 3.0000 0.50000 -0.25000\n"
         );
         assert_eq!(MemoryUse::from_probe(&line), Some(memory));
         let none = probe.line(&Report { camera: None, ..report });
