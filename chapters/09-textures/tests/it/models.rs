@@ -17,7 +17,14 @@ fn folder(case: &str, files: &[(&str, &str)]) -> PathBuf {
 }
 
 /// A fresh folder holding `files` (name, which may have folders in it, and bytes).
+/// Each `case` names one folder: tests run side by side, and two sharing a
+/// folder would delete each other's files (it happened, once in a cold run).
 fn folder_of_bytes(case: &str, files: &[(&str, &[u8])]) -> PathBuf {
+    static TAKEN: std::sync::Mutex<Vec<String>> = std::sync::Mutex::new(Vec::new());
+    let mut taken = TAKEN.lock().unwrap_or_else(|e| e.into_inner());
+    assert!(!taken.iter().any(|t| t == case), "two tests use the folder for case `{case}`");
+    taken.push(case.to_string());
+    drop(taken);
     let dir = std::env::temp_dir().join(format!("textures-{case}-{}", std::process::id()));
     let _ = std::fs::remove_dir_all(&dir);
     std::fs::create_dir_all(&dir).unwrap();
@@ -342,7 +349,7 @@ fn utf16_latin1_crlf_and_names_with_trailing_spaces_load() {
         ("binary", &b"v 0 0 0\nv 1\x00 0 0\n"[..], "binary.obj: line 2: a zero byte"),
         ("long", long_line.as_bytes(), "long.obj: line 2: 2002 bytes on one line"),
     ] {
-        let dir = folder_of_bytes(case, &[(&format!("{case}.obj"), bytes)]);
+        let dir = folder_of_bytes(&format!("unreadable-{case}"), &[(&format!("{case}.obj"), bytes)]);
         let path = dir.join(format!("{case}.obj"));
         let error = obj::load_within(&path, &|p: &Path| common::files::read(p), limits).unwrap_err().to_string();
         assert!(error.contains(expected) && !error.contains("read error"), "{error}");
