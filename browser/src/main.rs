@@ -815,14 +815,12 @@ fn memory_stays_flat(browser: &Browser, base: &str, chapter: &str, query: &str) 
         .collect::<Option<_>>()
         .context("the page reports no memory")?;
     let per_frame = common::leak::growth_per_frame(&values).context("too few readings")?;
+    let frames = values.last().map_or(0, |r| r.0) - values[0].0;
+    let bound = common::leak::HEAP_LEAK_BOUND;
     ensure!(
-        per_frame <= common::leak::HEAP_LEAK_BOUND,
-        "the page's live heap grew by {:.1} KB a frame over {} frames (the median of {} stretches; more than {:.0} KB): \
-         a leak; read {values:?}",
-        per_frame / 1024.0,
-        values.last().map_or(0, |r| r.0) - values[0].0,
-        common::leak::STRETCHES,
-        common::leak::HEAP_LEAK_BOUND / 1024.0
+        per_frame <= bound,
+        "{}; read {values:?}",
+        common::leak::describe("the page's live heap", per_frame, frames, bound)
     );
     no_console_errors(&page)?;
     Ok(format!("{chapter}{query} {:+.1} KB a frame", per_frame / 1024.0))

@@ -23,6 +23,9 @@ pub const WATCHED_FRAMES: u64 = 60;
 /// enough that two one-off steps still leave the median on a quiet one.
 pub const STRETCHES: usize = 6;
 
+/// Frames in a stretch, however many frames are watched.
+pub const STRETCH_FRAMES: u64 = WATCHED_FRAMES / STRETCHES as u64;
+
 /// Frames watched more when the first [`WATCHED_FRAMES`] judge a leak, cut
 /// into stretches of the same length. Why: a step that falls across the
 /// edge between two stretches raises both, so two such steps and a third
@@ -104,7 +107,7 @@ pub fn growth_per_frame(readings: &[Reading]) -> Option<f64> {
     if last - first < WATCHED_FRAMES {
         return None;
     }
-    let stretches = ((last - first) / (WATCHED_FRAMES / STRETCHES as u64)) as usize;
+    let stretches = ((last - first) / STRETCH_FRAMES) as usize;
     let span = (last - first) as f64 / stretches as f64;
     let mut slopes = Vec::with_capacity(stretches);
     for k in 0..stretches {
@@ -118,6 +121,17 @@ pub fn growth_per_frame(readings: &[Reading]) -> Option<f64> {
         slopes.push((b.1 as f64 - a.1 as f64) / (b.0 - a.0) as f64);
     }
     median(&mut slopes)
+}
+
+/// What a leak found by [`growth_per_frame`] is told as: `what` grew by
+/// `per_frame` bytes a frame over `frames` frames, more than `bound`.
+pub fn describe(what: &str, per_frame: f64, frames: u64, bound: f64) -> String {
+    format!(
+        "{what} grew by {:.1} KB a frame over {frames} frames (the median of the slopes of its stretches of \
+         {STRETCH_FRAMES} frames; more than {:.0} KB a frame): a leak",
+        per_frame / 1024.0,
+        bound / 1024.0
+    )
 }
 
 /// The growth in bytes a cycle (a resize, a minimise), from memory read in

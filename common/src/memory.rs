@@ -30,7 +30,7 @@ pub struct MemoryUse {
 impl MemoryUse {
     /// What `device` and this process hold now.
     pub fn now(device: &wgpu::Device) -> Self {
-        Self { process: process_bytes(), heap: Some(ALLOCATOR.live() as u64), gpu: gpu_bytes(device) }
+        Self { process: process_bytes(), heap: Some(heap_bytes()), gpu: gpu_bytes(device) }
     }
 
     /// "412 MB process, 38.2 MB GPU" for the overlay.
@@ -90,7 +90,12 @@ fn status_bytes(field: &str) -> Option<u64> {
 /// allocator counts them ([`Counting`]).
 #[cfg(target_arch = "wasm32")]
 pub fn process_bytes() -> Option<u64> {
-    Some(ALLOCATOR.live() as u64)
+    Some(heap_bytes())
+}
+
+/// Bytes this program's allocator has handed out and not taken back.
+pub fn heap_bytes() -> u64 {
+    ALLOCATOR.live() as u64
 }
 
 /// The program's allocator: the system's (glibc's malloc on Linux,

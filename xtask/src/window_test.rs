@@ -315,9 +315,9 @@ impl<'d> Session<'d> {
     /// Whether memory read in the same state before each cycle and after
     /// the last (`readings`) grew by more than its bound a cycle.
     fn grows_too_much_a_cycle(&self, readings: &[Probe]) -> bool {
-        MEASURED.iter().zip(CYCLE_BOUNDS).any(|((_, read), bound)| {
-            let values: Option<Vec<u64>> = readings.iter().map(read).collect();
-            values.as_deref().and_then(leak::growth_per_cycle).is_some_and(|growth| growth > bound)
+        MEASURED.iter().any(|m| {
+            let values: Option<Vec<u64>> = readings.iter().map(m.read).collect();
+            values.as_deref().and_then(leak::growth_per_cycle).is_some_and(|growth| growth > m.per_cycle)
         })
     }
 
@@ -325,17 +325,17 @@ impl<'d> Session<'d> {
     /// the last (`readings`) grew by more than its bound a cycle (the
     /// median: a first cycle that fills a cache does not count).
     fn grows_less_than_a_leak_a_cycle(&self, cycle: &str, readings: &[Probe]) -> anyhow::Result<()> {
-        for ((what, read), bound) in MEASURED.into_iter().zip(CYCLE_BOUNDS) {
+        for Measured { what, read, per_cycle, .. } in MEASURED {
             let values: Option<Vec<u64>> = readings.iter().map(read).collect();
             let Some(growth) = values.as_deref().and_then(leak::growth_per_cycle) else { continue };
             self.log_memory(&format!("{cycle}: {what} {growth:+.0} bytes a cycle, read {values:?}"));
             ensure!(
-                growth <= bound,
+                growth <= per_cycle,
                 "{}: {what} grew by {:.0} KB a {cycle} (the median of {}; more than {:.0} KB): a leak; read {values:?}",
                 self.chapter,
                 growth / 1024.0,
                 readings.len() - 1,
-                bound / 1024.0
+                per_cycle / 1024.0
             );
         }
         Ok(())
@@ -392,24 +392,33 @@ impl<'d> Session<'d> {
 
     /// Reads memory at every frame for `leak::WATCHED_FRAMES` frames, after
     /// everything else (so caches are full), and fails when it grew by more
-    /// than its bound a frame ([`FRAME_BOUNDS`]): the median of the slopes of
-    /// stretches of ten frames, which one-off steps cannot move (where the
-    /// first sixty frames judge a leak, `leak::MORE_WATCHED_FRAMES` more are
-    /// read and all of them judge). Returns the growth of each of
-    /// [`MEASURED`], in bytes a frame.
+    /// than its bound a frame: the median of the slopes of stretches of
+    /// `leak::STRETCH_FRAMES`, which one-off steps cannot move (where the
+    /// first frames judge a leak, `leak::MORE_WATCHED_FRAMES` more are read
+    /// and all of them judge). Returns the growth of each of [`MEASURED`],
+    /// in bytes a frame.
     fn memory_stays_flat(&mut self) -> anyhow::Result<[Option<f64>; 3]> {
         let first = self.frames(1, "a frame before watching memory")?;
         let mut readings = vec![first.clone()];
-        let mut watched = leak::WATCHED_FRAMES;
-        loop {
-            self.read_memory_until(&mut readings, first.drawn + watched)?;
-            let growth = self.growth_per_frame(&readings)?;
-            let leaking = growth.iter().zip(FRAME_BOUNDS).any(|(g, bound)| g.is_some_and(|g| g > bound));
-            if !leaking || watched > leak::WATCHED_FRAMES {
-                return self.grows_less_than_a_leak_a_frame(&readings, growth);
-            }
-            watched += leak::MORE_WATCHED_FRAMES;
+        self.read_memory_until(&mut readings, first.drawn + leak::WATCHED_FRAMES)?;
+        let mut growth = self.growth_per_frame(&readings)?;
+        if over_a_bound(&growth) {
+            let more = first.drawn + leak::WATCHED_FRAMES + leak::MORE_WATCHED_FRAMES;
+            self.read_memory_until(&mut readings, more)?;
+            growth = self.growth_per_frame(&readings)?;
         }
+        let frames = readings.last().map_or(0, |r| r.drawn) - first.drawn;
+        for (m, per_frame) in MEASURED.iter().zip(growth) {
+            let Some(per_frame) = per_frame.filter(|&g| g > m.per_frame) else { continue };
+            bail!(
+                "{}: {}; readings in {}",
+                self.chapter,
+                leak::describe(m.what, per_frame, frames, m.per_frame),
+                self.probe.with_extension("memory").display()
+            );
+        }
+        ensure!(growth[0].is_some() && growth[1].is_some(), "{}: the probe reports no memory", self.chapter);
+        Ok(growth)
     }
 
     /// Adds a reading for every frame drawn until `frame`.
@@ -432,38 +441,14 @@ impl<'d> Session<'d> {
     /// logged with its readings.
     fn growth_per_frame(&self, readings: &[Probe]) -> anyhow::Result<[Option<f64>; 3]> {
         let mut growth = [None; 3];
-        for (i, (what, read)) in MEASURED.iter().enumerate() {
-            let values: Option<Vec<leak::Reading>> = readings.iter().map(|p| Some((p.drawn, read(p)?))).collect();
+        for (m, slot) in MEASURED.iter().zip(&mut growth) {
+            let values: Option<Vec<leak::Reading>> = readings.iter().map(|p| Some((p.drawn, (m.read)(p)?))).collect();
             let Some(values) = values else { continue };
             let per_frame = leak::growth_per_frame(&values)
-                .with_context(|| format!("{}: too few readings of {what} ({values:?})", self.chapter))?;
-            self.log_memory(&format!("{what}: {per_frame:+.0} bytes a frame, read {values:?}"));
-            growth[i] = Some(per_frame);
+                .with_context(|| format!("{}: too few readings of {} ({values:?})", self.chapter, m.what))?;
+            self.log_memory(&format!("{}: {per_frame:+.0} bytes a frame, read {values:?}", m.what));
+            *slot = Some(per_frame);
         }
-        Ok(growth)
-    }
-
-    /// Fails when any of `growth` is over its bound, or the probe
-    /// reports neither the process's memory nor its heap; returns `growth`.
-    fn grows_less_than_a_leak_a_frame(
-        &self,
-        readings: &[Probe],
-        growth: [Option<f64>; 3],
-    ) -> anyhow::Result<[Option<f64>; 3]> {
-        let frames = readings.last().map_or(0, |r| r.drawn) - readings[0].drawn;
-        for (((what, _), per_frame), bound) in MEASURED.iter().zip(growth).zip(FRAME_BOUNDS) {
-            ensure!(
-                per_frame.is_none_or(|g| g <= bound),
-                "{}: {what} grew by {:.1} KB a frame over {frames} frames (the median of the slopes of its \
-                 stretches of {} frames; more than {:.0} KB a frame): a leak; readings in {}",
-                self.chapter,
-                per_frame.unwrap_or_default() / 1024.0,
-                leak::WATCHED_FRAMES / leak::STRETCHES as u64,
-                bound / 1024.0,
-                self.probe.with_extension("memory").display()
-            );
-        }
-        ensure!(growth[0].is_some() && growth[1].is_some(), "{}: the probe reports no memory", self.chapter);
         Ok(growth)
     }
 
@@ -487,22 +472,42 @@ impl<'d> Session<'d> {
     }
 }
 
-/// How a kind of memory is read from a probe line.
-type ReadBytes = fn(&Probe) -> Option<u64>;
+/// A kind of memory the probe reports: its name, how it is read, and the
+/// most it may grow by steadily a frame and a cycle (`common/src/leak.rs`).
+struct Measured {
+    what: &'static str,
+    read: fn(&Probe) -> Option<u64>,
+    per_frame: f64,
+    per_cycle: f64,
+}
 
-/// The memory the probe reports, by name: the process's resident set and
-/// the GPU's buffers and textures.
-const MEASURED: [(&str, ReadBytes); 3] = [
-    ("the process's memory", |p| p.memory),
-    ("the live heap", |p| p.heap),
-    ("the GPU's buffers and textures", |p| p.gpu),
+/// The process's resident set, its live heap and the GPU's buffers and
+/// textures.
+const MEASURED: [Measured; 3] = [
+    Measured {
+        what: "the process's memory",
+        read: |p| p.memory,
+        per_frame: leak::LEAK_BOUND,
+        per_cycle: leak::CYCLE_BOUND,
+    },
+    Measured {
+        what: "the live heap",
+        read: |p| p.heap,
+        per_frame: leak::HEAP_LEAK_BOUND,
+        per_cycle: leak::HEAP_CYCLE_BOUND,
+    },
+    Measured {
+        what: "the GPU's buffers and textures",
+        read: |p| p.gpu,
+        per_frame: leak::LEAK_BOUND,
+        per_cycle: leak::GPU_CYCLE_BOUND,
+    },
 ];
 
-/// The most each of [`MEASURED`] may grow by a frame, steadily.
-const FRAME_BOUNDS: [f64; 3] = [leak::LEAK_BOUND, leak::HEAP_LEAK_BOUND, leak::LEAK_BOUND];
-
-/// The most each of [`MEASURED`] may grow by a cycle.
-const CYCLE_BOUNDS: [f64; 3] = [leak::CYCLE_BOUND, leak::HEAP_CYCLE_BOUND, leak::GPU_CYCLE_BOUND];
+/// Whether any of `growth` (one per [`MEASURED`]) is over its bound a frame.
+fn over_a_bound(growth: &[Option<f64>; 3]) -> bool {
+    MEASURED.iter().zip(growth).any(|(m, g)| g.is_some_and(|g| g > m.per_frame))
+}
 
 impl Drop for Session<'_> {
     fn drop(&mut self) {
