@@ -151,17 +151,10 @@ impl Args {
     }
 }
 
-/// A mistake in the flags found after parsing; exit code 2 like clap's.
-#[derive(Debug)]
-pub struct UsageError(pub String);
-
-impl std::fmt::Display for UsageError {
-    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
-        f.write_str(&self.0)
-    }
-}
-
-impl std::error::Error for UsageError {}
+/// A mistake in the flags found after parsing (exit code 2): written in
+/// `chapter`, whose own flags can be mistaken too, and named here, where
+/// runners look for it.
+pub use crate::chapter::UsageError;
 
 /// Fails early, before any GPU work, if `path` cannot be written. A file
 /// made to find out is removed again: the picture is written only once it

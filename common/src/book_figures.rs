@@ -58,6 +58,22 @@ pub fn thousands(value: f64) -> String {
     if value.round() < 0.0 { format!("-{whole}") } else { whole }
 }
 
+/// Every page of a chapter's section of the book (`book/src/NN-name/`,
+/// `section` being `NN-name`), joined in file order: what a test reads to
+/// check that the chapter's pages quote a figure, on whichever of its
+/// lessons the figure stands.
+#[cfg(not(target_arch = "wasm32"))]
+pub fn section_text(section: &str) -> String {
+    let folder = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("../book/src").join(section);
+    let mut files: Vec<std::path::PathBuf> = std::fs::read_dir(&folder)
+        .unwrap_or_else(|e| panic!("cannot read the book's section {}: {e}", folder.display()))
+        .filter_map(|entry| entry.ok().map(|e| e.path()))
+        .filter(|path| path.extension().is_some_and(|e| e == "md"))
+        .collect();
+    files.sort();
+    files.iter().map(|f| std::fs::read_to_string(f).unwrap_or_default()).collect::<Vec<_>>().join("\n")
+}
+
 /// The worked solution on `page` that follows `opening`, up to its
 /// `</details>`.
 pub fn solution<'page>(page: &'page str, opening: &str) -> Option<&'page str> {

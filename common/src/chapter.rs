@@ -1,7 +1,6 @@
 //! The contract every chapter fulfils, so that one runner can open it in a
 //! window, render it headless to a PNG, benchmark it and snapshot-test it.
 
-use crate::args::UsageError;
 use crate::multisampling::{Antialiasing, SceneTargets};
 use crate::{Camera, CameraPlace, DrawCounts, Gpu, GpuNeeds, Input, PassTimer, Preparation};
 
@@ -10,6 +9,19 @@ use crate::{Camera, CameraPlace, DrawCounts, Gpu, GpuNeeds, Input, PassTimer, Pr
 pub use crate::pipeline::{
     FILTERABLE, mesh_pipeline, sampler_entry, scene_pass, storage_entry, texture_entry, uniform_entry,
 };
+
+/// A mistake in the flags found after parsing, a chapter's own included:
+/// exit code 2, like clap's.
+#[derive(Debug)]
+pub struct UsageError(pub String);
+
+impl std::fmt::Display for UsageError {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.write_str(&self.0)
+    }
+}
+
+impl std::error::Error for UsageError {}
 
 /// A named picture a chapter can show: the default scene, a preset, or a
 /// debug view such as the depth buffer. Every view is a snapshot and a
@@ -338,7 +350,7 @@ pub trait Chapter: Sized + 'static {
     fn new(gpu: &Gpu, target: Target, prepared: Self::Prepared) -> anyhow::Result<Self>;
 
     /// Takes the values of the chapter's own [`Chapter::FLAGS`], right after
-    /// `new`. A value it cannot use is an [`crate::args::UsageError`] that
+    /// `new`. A value it cannot use is an [`UsageError`] that
     /// names the flag: the program exits with code 2.
     fn apply_flags(&mut self, _gpu: &Gpu, _flags: &FlagValues) -> anyhow::Result<()> {
         Ok(())

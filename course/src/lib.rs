@@ -168,10 +168,24 @@ impl Record {
     }
 }
 
-/// The book page of `record`: `NN-name.md`, NN from its title.
-pub fn page(record: &Record) -> String {
+/// The book's folder for `record`: `NN-name`, NN from its title. The
+/// chapter's section lives there: its opening page and its lessons.
+pub fn section(record: &Record) -> String {
     let number: String = record.title.chars().take_while(char::is_ascii_digit).collect();
-    format!("{number}-{}.md", record.name)
+    format!("{number}-{}", record.name)
+}
+
+/// The page that opens `record`'s section: `NN-name/index.md`.
+pub fn page(record: &Record) -> String {
+    format!("{}/index.md", section(record))
+}
+
+/// A page of the book under a chapter's opening page, as its title and its
+/// file in `book/src/`.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct SubPage {
+    pub title: String,
+    pub file: String,
 }
 
 /// The README's chapter table, made from the records.
@@ -187,9 +201,11 @@ pub fn readme_table(chapters: &[Record]) -> String {
 }
 
 /// The book's `SUMMARY.md` after its first pages, made from the records: a
-/// heading per part, the page that opens the part, a line per chapter, then
-/// the appendices, unnumbered, after a rule.
-pub fn summary_chapters(chapters: &[Record]) -> String {
+/// heading per part, the page that opens the part, a line per chapter with
+/// its pages under it (`sub_pages`: its lessons, then its reference pages,
+/// as its opening page lists them), then the appendices, unnumbered, after
+/// a rule.
+pub fn summary_chapters(chapters: &[Record], sub_pages: impl Fn(&Record) -> Vec<SubPage>) -> String {
     let mut text = String::new();
     let mut part: Option<&Part> = None;
     for c in chapters {
@@ -201,6 +217,9 @@ pub fn summary_chapters(chapters: &[Record]) -> String {
             }
         }
         text.push_str(&format!("- [{}]({})\n", c.title, page(c)));
+        for sub in sub_pages(c) {
+            text.push_str(&format!("    - [{}]({})\n", sub.title, sub.file));
+        }
     }
     text.push_str("\n---\n\n");
     for (title, file) in APPENDICES {

@@ -10,6 +10,7 @@
 
 pub mod bench_tables;
 pub mod blessings;
+pub mod book;
 pub mod snapshot;
 
 use std::path::{Path, PathBuf};
@@ -62,7 +63,8 @@ pub fn course_docs() -> anyhow::Result<Vec<(PathBuf, String)>> {
     // The first pages (title, introduction) run up to the first part heading.
     let head_end = summary.match_indices("\n# ").next().map_or(summary.len(), |(i, _)| i + 1);
     let head = summary[..head_end].trim_end();
-    let summary = format!("{head}\n{}", course::summary_chapters(&chapters));
+    let src = root.join("book/src");
+    let summary = format!("{head}\n{}", course::summary_chapters(&chapters, |c| book::sub_pages(&src, c)));
     Ok(vec![(readme_path, readme), (summary_path, summary)])
 }
 

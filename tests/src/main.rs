@@ -208,7 +208,8 @@ fn views_named(targets: &[(String, Option<String>)], chapter: &str) -> Vec<Strin
 }
 
 /// `--docs`: writes the README's chapter table and the book's summary from
-/// the chapter records (`cargo xtask book` runs it).
+/// the chapter records, then checks the pages' shape (`cargo xtask book`
+/// runs it before building).
 fn write_docs() -> ExitCode {
     let written = snapshots::course_docs().and_then(|docs| {
         for (path, text) in docs {
@@ -217,6 +218,11 @@ fn write_docs() -> ExitCode {
                 println!("wrote {}", path.display());
             }
         }
+        // The pages' shape, as the test `the_book_is_made_of_lessons_in_book_order` checks it.
+        let src = snapshots::book::book_src();
+        let summary = std::fs::read_to_string(src.join("SUMMARY.md"))?;
+        let problems = snapshots::book::check(&src, &snapshots::chapters(), &summary)?;
+        common::anyhow::ensure!(problems.is_empty(), "the book's pages:\n  {}", problems.join("\n  "));
         Ok(())
     });
     match written {

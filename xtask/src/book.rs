@@ -86,7 +86,7 @@ fn markdown_files(dir: &Path) -> anyhow::Result<Vec<PathBuf>> {
 /// Every `{{#include file:anchor}}` must name a file that exists and an
 /// anchor that it opens and closes. mdbook itself only warns and leaves the
 /// listing empty, which is how a book drifts from its code.
-fn check_includes(src: &Path) -> anyhow::Result<Vec<String>> {
+pub fn check_includes(src: &Path) -> anyhow::Result<Vec<String>> {
     let mut problems = Vec::new();
     for page in markdown_files(src)? {
         let text = std::fs::read_to_string(&page)?;

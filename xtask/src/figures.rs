@@ -47,6 +47,8 @@ use anyhow::{Context as _, bail, ensure};
 /// The directives a page may hold.
 const FIGURE: &str = "{{#figure ";
 const CHECK: &str = "{{#check ";
+const RUN: &str = "{{#run ";
+const VIEW: &str = "{{#view ";
 
 /// Expands pages, reading their sources from files (each once).
 pub struct Figures {
@@ -80,7 +82,7 @@ impl Figures {
                 break;
             };
             let directive = &after[..end + 2];
-            match self.directive(folder, directive) {
+            match self.directive(page, folder, directive) {
                 Ok(written) => out.push_str(&written),
                 Err(error) => problems.push(format!("{page}: {directive}: {error:#}")),
             }
@@ -91,8 +93,15 @@ impl Figures {
     }
 
     /// What one `{{#figure …}}` or `{{#check …}}` writes into the page.
-    fn directive(&self, folder: &Path, directive: &str) -> anyhow::Result<String> {
+    fn directive(&self, page: &str, folder: &Path, directive: &str) -> anyhow::Result<String> {
         let body = &directive[..directive.len() - 2];
+        for (prefix, run) in [(RUN, true), (VIEW, false)] {
+            if let Some(spec) = body.strip_prefix(prefix) {
+                let words: Vec<&str> = spec.split_whitespace().collect();
+                let [chapter, view] = words[..] else { bail!("names a chapter and a view, and nothing else") };
+                return Ok(if run { run_line(page, chapter, view) } else { format!("`{view}`") });
+            }
+        }
         if let Some(spec) = body.strip_prefix(FIGURE) {
             let (expression, format) = split_format(spec)?;
             let expression = self.parse(folder, expression)?;
@@ -178,9 +187,33 @@ impl Figures {
     }
 }
 
-/// The byte offset of the next `{{#figure ` or `{{#check `.
+/// The byte offset of the next directive this preprocessor writes.
 fn next_directive(text: &str) -> Option<usize> {
-    [FIGURE, CHECK].iter().filter_map(|d| text.find(d)).min()
+    [FIGURE, CHECK, RUN, VIEW].iter().filter_map(|d| text.find(d)).min()
+}
+
+/// The way from `page` (`book/src/05-instancing/gpu.md`, or a name
+/// relative to `book/src`) up to the book's root: `../` per folder.
+fn to_root(page: &str) -> String {
+    let inside = page.strip_prefix("book/src/").unwrap_or(page);
+    "../".repeat(inside.matches('/').count())
+}
+
+/// `{{#run CHAPTER VIEW}}`: the command that runs the chapter on the view,
+/// and the chapter itself on that view, live in the page. (Whether the
+/// chapter has the view is the snapshot crate's check, `snapshots::book`,
+/// which knows the chapters.)
+fn run_line(page: &str, chapter: &str, view: &str) -> String {
+    let root = to_root(page);
+    let live = format!("{root}live/{chapter}/index.html?view={view}");
+    format!(
+        "```sh\ncargo run --release -p {chapter} -- --view {view}\n```\n\n\
+         <iframe class=\"live-chapter\" loading=\"lazy\" src=\"{live}\" title=\"{chapter}, on its {view} view, \
+         running live in this page\" width=\"100%\" height=\"420\" style=\"border: 0\"></iframe>\n\n\
+         <small>The chapter itself, on its <code>{view}</code> view, running in your browser: click to start it, \
+         then drag to look around and press F1 for its keys. <a href=\"{live}\">Open it on its own</a>; \
+         <a href=\"{root}running-in-the-browser.html\">what differs from the desktop</a>.</small>\n"
+    )
 }
 
 fn first_line(text: &str) -> &str {
@@ -643,17 +676,31 @@ fn table_cells<'t>(text: &'t str, keys: &[&str]) -> anyhow::Result<Vec<&'t str>>
     }
 }
 
-/// The book's pages in `src`: every `.md` file directly in it (the bench
-/// tables below it are sources, not pages).
+/// The book's pages in `src`: every `.md` file in it and in its chapters'
+/// folders (the bench tables in `bench/` are sources, not pages).
 fn pages(src: &Path) -> anyhow::Result<Vec<PathBuf>> {
     let mut pages = Vec::new();
     for entry in std::fs::read_dir(src).with_context(|| format!("cannot read {}", src.display()))? {
+        let path = entry?.path();
+        let name = path.file_name().map(|n| n.to_string_lossy().to_string()).unwrap_or_default();
+        if path.is_dir() && !["bench", "figures", "diagrams", "pictures"].contains(&name.as_str()) {
+            pages.extend(pages_in(&path)?);
+        } else if path.extension().is_some_and(|e| e == "md") {
+            pages.push(path);
+        }
+    }
+    pages.sort();
+    Ok(pages)
+}
+
+fn pages_in(dir: &Path) -> anyhow::Result<Vec<PathBuf>> {
+    let mut pages = Vec::new();
+    for entry in std::fs::read_dir(dir)? {
         let path = entry?.path();
         if path.extension().is_some_and(|e| e == "md") {
             pages.push(path);
         }
     }
-    pages.sort();
     Ok(pages)
 }
 
@@ -671,17 +718,20 @@ fn check_pages(src: &Path) -> anyhow::Result<Vec<String>> {
     Ok(problems)
 }
 
-/// `cargo xtask figures [PAGE…]`: every page's figures checked, as the
-/// book's build and `cargo xtask test` check them; each PAGE named (`frame-rates.md`)
+/// `cargo xtask figures [PAGE…]`: every page's figures and listings
+/// checked, as the book's build and `cargo xtask test` check them; each PAGE named (`frame-rates.md`)
 /// printed with its figures written, to read what a reader will.
 pub fn run(pages_to_print: &[String]) -> anyhow::Result<()> {
     let src = crate::root().join("book/src");
     let problems = check_pages(&src)?;
     ensure!(problems.is_empty(), "figures that do not match their sources:\n  {}", problems.join("\n  "));
+    let broken = crate::book::check_includes(&src)?;
+    ensure!(broken.is_empty(), "broken listings in the book:\n  {}", broken.join("\n  "));
     for name in pages_to_print {
         let path = src.join(name);
         let text = std::fs::read_to_string(&path).with_context(|| format!("cannot read {}", path.display()))?;
-        let expanded = Figures::new().expand(name, &src, &text).map_err(|p| anyhow::anyhow!(p.join("\n")))?;
+        let folder = path.parent().unwrap_or(&src);
+        let expanded = Figures::new().expand(name, folder, &text).map_err(|p| anyhow::anyhow!(p.join("\n")))?;
         print!("{expanded}");
     }
     println!("every figure on the book's pages matches its source");

@@ -11,6 +11,9 @@ pub mod fog_settings;
 pub mod fog_binding;
 // The chapter itself: its views and frame.
 pub mod demo;
+// The worked solutions to the lessons' exercises, each a test.
+#[cfg(test)]
+mod solutions;
 
 pub use demo::{CameraPreset, FogChapter, Settings, VIEW_TABLE};
 pub use fog_binding::{FogBinding, fog_shader};

@@ -133,7 +133,7 @@ mod tests {
     /// needs none of the big maps built to stay true.
     #[test]
     fn page_05_gives_the_worked_out_sizes_of_every_map() {
-        let page = include_str!("../../../book/src/05-instancing.md");
+        let page = common::book_figures::section_text("05-instancing");
         for chunks in [16, 32, 64] {
             let row = worked_out(chunks, 32).row();
             assert!(page.contains(&row), "page 05's memory table should have the row `{row}`");

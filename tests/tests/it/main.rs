@@ -11,6 +11,7 @@
 
 mod bench_tables;
 mod blessings;
+mod book_pages;
 mod chapter_flags;
 mod clipping;
 mod comparison;

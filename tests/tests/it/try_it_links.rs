@@ -186,17 +186,9 @@ fn try_it_links_name_a_chapter_a_file_it_builds_from_and_text_in_that_file() {
     }
     let graph = import_graph(&shaders);
 
-    let book = root().join("book/src");
-    let mut pages: Vec<PathBuf> = std::fs::read_dir(&book)
-        .unwrap()
-        .map(|entry| entry.unwrap().path())
-        .filter(|p| p.extension().is_some_and(|e| e == "md"))
-        .collect();
-    pages.sort();
     let mut links = Vec::new();
-    for page in &pages {
-        let text = std::fs::read_to_string(page).unwrap();
-        links.extend(page_links(&text, &page.file_name().unwrap().to_string_lossy()));
+    for page in snapshots::book::read_pages(&snapshots::book::book_src()).unwrap() {
+        links.extend(page_links(&page.text, &page.file));
     }
     let errors: Vec<String> = links
         .iter()

@@ -192,7 +192,7 @@ fn exercise_4_a_typo_is_reported_at_its_line_and_the_last_good_pipeline_draws_on
     assert!(error.contains(&format!("triangle/triangle.wgsl:{line}:12")), "{error}");
     assert!(error.contains(r#"expected assignment or increment/decrement, found "vec4""#), "{error}");
     // The page quotes the message at that line and column.
-    let page = std::fs::read_to_string(concat!(env!("CARGO_MANIFEST_DIR"), "/../../book/src/01-triangle.md")).unwrap();
+    let page = common::book_figures::section_text("01-triangle");
     for quoted in
         [format!("triangle/triangle.wgsl:{line}:12"), format!("{line} │     retrun"), format!("Line {line}, but")]
     {

@@ -205,7 +205,7 @@ fn at_the_edge_under_the_ground_and_at_one_pixel_nothing_breaks() {
 #[test]
 fn the_page_quotes_the_levels_as_they_are() {
     let (gpu, data) = default_terrain();
-    let page = std::fs::read_to_string(concat!(env!("CARGO_MANIFEST_DIR"), "/../../book/src/03-terrain.md")).unwrap();
+    let page = common::book_figures::section_text("03-terrain");
     // Compared with lines joined: a figure may fall across a line break.
     let flat = |text: &str| text.split_whitespace().collect::<Vec<_>>().join(" ");
     let page = flat(&page);

@@ -1,6 +1,6 @@
 //! Chapter 06's integration tests, one binary: the sun in the sky is the
 //! light on the ground, chapter 05's rocks culled by chunk, and the worked
-//! solutions to the exercises of pages 04, 05 and 06.
+//! solutions to the exercises of pages 05 and 06.
 //!
 //! One test binary per crate: each links wgpu, naga, egui and winit, so
 //! every extra file in `tests/` would be another link of all of them.
@@ -13,7 +13,6 @@ use std::sync::OnceLock;
 
 use common::Gpu;
 
-mod fog_solutions;
 mod instancing_solutions;
 mod rock_culling;
 mod solutions;

@@ -73,8 +73,7 @@ fn the_cpu_culling_view_draws_the_rocks_of_the_chunks_in_view_and_says_how_many(
     assert!(line.contains(&said) && line.contains(&triangles), "`{line}` should say `{said}` and `{triangles}`");
 
     // Page 05 quotes the view's figures.
-    let page =
-        std::fs::read_to_string(concat!(env!("CARGO_MANIFEST_DIR"), "/../../book/src/05-instancing.md")).unwrap();
+    let page = common::book_figures::section_text("05-instancing");
     for figure in [
         format!("**{} of the 1,000,000 rocks**", thousands(in_view.into())),
         format!("**in {} calls**", calls.rocks),
@@ -377,8 +376,7 @@ fn the_default_views_of_05_and_06_draw_a_tenth_of_the_rock_triangles_culling_by_
     // Page 05 quotes the counts.
     let [full, octahedra, tetrahedra] = graded.levels.expect("graded on the GPU").map(|n| thousands(n.into()));
     let share = 100.0 * graded.triangles as f64 / by_chunk.triangles as f64;
-    let page =
-        std::fs::read_to_string(concat!(env!("CARGO_MANIFEST_DIR"), "/../../book/src/05-instancing.md")).unwrap();
+    let page = common::book_figures::section_text("05-instancing");
     for figure in [
         format!("**{} rock triangles** a frame", thousands(by_chunk.triangles as f64)),
         format!("**{} rocks**", thousands(graded.rocks.into())),

@@ -1,16 +1,23 @@
-//! Worked solutions to the exercises of book page 04 (fog), compiled and
-//! checked here, with chapter 06's tests (see `main.rs` for why): the page
-//! includes them by anchor, and each test asserts the figure it states.
+//! Worked solutions to the exercises of chapter 04's lessons, compiled and
+//! checked with the chapter's own tests: the lessons include them by
+//! anchor, and each test asserts the figure it states.
 
+use crate::{FogSettings, fog_shader};
 use common::glam::Vec3;
 use common::headless::{OFFSCREEN_FORMAT, Offscreen, read_texture};
 use common::pipeline::uniform_entry;
 use common::wgpu::util::DeviceExt as _;
 use common::{PassTimer, ShaderFile, Target, image, shader, wgpu};
-use fog::{FogSettings, fog_shader};
 use terrain::culling::Frustum;
 use terrain::heightfield::TerrainSettings;
 use terrain::{KEEP_ALL, SKY, Sun, TerrainData, TerrainRenderer, start_camera};
+
+/// One device for every test here: the terrain is made once on it and
+/// shared (`Gpu::cached`).
+fn test_gpu() -> &'static common::Gpu {
+    static GPU: std::sync::OnceLock<common::Gpu> = std::sync::OnceLock::new();
+    GPU.get_or_init(|| common::Gpu::headless(terrain::gpu_needs()).expect("an adapter (lavapipe will do)"))
+}
 
 // ANCHOR: fog_starts
 /// Exercise 1: where the fog "starts", taken as the distance at which a
@@ -23,7 +30,7 @@ fn fog_starts(fog: FogSettings) -> f32 {
 
 #[test]
 fn exercise_1_gradient_4_is_clear_to_380_m_and_a_wall_by_1_km() {
-    let gpu = crate::plain_gpu();
+    let gpu = test_gpu();
     let data = TerrainData::get(gpu, TerrainSettings::default());
     let [gentle, steep] = [1.0, 4.0].map(|gradient| FogSettings { gradient, ..FogSettings::HAZE });
     for fog in [gentle, steep, FogSettings::HAZE] {
@@ -149,7 +156,7 @@ fn fog_group(device: &wgpu::Device, fog: FogSettings) -> (wgpu::BindGroupLayout,
 
 /// The terrain from the start camera in `fog`, at 320 × 180, drawn with `shader`.
 fn render_fogged(shader: &ShaderFile, fog: FogSettings) -> image::RgbaImage {
-    let gpu = crate::plain_gpu();
+    let gpu = test_gpu();
     let target = Target { format: OFFSCREEN_FORMAT, width: 320, height: 180, samples: 1 };
     let terrain = TerrainRenderer::new(gpu, TerrainData::get(gpu, TerrainSettings::default()));
     let (air_layout, air) = fog_group(&gpu.device, fog);
