@@ -13,6 +13,9 @@
 //!   with chapter 08's post chain, a held key and a mouse drag reach the
 //!   chapter (its probe says so), and a canvas collapsed to 0×0 pauses and
 //!   then resumes;
+//! - the chapter's first lesson in the book: its live frame is the
+//!   chapter on the view the lesson's run line names, and once clicked it
+//!   draws that view;
 //! - nothing was written to the console as an error, and nothing panicked.
 //!
 //! Once per run it also checks that a panic's message reaches the page and
@@ -511,6 +514,67 @@ fn still(browser: &Browser, base: &str, entry: &course::Record, view: &str) -> a
     Ok(comparison)
 }
 
+/// The chapter's first lesson, as the book serves it: its live frame is
+/// the chapter's page on the view its run line names, and once clicked,
+/// as a reader would, it draws that view. Returns the lesson and the view.
+fn lesson_frame(browser: &Browser, base: &str, entry: &course::Record) -> anyhow::Result<String> {
+    let src = snapshots::book::book_src();
+    let lesson = snapshots::book::sub_pages(&src, entry).into_iter().next().context("the chapter lists no lesson")?;
+    let text = std::fs::read_to_string(src.join(&lesson.file)).with_context(|| format!("reading {}", lesson.file))?;
+    let view = snapshots::book::views_named(&text)
+        .into_iter()
+        .find(|named| named.run)
+        .with_context(|| format!("{} has no run line", lesson.file))?
+        .view;
+    let url = format!("{}/{}", base.trim_end_matches('/'), lesson.file.replace(".md", ".html"));
+    let page = ChapterPage::open(browser, &url)?;
+    let frame = "document.querySelector('iframe.live-chapter')";
+    let src_attr = page.eval(&format!("{frame}.getAttribute('src')"))?;
+    let wanted = format!("live/{}/index.html?view={view}", entry.name);
+    ensure!(
+        src_attr.as_str().is_some_and(|s| s.ends_with(&wanted)),
+        "{}: its live frame shows {src_attr}, not {wanted}",
+        lesson.file
+    );
+    // A small frame, brought into view (it loads lazily): SwiftShader draws
+    // it quickly, and the terrain chapters choose their detail by the
+    // picture's height.
+    page.eval(&format!(
+        "(f => {{ f.style.width = '320px'; f.style.height = '180px'; f.scrollIntoView(); return 1 }})({frame})"
+    ))?;
+    let inside = |what: &str| format!("(() => {{ const d = {frame}.contentDocument; return d && {what} }})()");
+    let deadline = Instant::now() + STEP;
+    while page.eval(&inside("!!d.querySelector('#message button')"))?.as_bool() != Some(true) {
+        ensure!(Instant::now() < deadline, "{}: the live frame never offered its button", lesson.file);
+        std::thread::sleep(Duration::from_millis(100));
+    }
+    page.eval(&inside("(d.querySelector('#message button').click(), 1)"))?;
+    loop {
+        let state = |key: &str| {
+            page.eval(&inside(&format!("(d.body.dataset.{key} || '')")))
+                .ok()
+                .and_then(|v| v.as_str().map(str::to_string))
+                .unwrap_or_default()
+        };
+        if state("status") == "error" {
+            bail!("{}: the live frame reports: {}", lesson.file, state("error"));
+        }
+        let probe = state("probe");
+        if Probe::parse(&probe).is_some_and(|p| p.drawn >= 1) {
+            ensure!(
+                probe.split_whitespace().any(|w| w == format!("view={view}")),
+                "{}: the live frame draws another view than {view} (probe: {probe})",
+                lesson.file
+            );
+            break;
+        }
+        ensure!(Instant::now() < deadline, "{}: no live frame within {STEP:?} (probe: {probe})", lesson.file);
+        std::thread::sleep(Duration::from_millis(100));
+    }
+    no_console_errors(&page)?;
+    Ok(format!("{} on {view}", lesson.file))
+}
+
 // ANCHOR: chapter
 fn test_chapter(browser: &Browser, base: &str, entry: &course::Record) -> anyhow::Result<Comparison> {
     let begun = Instant::now();
@@ -521,6 +585,10 @@ fn test_chapter(browser: &Browser, base: &str, entry: &course::Record) -> anyhow
             steps.push(format!("{} {:.0} s", $what, begun.elapsed().as_secs_f64()))
         };
     }
+    // The book's first lesson of the chapter, its live frame clicked.
+    let lesson = lesson_frame(browser, base, entry).context("the first lesson's live frame")?;
+    steps.push(lesson);
+    lap!("lesson frame");
     // The still picture, through the --screenshot path, against the snapshot.
     let view = entry.first_snapshot_view().context("no snapshot view")?.name;
     let comparison = still(browser, base, entry, view)?;
