@@ -109,6 +109,15 @@ pub struct ViewRow<S, P> {
 }
 
 impl<S, P> ViewRow<S, P> {
+    /// The settings row `view` of `table` applies, as `Debug` writes them:
+    /// what a chapter's [`Chapter::view_settings`] returns.
+    pub fn settings_of<const N: usize>(table: &[Self; N], view: usize) -> String
+    where
+        S: std::fmt::Debug,
+    {
+        table.get(view).map_or_else(String::new, |row| format!("{:?}", row.settings))
+    }
+
     /// A way of drawing: applies `settings`, leaves the camera alone.
     pub const fn mode(name: &'static str, about: &'static str, settings: S) -> Self {
         Self { view: View::mode(name, about), settings, camera: None }
@@ -364,6 +373,16 @@ pub trait Chapter: Sized + 'static {
     /// the camera: its row's settings in the chapter's view table. Only
     /// [`Chapter::select_view`] calls it.
     fn apply_view(&mut self, _view: usize) {}
+
+    /// The settings view `view` applies, as the chapter's view table
+    /// writes them (`ViewRow::settings_of(&VIEW_TABLE, view)`): part of
+    /// the fingerprint of the view's frame ([`crate::fingerprint`]), so a
+    /// bench row timed before the view's settings changed is known to be
+    /// older than its frame.
+    fn view_settings(view: usize) -> String {
+        let _ = view;
+        String::new()
+    }
 
     /// The learner (or `--view`, or a test) picked `view`: its settings,
     /// and for a preset, its camera. The one way to switch views; chapters

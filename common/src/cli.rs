@@ -96,24 +96,30 @@ fn run_headless<C: Chapter>(args: &Args) -> anyhow::Result<()> {
             args.size.width,
             args.size.height
         );
-        println!("| view | what | min ms | median ms | p95 ms |");
-        println!("|---|---|---:|---:|---:|");
-        let row = |view: &str, what: &str, s: Stats| {
-            println!("| {view} | {what} | {:.2} | {:.2} | {:.2} |", s.min, s.median, s.p95);
+        // Every row carries the fingerprint of the frame it timed
+        // (`common::fingerprint`), and the frames section says what each was.
+        println!("| view | what | min ms | median ms | p95 ms | frame |");
+        println!("|---|---|---:|---:|---:|---|");
+        let row = |view: &str, what: &str, s: Stats, frame: &str| {
+            println!("| {view} | {what} | {:.2} | {:.2} | {:.2} | {frame} |", s.min, s.median, s.p95);
         };
         let mut notes = Vec::new();
         let mut medians = Vec::new();
         let mut triangles = Vec::new();
+        let mut frames_timed = Vec::new();
         for view in views {
             let report = headless::bench::<C>(&gpu, &request(view), frames, &args.chapter_flags)?;
+            let fingerprint = headless::fingerprint::<C>(&gpu, view, &args.chapter_flags)?;
+            let frame = fingerprint.id();
             medians.push((report.view, report.frame.median));
-            row(report.view, "frame (CPU+GPU)", report.frame);
+            row(report.view, "frame (CPU+GPU)", report.frame, &frame);
             for (pass, stats) in &report.passes {
-                row(report.view, &format!("GPU: {pass} pass"), *stats);
+                row(report.view, &format!("GPU: {pass} pass"), *stats, &frame);
             }
             for (work, stats) in &report.cpu {
-                row(report.view, &format!("CPU: {work}"), *stats);
+                row(report.view, &format!("CPU: {work}"), *stats, &frame);
             }
+            frames_timed.push((report.view, fingerprint));
             let extra = if report.stats.is_empty() { String::new() } else { format!("; {}", report.stats) };
             notes.push(format!("- {}: setup (`Chapter::new`) {:.0} ms{extra}", report.view, report.setup_ms));
             notes.push(format!("- {}: {}", report.view, report.memory.summary()));
@@ -131,6 +137,7 @@ fn run_headless<C: Chapter>(args: &Args) -> anyhow::Result<()> {
         if !triangles.is_empty() {
             print_triangles(&triangles);
         }
+        println!("\n{}", crate::fingerprint::frames_section(&frames_timed));
         let baseline = C::BENCH_BASELINE.and_then(|name| medians.iter().find(|(view, _)| *view == name));
         if let Some(&(name, base)) = baseline {
             println!("\nEach view's median frame against `{name}`'s:\n");

@@ -12,15 +12,19 @@ use std::ops::{Add, AddAssign, Range};
 pub struct Drawn {
     pub draws: u32,
     pub triangles: u64,
+    /// Of `triangles`, those known only from the GPU's own count, read
+    /// back a frame or more late (draws the GPU wrote itself): they are
+    /// an earlier frame's, so a frame's fingerprint leaves them out.
+    pub read_back: u64,
 }
 
 impl Drawn {
     /// No draw at all.
-    pub const NOTHING: Self = Self { draws: 0, triangles: 0 };
+    pub const NOTHING: Self = Self { draws: 0, triangles: 0, read_back: 0 };
 
     /// One full-screen triangle (`common::fullscreen`): one draw of three
     /// vertices, one instance.
-    pub const FULL_SCREEN: Self = Self { draws: 1, triangles: 1 };
+    pub const FULL_SCREEN: Self = Self { draws: 1, triangles: 1, read_back: 0 };
 
     /// One draw of a triangle list, given the draw's own arguments:
     /// `vertices` (or indices, for `draw_indexed`) and `instances`, as
@@ -29,24 +33,39 @@ impl Drawn {
     pub fn triangle_list(vertices: Range<u32>, instances: Range<u32>) -> Self {
         let per_instance = u64::from(vertices.end.saturating_sub(vertices.start) / 3);
         let instances = u64::from(instances.end.saturating_sub(instances.start));
-        Self { draws: 1, triangles: per_instance * instances }
+        Self { draws: 1, triangles: per_instance * instances, read_back: 0 }
     }
 
     /// One draw of points or lines: a draw, no triangles.
-    pub const POINTS_OR_LINES: Self = Self { draws: 1, triangles: 0 };
+    pub const POINTS_OR_LINES: Self = Self { draws: 1, triangles: 0, read_back: 0 };
 
     /// Draws whose triangles were counted some other way: an indirect
     /// draw's arguments read back from the GPU, or a piece that adds up
     /// its own draws.
     pub const fn counted(draws: u32, triangles: u64) -> Self {
-        Self { draws, triangles }
+        Self { draws, triangles, read_back: 0 }
+    }
+
+    /// These draws and `triangles` more, known only from the GPU's count
+    /// read back late ([`Drawn::read_back`]).
+    pub const fn and_read_back(self, triangles: u64) -> Self {
+        Self { triangles: self.triangles + triangles, read_back: self.read_back + triangles, ..self }
+    }
+
+    /// The triangles known when the frame was recorded: the frame's own.
+    pub const fn recorded_triangles(&self) -> u64 {
+        self.triangles - self.read_back
     }
 }
 
 impl Add for Drawn {
     type Output = Self;
     fn add(self, other: Self) -> Self {
-        Self { draws: self.draws + other.draws, triangles: self.triangles + other.triangles }
+        Self {
+            draws: self.draws + other.draws,
+            triangles: self.triangles + other.triangles,
+            read_back: self.read_back + other.read_back,
+        }
     }
 }
 
@@ -141,10 +160,10 @@ mod tests {
 
     #[test]
     fn a_draw_counts_its_triangles_once_per_instance() {
-        assert_eq!(Drawn::triangle_list(0..3, 0..1), Drawn { draws: 1, triangles: 1 });
+        assert_eq!(Drawn::triangle_list(0..3, 0..1), Drawn { draws: 1, triangles: 1, read_back: 0 });
         // 12 indices from the 6th on, instances 10 to 14: 4 triangles, 5 times.
-        assert_eq!(Drawn::triangle_list(6..18, 10..15), Drawn { draws: 1, triangles: 20 });
-        assert_eq!(Drawn::triangle_list(0..36, 3..3), Drawn { draws: 1, triangles: 0 }, "no instances");
+        assert_eq!(Drawn::triangle_list(6..18, 10..15), Drawn { draws: 1, triangles: 20, read_back: 0 });
+        assert_eq!(Drawn::triangle_list(0..36, 3..3), Drawn { draws: 1, triangles: 0, read_back: 0 }, "no instances");
         assert_eq!(Drawn::triangle_list(0..3, 0..1), Drawn::FULL_SCREEN);
     }
 
@@ -159,11 +178,11 @@ mod tests {
         assert_eq!(
             passes,
             [
-                PassCount { pass: "scene", drawn: Drawn { draws: 2, triangles: 210 } },
-                PassCount { pass: "bloom", drawn: Drawn { draws: 2, triangles: 2 } },
+                PassCount { pass: "scene", drawn: Drawn { draws: 2, triangles: 210, read_back: 0 } },
+                PassCount { pass: "bloom", drawn: Drawn { draws: 2, triangles: 2, read_back: 0 } },
             ]
         );
-        assert_eq!(total(&passes), Drawn { draws: 4, triangles: 212 });
+        assert_eq!(total(&passes), Drawn { draws: 4, triangles: 212, read_back: 0 });
         assert!(counts.passes().is_empty(), "take forgets");
     }
 

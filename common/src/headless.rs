@@ -7,6 +7,7 @@ use web_time::Instant;
 use anyhow::{Context as _, bail};
 
 use crate::chapter::FlagValues;
+use crate::fingerprint::Fingerprint;
 use crate::memory::{Growth, MemoryUse};
 use crate::{Antialiasing, CameraPlace, Chapter, DrawCounts, Frame, Gpu, PassCount, PassTimer, Stats, Target};
 
@@ -330,6 +331,29 @@ pub fn bench<C: Chapter>(
         drawn,
         memory,
     })
+}
+
+/// The fingerprint of `view`'s frame ([`crate::fingerprint`]): a snapshot
+/// view drawn once by a fresh chapter at the snapshot size and time, as
+/// the snapshot test draws it, and its passes counted; a bench view's
+/// from its settings and samples alone.
+pub fn fingerprint<C: Chapter>(gpu: &Gpu, view: usize, flags: &FlagValues) -> anyhow::Result<Fingerprint> {
+    let shown = &C::VIEWS[view];
+    let samples = shown.samples(Antialiasing::default());
+    let settings = C::view_settings(view);
+    if !shown.snapshot {
+        return Ok(Fingerprint::new(settings, samples, &[]));
+    }
+    let (width, height) = crate::fingerprint::SIZE;
+    let target = Target { format: OFFSCREEN_FORMAT, width, height, samples };
+    let mut chapter = crate::chapter::create::<C>(gpu, target, flags)?;
+    crate::chapter::start(&mut chapter, view, None)?;
+    let offscreen = Offscreen::new(&gpu.device, target);
+    let timer = PassTimer::off();
+    let counted =
+        draw_frame(gpu, &mut chapter, &offscreen.view, (C::SNAPSHOT_TIME, view), Antialiasing::default(), &timer);
+    gpu.device.poll(wgpu::PollType::wait_indefinitely()).context("waiting for the frame")?;
+    Ok(Fingerprint::new(settings, samples, &counted))
 }
 
 // ANCHOR: edit_to_frame

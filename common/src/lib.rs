@@ -23,6 +23,7 @@ mod cli;
 pub mod draw_counts;
 pub mod editor;
 pub mod files;
+pub mod fingerprint;
 pub mod fullscreen;
 pub mod gpu;
 pub mod headless;

@@ -133,6 +133,9 @@ pub struct Record {
     /// Whether it finishes its frames with chapter 08's post chain.
     pub post_chain: bool,
     pub needs: GpuNeeds,
+    /// The settings each view applies, as the chapter writes them (part of
+    /// a frame's fingerprint, `common::fingerprint`).
+    pub view_settings: fn(usize) -> String,
     /// Runs it as its binary's `main` does (in a browser, from the page's URL).
     pub run: fn() -> ExitCode,
     /// Makes an instance for `target` on `gpu`.
@@ -153,6 +156,7 @@ fn record<C: Chapter>(part: &'static Part, figure: &'static str, techniques: &'s
         prepares_in_steps: C::PREPARES_IN_STEPS,
         post_chain: C::POST_ANTIALIASING,
         needs: C::gpu_needs(),
+        view_settings: C::view_settings,
         run: common::run::<C>,
         open: |gpu, target| {
             let chapter = common::chapter::create::<C>(gpu, target, &Default::default())?;

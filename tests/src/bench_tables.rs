@@ -1,10 +1,14 @@
 //! The book's bench tables (`book/src/bench/<chapter>.md`, written by
 //! `cargo xtask bench`) must describe the chapter as it is: every view in
-//! them, and no pass a view no longer draws, timed or counted.
+//! them, no pass a view no longer draws, timed or counted, and every row
+//! timed on the frame the view draws today: the fingerprint the table
+//! recorded for each view ([`common::fingerprint`]) must be the one the
+//! snapshot run works out again.
 
 use std::path::{Path, PathBuf};
 
 use common::View;
+use common::fingerprint::{FRAMES_HEADING, Fingerprint, recorded};
 
 /// Where `cargo xtask bench` writes a chapter's table.
 pub fn table_path(chapter: &str) -> PathBuf {
@@ -19,9 +23,10 @@ pub fn rows(table: &str) -> Vec<(String, Option<String>)> {
         .lines()
         .filter_map(|line| {
             let cells: Vec<&str> = line.split('|').map(str::trim).collect();
-            // | view | what | min | median | p95 |  → ["", view, what, …, ""]
+            // | view | what | min | median | p95 | frame |  → ["", view, what, …, ""]
+            // (a table measured before frames were fingerprinted has no `frame`)
             let (view, what) = (*cells.get(1)?, *cells.get(2)?);
-            if cells.len() != 7 || view == "view" || view.starts_with("---") {
+            if !(cells.len() == 7 || cells.len() == 8) || view == "view" || view.starts_with("---") {
                 return None;
             }
             let gpu = what.strip_prefix("GPU: ").and_then(|p| p.strip_suffix(" pass"));
@@ -34,6 +39,8 @@ pub fn rows(table: &str) -> Vec<(String, Option<String>)> {
 /// The rows of a bench table's triangles table (`| view | pass | draws |
 /// triangles |`, which `--bench` prints after its notes) as (view, pass).
 pub fn triangle_rows(table: &str) -> Vec<(String, String)> {
+    // The frames section's rows have as many cells: it comes after.
+    let table = &table[..table.find(FRAMES_HEADING).unwrap_or(table.len())];
     table
         .lines()
         .filter_map(|line| {
@@ -48,14 +55,55 @@ pub fn triangle_rows(table: &str) -> Vec<(String, String)> {
         .collect()
 }
 
-/// Compares `chapter`'s bench table with `drawn`: the passes each view
-/// drew when it was rendered. Returns the problems, each saying how to fix it.
-pub fn check(chapter: &str, views: &[View], drawn: &[(&str, Vec<&str>)]) -> Vec<String> {
+/// Compares `chapter`'s bench table with `drawn`, the passes each view
+/// drew when it was rendered, and with `frames`, every view's fingerprint
+/// as it is now. Returns the problems, each saying how to fix it.
+pub fn check(
+    chapter: &str,
+    views: &[View],
+    drawn: &[(&str, Vec<&str>)],
+    frames: &[(&str, Fingerprint)],
+) -> Vec<String> {
     let path = table_path(chapter);
     match std::fs::read_to_string(&path) {
-        Ok(table) => check_table(&path.display().to_string(), &table, chapter, views, drawn),
+        Ok(table) => {
+            let path = path.display().to_string();
+            let mut problems = check_table(&path, &table, chapter, views, drawn);
+            problems.extend(check_frames(&path, &table, chapter, frames));
+            problems
+        }
         Err(_) => vec![format!("{} is missing: run `cargo xtask bench {chapter}`", path.display())],
     }
+}
+
+/// Every view's rows must have timed the frame the view draws now: the
+/// fingerprint in the table's frames section is today's. A problem per
+/// view that is not, naming what changed and the command that measures
+/// it again.
+pub fn check_frames(path: &str, table: &str, chapter: &str, frames: &[(&str, Fingerprint)]) -> Vec<String> {
+    let again = format!("measure it again: `cargo xtask bench {chapter}`");
+    if !table.contains(FRAMES_HEADING) {
+        return vec![format!("{path}: measured before its frames were fingerprinted; {again}")];
+    }
+    let mut problems = Vec::new();
+    for (view, now) in frames {
+        let Some((id, samples, passes)) = recorded(table, view) else {
+            problems.push(format!("{path}: no fingerprint for the view `{view}`; {again}"));
+            continue;
+        };
+        if id != now.id() {
+            let mut changes = now.changes_since(&samples, &passes);
+            if changes.is_empty() {
+                changes.push("the view's settings".into());
+            }
+            problems.push(format!(
+                "{path}: the rows of `{view}` timed frame {id}, but the view now draws frame {} ({}); {again}",
+                now.id(),
+                changes.join("; ")
+            ));
+        }
+    }
+    problems
 }
 
 /// [`check`] for a table's text, named `path` in the messages.

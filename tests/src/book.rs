@@ -17,7 +17,10 @@
 //! - every "exercise N" names an exercise that exists: on its own page,
 //!   or on the page its link goes to;
 //! - every page is in the summary, and the summary's chapters come in the
-//!   order of `course::chapters()`.
+//!   order of `course::chapters()`;
+//! - no measured quantity is typed into prose ([`typed_measurements`]):
+//!   a figure comes from its table or code by `{{#figure …}}`, or is
+//!   marked as quoted from its source by `{{#cited …}}`.
 
 use std::collections::{BTreeMap, BTreeSet};
 use std::path::{Path, PathBuf};
@@ -142,6 +145,79 @@ pub fn prose_words(text: &str) -> usize {
         .into_iter()
         .map(|(_, line)| prose_of(line).split_whitespace().filter(|w| w.chars().any(char::is_alphanumeric)).count())
         .sum()
+}
+
+/// The units after which a number in prose is a measurement: a time, a
+/// size in memory, a rate, a share or a ratio.
+pub const MEASURED_UNITS: [&str; 14] =
+    ["ms", "µs", "ns", "s", "MB", "KB", "GB", "MiB", "KiB", "GiB", "FPS", "%", "×", "times"];
+
+/// `line` as prose, with inline code spans gone too.
+fn prose_without_code(line: &str) -> String {
+    let prose = prose_of(line);
+    let mut out = String::with_capacity(prose.len());
+    for (i, part) in prose.split('`').enumerate() {
+        // Even parts are outside code spans.
+        if i % 2 == 0 {
+            out.push_str(part);
+        } else {
+            out.push(' ');
+        }
+    }
+    out
+}
+
+/// Every measured quantity typed into the prose of `text`, as (line,
+/// the number and its unit): a number followed by one of
+/// [`MEASURED_UNITS`], outside code, tables, directives and HTML. A
+/// figure belongs in a `{{#figure …}}` that reads it from its table or its
+/// code, and a figure quoted from elsewhere (a paper, a seed's report) in
+/// a `{{#cited TEXT | SOURCE}}`. A size (`1280 × 720`, `3×3`) is not a
+/// ratio, and `s` and `times` count only after a space.
+pub fn typed_measurements(text: &str) -> Vec<(usize, String)> {
+    let mut found = Vec::new();
+    for (number, line) in outside_code(text) {
+        let prose: Vec<char> = prose_without_code(line).chars().collect();
+        let mut i = 0;
+        while i < prose.len() {
+            let starts_number = prose[i].is_ascii_digit()
+                && (i == 0 || !(prose[i - 1].is_alphanumeric() || matches!(prose[i - 1], '_' | '.' | ',' | '-' | '/')));
+            if !starts_number {
+                i += 1;
+                continue;
+            }
+            let mut end = i;
+            while end < prose.len()
+                && (prose[end].is_ascii_digit()
+                    || (matches!(prose[end], ',' | '.') && prose.get(end + 1).is_some_and(char::is_ascii_digit)))
+            {
+                end += 1;
+            }
+            let mut unit_at = end;
+            while unit_at < prose.len() && matches!(prose[unit_at], ' ' | '\u{a0}' | '\u{202f}' | '\u{2009}') {
+                unit_at += 1;
+            }
+            let spaced = unit_at > end;
+            let rest: String = prose[unit_at..].iter().collect();
+            let unit = MEASURED_UNITS.iter().find(|unit| {
+                let Some(after) = rest.strip_prefix(**unit) else { return false };
+                let bounded = !after.starts_with(|c: char| c.is_alphanumeric());
+                match **unit {
+                    "s" | "times" => spaced && bounded,
+                    // `1280 × 720`, `3×3`: a size, not a ratio.
+                    "×" => !after.trim_start().starts_with(|c: char| c.is_ascii_digit()),
+                    "%" => true,
+                    _ => bounded,
+                }
+            });
+            if let Some(unit) = unit {
+                let figure: String = prose[i..end].iter().collect();
+                found.push((number, format!("{figure}{}{unit}", if spaced { " " } else { "" })));
+            }
+            i = end.max(i + 1);
+        }
+    }
+    found
 }
 
 /// A `{{#run CHAPTER VIEW}}` or `{{#view CHAPTER VIEW}}` on a page.
@@ -478,6 +554,13 @@ pub fn check(src: &Path, chapters: &[Record], summary: &str) -> anyhow::Result<V
             }
         }
         problems.extend(link_problems(page, &by_file));
+        for (line, typed) in typed_measurements(&page.text) {
+            problems.push(format!(
+                "{}:{line}: `{typed}` is a measurement typed into the prose: write it with {{{{#figure …}}}} from \
+                 its table or code, or quote it with {{{{#cited {typed} | SOURCE}}}}",
+                page.file
+            ));
+        }
     }
 
     // Every lesson: its run line first, what to look for, and its ending.

@@ -16,6 +16,7 @@ pub mod snapshot;
 use std::path::{Path, PathBuf};
 use std::sync::{Arc, Mutex};
 
+use common::fingerprint::Fingerprint;
 use common::glam::Vec3;
 use common::headless::OFFSCREEN_FORMAT;
 use common::{Camera, Gpu, GpuNeeds, NoAdapter, PassCount, Target, View, ViewKind, anyhow, image, wgpu};
@@ -26,8 +27,10 @@ use snapshot::{Comparison, Rule, Tolerance};
 
 /// Snapshots are rendered at this size: large enough to judge, small enough
 /// for a software rasteriser to render and compare quickly.
-pub const WIDTH: u32 = 800;
-pub const HEIGHT: u32 = 450;
+/// (A frame's fingerprint is taken at this size too, so that this run can
+/// check the bench tables': `common::fingerprint::SIZE` is written once.)
+pub const WIDTH: u32 = common::fingerprint::SIZE.0;
+pub const HEIGHT: u32 = common::fingerprint::SIZE.1;
 
 /// Snapshots are rendered into this target, multisampled as a learner's
 /// window is by default.
@@ -187,6 +190,7 @@ impl Snapshots for Record {
         let mut samples = target().samples;
         let mut results = Vec::new();
         let mut passes = Vec::new();
+        let mut frames = bench_view_frames(self);
         let mut problems = Vec::new();
         let chosen = |name: &str| views.is_empty() || views.iter().any(|v| v == name);
         for (i, view) in self.views.iter().enumerate().filter(|(_, v)| v.snapshot && chosen(v.name)) {
@@ -200,6 +204,7 @@ impl Snapshots for Record {
                 |(image, drawn, counted)| {
                     problems.extend(counted_but_not_drawn(self, view, &drawn, &counted));
                     passes.push((view.name, drawn));
+                    frames.push((view.name, fingerprint(self, i, &counted)));
                     compare(self, i, &image, &rules)
                 },
             );
@@ -208,7 +213,7 @@ impl Snapshots for Record {
         if !views.is_empty() {
             return Ok((results, problems));
         }
-        problems.extend(bench_tables::check(self.name, self.views, &passes));
+        problems.extend(bench_tables::check(self.name, self.views, &passes, &frames));
         problems.extend(views_told_apart(self));
         Ok((results, problems))
     }
@@ -295,6 +300,7 @@ impl Snapshots for Record {
         let mut live = (self.open)(&gpu, target())?;
         let mut problems = Vec::new();
         let mut passes = Vec::new();
+        let mut frames = bench_view_frames(self);
         if let Some(start) = live.camera() {
             live.set_camera(elsewhere(&start));
         }
@@ -311,8 +317,9 @@ impl Snapshots for Record {
             if target_for(view).samples != target().samples {
                 let mut own = (self.open)(&gpu, target_for(view))?;
                 own.show(i);
-                let (picture, drawn) = own.render(&gpu, i, self.snapshot_time)?;
+                let (picture, drawn, counted) = own.render_counted(&gpu, i, self.snapshot_time)?;
                 passes.push((view.name, drawn));
+                frames.push((view.name, fingerprint(self, i, &counted)));
                 if let Err(e) = compare(self, i, &picture, &rules) {
                     problems.push(format!("{}/{}: {e}", self.name, view.name));
                 }
@@ -320,8 +327,9 @@ impl Snapshots for Record {
             }
             live.show(i);
             live.reset_camera(i);
-            let (after_the_others, drawn) = live.render(&gpu, i, self.snapshot_time)?;
+            let (after_the_others, drawn, counted) = live.render_counted(&gpu, i, self.snapshot_time)?;
             passes.push((view.name, drawn));
+            frames.push((view.name, fingerprint(self, i, &counted)));
             let reference = image::open(reference_path(self.name, view.name)).ok().map(|r| r.to_rgba8());
             let matches_reference = reference.as_ref().is_some_and(|r| {
                 r.dimensions() == after_the_others.dimensions() && snapshot::compare(r, &after_the_others).0.mean == 0.0
@@ -349,11 +357,30 @@ impl Snapshots for Record {
                 problems.push(format!("{}/{}: {e}", self.name, view.name));
             }
         }
-        problems.extend(bench_tables::check(self.name, self.views, &passes));
+        problems.extend(bench_tables::check(self.name, self.views, &passes, &frames));
         problems.extend(views_told_apart(self));
         Ok(problems)
     }
     // ANCHOR_END: purity
+}
+
+/// The fingerprint of `record`'s view `view`, from the frame the snapshot
+/// run drew of it (`counted`, its passes' counts), as the bench takes it
+/// (`common::headless::fingerprint`).
+fn fingerprint(record: &Record, view: usize, counted: &[PassCount]) -> Fingerprint {
+    Fingerprint::new((record.view_settings)(view), target_for(&record.views[view]).samples, counted)
+}
+
+/// The fingerprints of `record`'s bench views, which the snapshot run does
+/// not draw: their settings and samples.
+fn bench_view_frames(record: &Record) -> Vec<(&'static str, Fingerprint)> {
+    record
+        .views
+        .iter()
+        .enumerate()
+        .filter(|(_, view)| !view.snapshot)
+        .map(|(i, view)| (view.name, fingerprint(record, i, &[])))
+        .collect()
 }
 
 /// The passes a frame counted triangles for must be passes it drew, by

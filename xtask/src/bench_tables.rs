@@ -68,6 +68,8 @@ pub fn sizes_table(runs: &[SizeRun]) -> anyhow::Result<(String, String)> {
     }
     let mut heading: Vec<String> = SEED_SIZES.iter().map(|(w, h)| format!("{w} × {h}")).collect();
     heading.push(format!("triangles at {} × {}", TRIANGLES_AT.0, TRIANGLES_AT.1));
+    // The frame each row timed (its fingerprint, the same at every size).
+    heading.push("frame".to_string());
     let mut table = format!("| chapter | {} |\n|---|{}\n", heading.join(" | "), "---:|".repeat(heading.len()));
     let mut adapter = None;
     for chapter in chapters {
@@ -103,9 +105,21 @@ pub fn sizes_table(runs: &[SizeRun]) -> anyhow::Result<(String, String)> {
             }
         }
         cells.push(triangles.map_or_else(|| "—".to_string(), thousands));
+        let first_run = runs.iter().find(|r| r.chapter == chapter).context("no run")?;
+        cells.push(frame_id(&first_run.printed, view).unwrap_or_else(|| "—".to_string()));
         table.push_str(&format!("| {chapter} (`{view}`) | {} |\n", cells.join(" | ")));
     }
     Ok((adapter.context("no runs")?, table))
+}
+
+/// The fingerprint of the frame `view`'s rows timed, from the frames
+/// section the bench prints last; `None` for a run from before it did.
+fn frame_id(printed: &str, view: &str) -> Option<String> {
+    let section = &printed[printed.find(crate::figures::FRAMES_HEADING)?..];
+    section.lines().find_map(|line| {
+        let cells: Vec<&str> = line.split('|').map(str::trim).collect();
+        (cells.len() == 6 && cells[1] == view).then(|| cells[2].to_string())
+    })
 }
 
 /// The median of `view`'s `frame (CPU+GPU)` row, as printed.
@@ -114,7 +128,7 @@ fn frame_median<'a>(printed: &'a str, view: &str) -> anyhow::Result<&'a str> {
         .lines()
         .map(|line| line.split('|').map(str::trim).collect::<Vec<_>>())
         // | view | what | min ms | median ms | p95 ms |
-        .find(|cells| cells.len() == 7 && cells[1] == view && cells[2] == "frame (CPU+GPU)")
+        .find(|cells| (cells.len() == 7 || cells.len() == 8) && cells[1] == view && cells[2] == "frame (CPU+GPU)")
         .map(|cells| cells[4])
         .context("no `frame (CPU+GPU)` row for the view: did the run fail?")
 }
@@ -256,13 +270,26 @@ mod tests {
         let (adapter, table) = sizes_table(&runs).unwrap();
         assert_eq!(adapter, "Some GPU (Vulkan, DiscreteGpu)");
         let lines: Vec<&str> = table.lines().collect();
-        assert_eq!(lines[0], "| chapter | 1280 × 720 | 1920 × 1080 | 2560 × 1440 | triangles at 1920 × 1080 |");
-        assert_eq!(lines[1], "|---|---:|---:|---:|---:|");
+        assert_eq!(lines[0], "| chapter | 1280 × 720 | 1920 × 1080 | 2560 × 1440 | triangles at 1920 × 1080 | frame |");
+        assert_eq!(lines[1], "|---|---:|---:|---:|---:|---:|");
+        // Runs from before the bench fingerprinted frames: no frame.
         assert_eq!(
             lines[2],
-            "| triangle (`default`) | 0.50 ms, 2000.0 FPS | 1.00 ms, 1000.0 FPS | 2.00 ms, 500.0 FPS | — |"
+            "| triangle (`default`) | 0.50 ms, 2000.0 FPS | 1.00 ms, 1000.0 FPS | 2.00 ms, 500.0 FPS | — | — |"
         );
-        assert_eq!(lines[3], "| fog (`day`) | 8 ms, 125.0 FPS | 10 ms, 100.0 FPS | 40 ms, 25.0 FPS | — |");
+        assert_eq!(lines[3], "| fog (`day`) | 8 ms, 125.0 FPS | 10 ms, 100.0 FPS | 40 ms, 25.0 FPS | — | — |");
+        // A run that printed its frames gives its view's.
+        let framed = sample().replacen(
+            "=== fog day 1920x1080",
+            &format!(
+                "\n{}:\n\n| view | frame | samples | passes |\n|---|---|---:|---|\n| day | 0a1b2c3d | 4 | x |\n\
+                 === fog day 1920x1080",
+                crate::figures::FRAMES_HEADING
+            ),
+            1,
+        );
+        let (_, table) = sizes_table(&parse_size_runs(&framed, Path::new("sample.txt")).unwrap()).unwrap();
+        assert!(table.lines().nth(3).unwrap().ends_with("| — | 0a1b2c3d |"), "{table}");
         assert_eq!(lines.len(), 4);
     }
 
@@ -274,8 +301,8 @@ mod tests {
         let runs = parse_size_runs(&sample_with_triangles(true), Path::new("sample.txt")).unwrap();
         let (_, table) = sizes_table(&runs).unwrap();
         let lines: Vec<&str> = table.lines().collect();
-        assert!(lines[2].ends_with("| — |"), "the triangle chapter counted nothing: {}", lines[2]);
-        assert_eq!(lines[3], "| fog (`day`) | 8 ms, 125.0 FPS | 10 ms, 100.0 FPS | 40 ms, 25.0 FPS | 1,234,568 |");
+        assert!(lines[2].ends_with("| — | — |"), "the triangle chapter counted nothing: {}", lines[2]);
+        assert_eq!(lines[3], "| fog (`day`) | 8 ms, 125.0 FPS | 10 ms, 100.0 FPS | 40 ms, 25.0 FPS | 1,234,568 | — |");
         let broken = sample_with_triangles(true).replace("| 1,234,567 |", "| many |");
         let runs = parse_size_runs(&broken, Path::new("sample.txt")).unwrap();
         let error = format!("{:#}", sizes_table(&runs).err().unwrap());

@@ -17,6 +17,15 @@
 //!   decimal), `,.0` (whole, with thousands separators).
 //! - `{{#check EXPRESSION OP EXPRESSION}}`, OP one of `<`, `<=`, `>`, `>=`:
 //!   nothing, or a failure.
+//! - `{{#measured FILE}}`: a bench table measured on another machine
+//!   (`bench/gpu/…`), and under it what changed in the chapter's frames
+//!   since, if anything (its frames against the chapter's own table's).
+//! - `{{#cited TEXT | SOURCE}}`: TEXT, a figure quoted from SOURCE (a
+//!   paper, a seed's report), which the book's lint of typed measurements
+//!   (`snapshots::book`) lets pass.
+//! - `{{#run CHAPTER VIEW}}`: the command that runs the chapter on the
+//!   view, and the chapter live in the page on it; `{{#view CHAPTER VIEW}}`:
+//!   the view's name (`snapshots::book` checks that both name a view).
 //! - An expression is numbers, sources, `+ - * /`, parentheses, and
 //!   `min(…, …)` and `max(…, …)` (for "least in", "most in").
 //! - A source is `[FILE | …]`, FILE relative to the page (as for
@@ -49,6 +58,8 @@ const FIGURE: &str = "{{#figure ";
 const CHECK: &str = "{{#check ";
 const RUN: &str = "{{#run ";
 const VIEW: &str = "{{#view ";
+const CITED: &str = "{{#cited ";
+const MEASURED: &str = "{{#measured ";
 
 /// Expands pages, reading their sources from files (each once).
 pub struct Figures {
@@ -95,6 +106,17 @@ impl Figures {
     /// What one `{{#figure …}}` or `{{#check …}}` writes into the page.
     fn directive(&self, page: &str, folder: &Path, directive: &str) -> anyhow::Result<String> {
         let body = &directive[..directive.len() - 2];
+        if let Some(file) = body.strip_prefix(MEASURED) {
+            return self.measured_elsewhere(folder, file.trim());
+        }
+        // A figure quoted from elsewhere: its text, as quoted. (The source
+        // is for whoever checks the quotation; the prose names it too.)
+        if let Some(spec) = body.strip_prefix(CITED) {
+            let (text, source) =
+                spec.split_once('|').context("a quotation needs its source: `{{#cited TEXT | SOURCE}}`")?;
+            ensure!(!text.trim().is_empty() && !source.trim().is_empty(), "a quotation needs its text and its source");
+            return Ok(text.trim().to_string());
+        }
         for (prefix, run) in [(RUN, true), (VIEW, false)] {
             if let Some(spec) = body.strip_prefix(prefix) {
                 let words: Vec<&str> = spec.split_whitespace().collect();
@@ -104,10 +126,16 @@ impl Figures {
         }
         if let Some(spec) = body.strip_prefix(FIGURE) {
             let (expression, format) = split_format(spec)?;
-            let expression = self.parse(folder, expression)?;
+            let (expression, frames) = self.parse_with_frames(folder, expression)?;
+            same_frames(&frames)?;
             let lone = matches!(expression, Expression::Source { .. });
             ensure!(lone || !expression.has_words(), "words (from an `@`) cannot be computed with");
             ensure!(format.is_none() || !expression.has_words(), "words (from an `@`) have no format");
+            ensure!(
+                expression.has_words() || expression.value().is_finite(),
+                "is not a finite number: {}",
+                expression.describe()
+            );
             match (format, &expression) {
                 (None, Expression::Source { text, .. }) => Ok(text.clone()),
                 (None, _) => bail!("a computed figure needs a format (`:.1`, `:,.0`)"),
@@ -116,9 +144,18 @@ impl Figures {
         } else {
             let spec = &body[CHECK.len()..];
             let (left, op, right) = split_comparison(spec)?;
-            let (left, right) = (self.parse(folder, left)?, self.parse(folder, right)?);
+            let ((left, mut frames), (right, more)) =
+                (self.parse_with_frames(folder, left)?, self.parse_with_frames(folder, right)?);
+            frames.extend(more);
+            same_frames(&frames)?;
             ensure!(!left.has_words() && !right.has_words(), "words (from an `@`) cannot be compared");
             let (a, b) = (left.value(), right.value());
+            ensure!(
+                a.is_finite() && b.is_finite(),
+                "compares what is not a number: {} and {}",
+                left.describe(),
+                right.describe()
+            );
             let holds = match op {
                 "<" => a < b,
                 "<=" => a <= b,
@@ -130,13 +167,64 @@ impl Figures {
         }
     }
 
-    fn parse(&self, folder: &Path, text: &str) -> anyhow::Result<Expression> {
-        let mut parser = Parser { text, at: 0, figures: self, folder };
+    /// An expression, and the frames of the bench rows it reads.
+    fn parse_with_frames(&self, folder: &Path, text: &str) -> anyhow::Result<(Expression, Vec<FrameTag>)> {
+        let mut parser = Parser { text, at: 0, figures: self, folder, frames: Vec::new() };
         let expression = parser.sum()?;
         parser.skip_spaces();
         ensure!(parser.at == text.len(), "unexpected `{}` in `{text}`", &text[parser.at..]);
         ensure!(!expression.many_outside_extremes(), "a `*` row names many rows: use it inside `min(…)` or `max(…)`");
-        Ok(expression)
+        Ok((expression, parser.frames))
+    }
+
+    /// `{{#measured FILE}}`: a bench table measured where the tests cannot
+    /// measure again (`bench/gpu/…`, a lent GPU), and under it, when its
+    /// frames are not the ones the chapter draws now (which the chapter's
+    /// own table, `bench/…`, holds: the snapshot test keeps it current),
+    /// a note of what changed since, view by view.
+    fn measured_elsewhere(&self, folder: &Path, file: &str) -> anyhow::Result<String> {
+        let current_file = file.replace("/gpu/", "/");
+        ensure!(current_file != file, "`{{{{#measured}}}}` is for a table measured elsewhere (`…/bench/gpu/…`)");
+        let read = |name: &str| -> anyhow::Result<String> {
+            let path = folder.join(name);
+            let mut files = self.files.borrow_mut();
+            if !files.contains_key(&path) {
+                let text = std::fs::read_to_string(&path).with_context(|| format!("cannot read {name}"))?;
+                files.insert(path.clone(), text);
+            }
+            Ok(files[&path].clone())
+        };
+        let (table, current) = (read(file)?, read(&current_file)?);
+        Ok(format!("{table}\n{}", older_frames_note(&table, &current)))
+    }
+
+    /// The frame a table row was timed on, where the source `[FILE | ROW…
+    /// | COLUMN]` reads a bench table's row: the table (`bench/gpu/x.md`
+    /// is `bench/x.md` measured elsewhere), the row's first key, and its
+    /// `frame` cell (`None` for a table from before frames were
+    /// fingerprinted).
+    fn frame_tag(&self, folder: &Path, spec: &str) -> Option<FrameTag> {
+        let parts = split_parts(spec);
+        let (file, below) = match parts[0].split_once(" > ") {
+            Some((file, below)) => (file.trim(), Some(below.trim())),
+            None => (parts[0].as_str(), None),
+        };
+        let keys: Vec<&str> = parts[1..].iter().map(String::as_str).collect();
+        if !file.contains("bench/") || keys.len() < 2 || keys.contains(&"*") || keys.iter().any(|k| k.contains('#')) {
+            return None;
+        }
+        let files = self.files.borrow();
+        let mut text = files.get(&folder.join(file))?.as_str();
+        if let Some(below) = below {
+            text = first_table(&text[text.find(below)?..]);
+        }
+        let mut frame_keys: Vec<&str> = keys[..keys.len() - 1].to_vec();
+        frame_keys.extend(["frame", "@$"]);
+        let id = table_cells(text, &frame_keys)
+            .ok()
+            .and_then(|cells| cells.first().map(|c| c.to_string()))
+            .filter(|id| id.chars().all(|c| c.is_ascii_hexdigit()));
+        Some(FrameTag { table: file.replace("/gpu/", "/"), file: file.to_string(), row: keys[0].to_string(), id })
     }
 
     /// The numbers a source `[FILE | …]` names (`None` for words at `@`),
@@ -158,7 +246,8 @@ impl Figures {
         let mut text = files[&path].as_str();
         if let Some(below) = below {
             let at = text.find(below).with_context(|| format!("{file} has no line holding `{below}`"))?;
-            text = &text[at..];
+            // The table below that line, and no later one.
+            text = first_table(&text[at..]);
         }
         let code = file.ends_with(".rs") || file.ends_with(".wgsl");
         let found = match keys[..] {
@@ -187,9 +276,120 @@ impl Figures {
     }
 }
 
+/// The heading of a bench table's frames section, as `common::fingerprint`
+/// writes it (xtask does not link `common`; its test below reads one).
+pub const FRAMES_HEADING: &str = "Frames timed, each as its fingerprint describes it";
+
+/// The rows of a bench table's frames section: view, frame, samples, passes.
+fn frames_of(table: &str) -> Option<Vec<[String; 4]>> {
+    let section = &table[table.find(FRAMES_HEADING)?..];
+    Some(
+        section
+            .lines()
+            .filter_map(|line| {
+                let cells: Vec<&str> = line.split('|').map(str::trim).collect();
+                let row = cells.len() == 6 && cells[1] != "view" && !cells[1].starts_with("---");
+                row.then(|| [cells[1], cells[2], cells[3], cells[4]].map(str::to_string))
+            })
+            .collect(),
+    )
+}
+
+/// What a reader of `table` (measured elsewhere) must know of its frames
+/// against `current`'s (the chapter's frames today): nothing when they
+/// are the same; else a note, view by view.
+fn older_frames_note(table: &str, current: &str) -> String {
+    let Some(then) = frames_of(table) else {
+        return "\n> **Timed on older frames.** These rows were measured before the bench recorded which frame \
+                each one timed: the chapter may have changed since in what they cannot show (its samples a pixel, \
+                its passes, its draws). The chapter's own table, measured on lavapipe, is current; the two are not \
+                compared figure by figure.\n"
+            .to_string();
+    };
+    let now = frames_of(current).unwrap_or_default();
+    let mut changed = Vec::new();
+    for [view, id, samples, passes] in &then {
+        match now.iter().find(|row| &row[0] == view) {
+            None => changed.push(format!("`{view}`: no longer a view of the chapter")),
+            Some([_, now_id, now_samples, now_passes]) if now_id != id => {
+                let mut what = Vec::new();
+                if now_samples != samples {
+                    what.push(format!("{samples} samples a pixel then, {now_samples} now"));
+                }
+                if now_passes != passes {
+                    what.push(format!("it drew {passes} then; {now_passes} now"));
+                }
+                if what.is_empty() {
+                    what.push("its settings changed".to_string());
+                }
+                changed.push(format!("`{view}`: {}", what.join("; ")))
+            }
+            Some(_) => {}
+        }
+    }
+    for [view, ..] in &now {
+        if !then.iter().any(|row| &row[0] == view) {
+            changed.push(format!("`{view}`: not measured here (a view added since)"));
+        }
+    }
+    if changed.is_empty() {
+        return String::new();
+    }
+    format!(
+        "\n> **Timed on older frames.** Some rows here timed a frame the chapter no longer draws:\n>\n{}\n",
+        changed.iter().map(|c| format!("> - {c}")).collect::<Vec<_>>().join("\n")
+    )
+}
+
+/// `text` up to the end of its first table (all of it if it has none).
+fn first_table(text: &str) -> &str {
+    let mut offset = 0;
+    let mut in_table = false;
+    for line in text.split_inclusive('\n') {
+        let row = line.trim_start().starts_with('|');
+        if in_table && !row {
+            return &text[..offset];
+        }
+        in_table |= row;
+        offset += line.len();
+    }
+    text
+}
+
+/// The frame a bench row was timed on ([`Figures::frame_tag`]).
+#[derive(Clone, Debug)]
+struct FrameTag {
+    /// The table, wherever it was measured (`bench/x.md` for `bench/gpu/x.md`).
+    table: String,
+    file: String,
+    row: String,
+    id: Option<String>,
+}
+
+/// A figure or check may combine the same view's rows from two tables
+/// (a GPU's and lavapipe's) only if both timed the same frame: a ratio of
+/// a one-sample frame to a four-sample one says nothing.
+fn same_frames(frames: &[FrameTag]) -> anyhow::Result<()> {
+    for (i, a) in frames.iter().enumerate() {
+        for b in &frames[i + 1..] {
+            if a.table == b.table && a.file != b.file && a.row == b.row && (a.id.is_none() || a.id != b.id) {
+                let frame = |t: &FrameTag| t.id.clone().map_or("no recorded frame".into(), |id| format!("frame {id}"));
+                bail!(
+                    "combines `{}` timed on {} with `{}` timed on {}: measure again, or compare rows of one frame",
+                    format!("{} | {}", a.file, a.row),
+                    frame(a),
+                    format!("{} | {}", b.file, b.row),
+                    frame(b)
+                );
+            }
+        }
+    }
+    Ok(())
+}
+
 /// The byte offset of the next directive this preprocessor writes.
 fn next_directive(text: &str) -> Option<usize> {
-    [FIGURE, CHECK, RUN, VIEW].iter().filter_map(|d| text.find(d)).min()
+    [FIGURE, CHECK, RUN, VIEW, CITED, MEASURED].iter().filter_map(|d| text.find(d)).min()
 }
 
 /// The way from `page` (`book/src/05-instancing/gpu.md`, or a name
@@ -359,7 +559,15 @@ impl Expression {
                     Self::Many { values, .. } => values.iter().map(|(v, _)| *v).collect(),
                     _ => vec![e.value()],
                 });
-                if *least { values.fold(f64::INFINITY, f64::min) } else { values.fold(f64::NEG_INFINITY, f64::max) }
+                // `f64::min` drops a NaN: a figure that failed to read must not vanish.
+                let values: Vec<f64> = values.collect();
+                if values.iter().any(|v| v.is_nan()) {
+                    f64::NAN
+                } else if *least {
+                    values.into_iter().fold(f64::INFINITY, f64::min)
+                } else {
+                    values.into_iter().fold(f64::NEG_INFINITY, f64::max)
+                }
             }
         }
     }
@@ -415,6 +623,8 @@ struct Parser<'a> {
     at: usize,
     figures: &'a Figures,
     folder: &'a Path,
+    /// The frames of the bench rows read so far.
+    frames: Vec<FrameTag>,
 }
 
 impl Parser<'_> {
@@ -465,6 +675,7 @@ impl Parser<'_> {
                 let spec = rest[1..end].trim().to_string();
                 self.at += end + 1;
                 let mut found = self.figures.source(self.folder, &spec)?;
+                self.frames.extend(self.figures.frame_tag(self.folder, &spec));
                 if found.len() == 1 {
                     let (value, text) = found.remove(0);
                     return Ok(Expression::Source { spec, value, text });
@@ -868,6 +1079,83 @@ mod tests {
         // Every problem on a page is reported, not only the first.
         let two = "{{#figure [bench/a.md | x | y]}} and {{#figure [bench/b.md | x | y]}}";
         assert_eq!(expand("problems", two).unwrap_err().len(), 2);
+    }
+
+    /// A chapter's table on lavapipe and the same measured on a GPU, each
+    /// with its frames; `gpu_frame` is the GPU run's frame of `default`.
+    fn two_tables(test: &str, gpu_frame: &str) -> PathBuf {
+        let folder = std::env::temp_dir().join(format!("xtask-frames-{test}-{}", std::process::id()));
+        std::fs::create_dir_all(folder.join("bench/gpu")).unwrap();
+        let table = |frame: &str, median: &str| {
+            format!(
+                "| view | what | min ms | median ms | p95 ms | frame |\n|---|---|---:|---:|---:|---|\n\
+                 | default | frame (CPU+GPU) | 1 | {median} | 3 | {frame} |\n\
+                 | dense | frame (CPU+GPU) | 1 | 2 | 3 | 0000dddd |\n\n\
+                 {FRAMES_HEADING} (drawn at 800 × 450):\n\n| view | frame | samples | passes |\n|---|---|---:|---|\n\
+                 | default | {frame} | {} | terrain: 1 draw, 10 triangles |\n| dense | 0000dddd | 4 | terrain: 1 draw, 5 triangles |\n",
+                if frame == "aaaa0000" { 4 } else { 1 }
+            )
+        };
+        std::fs::write(folder.join("bench/fog.md"), table("aaaa0000", "100")).unwrap();
+        std::fs::write(folder.join("bench/gpu/fog.md"), table(gpu_frame, "1")).unwrap();
+        std::fs::write(
+            folder.join("bench/gpu/old.md"),
+            "| view | what | median ms |\n|---|---|---:|\n| default | frame | 1 |\n",
+        )
+        .unwrap();
+        std::fs::write(folder.join("bench/old.md"), table("aaaa0000", "100")).unwrap();
+        folder
+    }
+
+    #[test]
+    fn rows_of_one_view_timed_on_different_frames_are_not_combined() {
+        let ratio =
+            "{{#figure [bench/fog.md | default | frame | median] / [bench/gpu/fog.md | default | frame | median] :.0}}";
+        // Same frame: a like-for-like ratio.
+        assert_eq!(Figures::new().expand("page.md", &two_tables("same", "aaaa0000"), ratio).unwrap(), "100");
+        // The GPU timed an older frame (one sample a pixel): refused, naming both.
+        let problems = Figures::new().expand("page.md", &two_tables("other", "bbbb1111"), ratio).unwrap_err();
+        assert!(
+            problems[0].contains("timed on frame aaaa0000") && problems[0].contains("frame bbbb1111"),
+            "{problems:?}"
+        );
+        // A table from before fingerprints, in a check too.
+        let check =
+            "{{#check [bench/old.md | default | frame | median] > [bench/gpu/old.md | default | frame | median]}}";
+        let problems = Figures::new().expand("page.md", &two_tables("old", "aaaa0000"), check).unwrap_err();
+        assert!(problems[0].contains("no recorded frame"), "{problems:?}");
+        // Two views of one table are two frames by design: allowed.
+        let views =
+            "{{#figure [bench/fog.md | default | frame | median] / [bench/fog.md | dense | frame | median] :.0}}";
+        assert_eq!(Figures::new().expand("page.md", &two_tables("views", "aaaa0000"), views).unwrap(), "50");
+    }
+
+    #[test]
+    fn a_table_measured_elsewhere_is_marked_with_what_changed_since() {
+        let page = "{{#measured bench/gpu/fog.md}}";
+        let same = Figures::new().expand("page.md", &two_tables("mark-same", "aaaa0000"), page).unwrap();
+        assert!(!same.contains("older frames"), "{same}");
+        let older = Figures::new().expand("page.md", &two_tables("mark-older", "bbbb1111"), page).unwrap();
+        assert!(older.contains("`default`: 1 samples a pixel then, 4 now"), "{older}");
+        assert!(!older.contains("`dense`"), "{older}");
+        let unknown =
+            Figures::new().expand("page.md", &two_tables("mark-old", "aaaa0000"), "{{#measured bench/gpu/old.md}}");
+        assert!(unknown.unwrap().contains("before the bench recorded which frame"));
+    }
+
+    #[test]
+    fn a_missing_figure_in_min_or_max_fails_and_a_table_after_a_line_is_only_that_table() {
+        let folder = sources("nan");
+        // `f64::min` drops a NaN (a median of 0 divided by another): it
+        // printed 3 here.
+        assert_eq!(Figures::new().expand("page.md", &folder, "{{#figure min(2, 3) :.0}}").unwrap(), "2");
+        let problems = Figures::new().expand("page.md", &folder, "{{#figure min(0 / 0, 3) :.0}}").unwrap_err();
+        assert!(problems[0].contains("is not a finite number"), "{problems:?}");
+        let problems = Figures::new().expand("page.md", &folder, "{{#check max(0 / 0, 3) > 1}}").unwrap_err();
+        assert!(problems[0].contains("not a number"), "{problems:?}");
+        let second = "{{#figure [bench/fog.md > The second | default | frame | median]}}";
+        let problems = Figures::new().expand("page.md", &folder, second).unwrap_err();
+        assert!(problems[0].contains("no row `default | frame`"), "{problems:?}");
     }
 
     #[test]

@@ -66,3 +66,18 @@ fn links_resolve_against_the_page_folder() {
     assert_eq!(page_target("a.md", "https://wgpu.rs"), None);
     assert_eq!(page_target("a.md", "../../x.md"), None);
 }
+
+/// Page 05's old sentences, as the fact-check found them: every typed
+/// measurement is named; sizes, figures and quotations are not.
+#[test]
+fn typed_measurements_are_found_and_figures_are_not() {
+    let old_page_05 = "costs three times as much at 10,000 rocks: 58 ms against 19 ms, and \
+                       19, 144 and 1287 ms for 10k, 100k and 1M rocks; a flat floor of 1216 ms; \
+                       32.68 ms at 1920 × 1080, about 1 ms for 790 calls, 29% and 2.5×, 4 s in all.";
+    let found: Vec<String> = typed_measurements(old_page_05).into_iter().map(|(_, t)| t).collect();
+    assert_eq!(found, ["58 ms", "19 ms", "1287 ms", "1216 ms", "32.68 ms", "1 ms", "29%", "2.5×", "4 s"]);
+    let clean = "a 3×3 filter at 1280 × 720, {{#figure [x | y]}} ms, `16 ms` in code, \
+                 {{#cited 66 FPS | seed 001}}, chapter 05's 4 samples, 2 m away, the 1960s, x2 times.\n\
+                 | 12 ms | in a table |\n```\n9 ms in code\n```\n";
+    assert_eq!(typed_measurements(clean), Vec::<(usize, String)>::new());
+}
