@@ -18,6 +18,9 @@
 //!   or on the page its link goes to;
 //! - every page is in the summary, and the summary's chapters come in the
 //!   order of `course::chapters()`;
+//! - what prose names in code font is there: a file, type, function or
+//!   constant of the workspace ([`CodeIndex`]), and a view of the page's
+//!   chapter is named by `{{#view …}}`;
 //! - no measured quantity is typed into prose ([`typed_measurements`]):
 //!   a figure comes from its table or code by `{{#figure …}}`, or is
 //!   marked as quoted from its source by `{{#cited …}}`.
@@ -218,6 +221,94 @@ pub fn typed_measurements(text: &str) -> Vec<(usize, String)> {
         }
     }
     found
+}
+
+/// What prose may name in code font and have resolved: every identifier
+/// in the workspace's Rust and WGSL, and every file in the repository.
+pub struct CodeIndex {
+    identifiers: BTreeSet<String>,
+    files: Vec<String>,
+}
+
+impl CodeIndex {
+    /// Reads the repository at `root` (its sources, shaders, assets and
+    /// book; never `target/`).
+    pub fn build(root: &Path) -> anyhow::Result<Self> {
+        fn walk(root: &Path, dir: &Path, index: &mut CodeIndex) -> anyhow::Result<()> {
+            for entry in std::fs::read_dir(dir)? {
+                let path = entry?.path();
+                let name = path.file_name().map(|n| n.to_string_lossy().to_string()).unwrap_or_default();
+                if path.is_dir() {
+                    let skipped = [".git", "target", ".gl", ".gpubench"].contains(&name.as_str());
+                    if !(skipped || (name == "book" && dir.ends_with("book"))) {
+                        walk(root, &path, index)?;
+                    }
+                    continue;
+                }
+                let relative = path.strip_prefix(root)?.to_string_lossy().replace('\\', "/");
+                if name.ends_with(".rs") || name.ends_with(".wgsl") || name == "Cargo.toml" {
+                    let text = std::fs::read_to_string(&path)?;
+                    for word in text.split(|c: char| !(c.is_ascii_alphanumeric() || c == '_')) {
+                        if word.starts_with(|c: char| c.is_ascii_alphabetic() || c == '_') {
+                            index.identifiers.insert(word.to_string());
+                        }
+                    }
+                }
+                index.files.push(relative);
+            }
+            Ok(())
+        }
+        let mut index = Self { identifiers: BTreeSet::new(), files: Vec::new() };
+        walk(root, root, &mut index)?;
+        Ok(index)
+    }
+
+    /// Whether `name`, written in code font in prose, is something in the
+    /// workspace: a file (a path the repository's files end with), or an
+    /// identifier (the last of a `::` path, `()` after a function
+    /// allowed). `None` when it does not look like a name of code at all
+    /// (a word, an expression, a flag, a number).
+    pub fn resolves(&self, name: &str) -> Option<bool> {
+        let name = name.trim();
+        let looks_like_file = name.rsplit_once('.').is_some_and(|(stem, ext)| {
+            !stem.is_empty()
+                && ["rs", "wgsl", "toml", "png", "obj", "mtl", "svg", "glb", "gltf", "sh", "md"].contains(&ext)
+                && !name.contains(' ')
+        });
+        if looks_like_file {
+            let path = name.trim_start_matches("./");
+            return Some(self.files.iter().any(|f| f == path || f.ends_with(&format!("/{path}"))));
+        }
+        let path = name.strip_suffix("()").unwrap_or(name);
+        let segments: Vec<&str> = path.split("::").collect();
+        let identifier = |s: &str| {
+            s.starts_with(|c: char| c.is_ascii_alphabetic() || c == '_')
+                && s.chars().all(|c| c.is_ascii_alphanumeric() || c == '_')
+        };
+        if !segments.iter().all(|s| identifier(s)) {
+            return None;
+        }
+        let last = segments.last().copied().unwrap_or_default();
+        let camel =
+            last.chars().skip(1).any(|c| c.is_ascii_uppercase()) && last.chars().any(|c| c.is_ascii_lowercase());
+        let looks_like_code = segments.len() > 1 || last.contains('_') || camel;
+        looks_like_code.then(|| self.identifiers.contains(last))
+    }
+}
+
+/// The code spans in the prose of `text` (outside fenced code, tables and
+/// directives), as (line, content).
+pub fn code_spans(text: &str) -> Vec<(usize, String)> {
+    let mut spans = Vec::new();
+    for (number, line) in outside_code(text) {
+        let prose = prose_of(line);
+        for (i, part) in prose.split('`').enumerate() {
+            if i % 2 == 1 && !part.is_empty() {
+                spans.push((number, part.to_string()));
+            }
+        }
+    }
+    spans
 }
 
 /// A `{{#run CHAPTER VIEW}}` or `{{#view CHAPTER VIEW}}` on a page.
@@ -488,6 +579,7 @@ pub fn exercises_named(line: &str) -> Vec<u32> {
 /// Every problem with the book's shape, each naming its page.
 pub fn check(src: &Path, chapters: &[Record], summary: &str) -> anyhow::Result<Vec<String>> {
     let pages = read_pages(src)?;
+    let index = CodeIndex::build(&src.join("../.."))?;
     let by_file: BTreeMap<&str, &Page> = pages.iter().map(|p| (p.file.as_str(), p)).collect();
     let mut problems = Vec::new();
 
@@ -554,6 +646,25 @@ pub fn check(src: &Path, chapters: &[Record], summary: &str) -> anyhow::Result<V
             }
         }
         problems.extend(link_problems(page, &by_file));
+        // Code named in prose must exist: a rename fails the build.
+        let own_views = chapters
+            .iter()
+            .find(|r| page.file.starts_with(&format!("{}/", course::section(r))))
+            .map_or(&[][..], |r| r.views);
+        for (line, name) in code_spans(&page.text) {
+            if own_views.iter().any(|v| v.name == name) {
+                problems.push(format!(
+                    "{}:{line}: `{name}` names a view: write it as {{{{#view CHAPTER {name}}}}}, which the build checks",
+                    page.file
+                ));
+            } else if index.resolves(&name) == Some(false) {
+                problems.push(format!(
+                    "{}:{line}: `{name}` names no file, type, function or constant in the workspace (a name \
+                     from outside it, an API's, is written {{{{#external {name} | WHERE IT IS FROM}}}})",
+                    page.file
+                ));
+            }
+        }
         for (line, typed) in typed_measurements(&page.text) {
             problems.push(format!(
                 "{}:{line}: `{typed}` is a measurement typed into the prose: write it with {{{{#figure …}}}} from \

@@ -20,6 +20,9 @@
 //! - `{{#measured FILE}}`: a bench table measured on another machine
 //!   (`bench/gpu/…`), and under it what changed in the chapter's frames
 //!   since, if anything (its frames against the chapter's own table's).
+//! - `{{#external NAME | WHERE}}`: NAME in code font, a name from outside
+//!   the workspace (WebGPU's, Vulkan's); the book's check resolves any
+//!   other name in code font against the workspace's sources.
 //! - `{{#cited TEXT | SOURCE}}`: TEXT, a figure quoted from SOURCE (a
 //!   paper, a seed's report), which the book's lint of typed measurements
 //!   (`snapshots::book`) lets pass.
@@ -60,6 +63,7 @@ const RUN: &str = "{{#run ";
 const VIEW: &str = "{{#view ";
 const CITED: &str = "{{#cited ";
 const MEASURED: &str = "{{#measured ";
+const EXTERNAL: &str = "{{#external ";
 
 /// Expands pages, reading their sources from files (each once).
 pub struct Figures {
@@ -108,6 +112,18 @@ impl Figures {
         let body = &directive[..directive.len() - 2];
         if let Some(file) = body.strip_prefix(MEASURED) {
             return self.measured_elsewhere(folder, file.trim());
+        }
+        // A name from outside the workspace (an API's), in code font: the
+        // book's check resolves every other name in code font against the
+        // workspace.
+        if let Some(spec) = body.strip_prefix(EXTERNAL) {
+            let (name, from) =
+                spec.split_once('|').context("an outside name says where it is from: `{{#external NAME | WHERE}}`")?;
+            ensure!(
+                !name.trim().is_empty() && !from.trim().is_empty(),
+                "an outside name needs its name and where it is from"
+            );
+            return Ok(format!("`{}`", name.trim()));
         }
         // A figure quoted from elsewhere: its text, as quoted. (The source
         // is for whoever checks the quotation; the prose names it too.)
@@ -389,7 +405,7 @@ fn same_frames(frames: &[FrameTag]) -> anyhow::Result<()> {
 
 /// The byte offset of the next directive this preprocessor writes.
 fn next_directive(text: &str) -> Option<usize> {
-    [FIGURE, CHECK, RUN, VIEW, CITED, MEASURED].iter().filter_map(|d| text.find(d)).min()
+    [FIGURE, CHECK, RUN, VIEW, CITED, MEASURED, EXTERNAL].iter().filter_map(|d| text.find(d)).min()
 }
 
 /// The way from `page` (`book/src/05-instancing/gpu.md`, or a name

@@ -81,3 +81,25 @@ fn typed_measurements_are_found_and_figures_are_not() {
                  | 12 ms | in a table |\n```\n9 ms in code\n```\n";
     assert_eq!(typed_measurements(clean), Vec::<(usize, String)>::new());
 }
+
+/// Names in code font resolve against the workspace, as the book's check
+/// reads them; a misspelt one does not, and a plain word is not a name.
+#[test]
+fn code_named_in_prose_resolves_against_the_workspace() {
+    let index = CodeIndex::build(&book_src().join("../..")).unwrap();
+    for name in ["FogSettings", "terrain::TerrainRenderer", "opaque_distance()", "MAX_FAR", "fog.wgsl", "fog/fog.wgsl"]
+    {
+        assert_eq!(index.resolves(name), Some(true), "{name}");
+    }
+    // Spelt in pieces: this file is in the index, and a whole misspelt
+    // word here would be found in it.
+    for pieces in [["Fog", "Setings"], ["opaque_", "distanse()"], ["MAX_", "FARR"], ["fogg", ".wgsl"]] {
+        let name = pieces.concat();
+        assert_eq!(index.resolves(&name), Some(false), "{name}");
+    }
+    for name in ["--view", "density", "a + b", "1280x720", "vec4<f32>"] {
+        assert_eq!(index.resolves(name), None, "{name}");
+    }
+    let spans = code_spans("the `dense` view, {{#view fog dense}}, and `x`\n```\n`not prose`\n```\n");
+    assert_eq!(spans, [(1, "dense".to_string()), (1, "x".to_string())]);
+}
