@@ -2,6 +2,8 @@
 //! window, render it headless to a PNG, benchmark it and snapshot-test it.
 
 use crate::multisampling::{Antialiasing, SceneTargets};
+// Where chapters have long found it: it is multisampling's, whose samples it carries.
+pub use crate::multisampling::Target;
 use crate::{Camera, CameraPlace, DrawCounts, Gpu, GpuNeeds, Input, PassTimer, Preparation};
 
 // For existing imports (`use common::chapter::{uniform_entry, …}`): the
@@ -197,26 +199,6 @@ impl Tolerance {
     pub const PATCH: u32 = 16;
     /// Allows rasteriser and driver differences, not missing geometry.
     pub const DEFAULT: Self = Self { mean: 0.01, outliers: 0.001, patch: 0.2 };
-}
-
-/// The colour target a chapter draws into: the window's surface or an
-/// offscreen texture. Pipelines are built for `format`.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub struct Target {
-    pub format: wgpu::TextureFormat,
-    pub width: u32,
-    pub height: u32,
-    /// Samples a pixel asked for the scene (multisampling, chapter 02):
-    /// [`crate::multisampling::SAMPLES`], or 1 for none. The chapter's
-    /// [`SceneTargets`] grants it where the adapter can, and its pipelines
-    /// draw with what it granted.
-    pub samples: u32,
-}
-
-impl Target {
-    pub fn aspect(&self) -> f32 {
-        self.width as f32 / self.height.max(1) as f32
-    }
 }
 
 /// Everything a chapter needs to record one frame.

@@ -4,9 +4,12 @@
 //! the machine can do, the device creates resources, the queue runs work.
 
 use std::any::Any;
+use std::collections::HashMap;
 use std::fmt;
 use std::path::PathBuf;
-use std::sync::{Arc, Mutex};
+use std::sync::{Arc, Mutex, Weak};
+
+use crate::shader::{ShaderError, ShaderFile};
 
 /// The adapter, device and queue a chapter draws with.
 pub struct Gpu {
@@ -17,7 +20,7 @@ pub struct Gpu {
     /// See [`Gpu::cached`].
     cache: Mutex<Vec<Box<dyn Any + Send>>>,
     /// Where shaders are read from, and what to rebuild when they change.
-    pub(crate) shaders: crate::reload::ShaderRegistry,
+    pub(crate) shaders: ShaderRegistry,
 }
 
 /// What a chapter needs beyond the WebGPU baseline. Optional features are
@@ -248,5 +251,83 @@ impl Gpu {
             None => Ok(value),
             Some(error) => Err(error.to_string()),
         }
+    }
+}
+
+/// What the device's registry can do with a [`Reloadable`] of any type.
+#[cfg(not(target_arch = "wasm32"))]
+pub(crate) trait Rebuild: Send + Sync {
+    fn uses(&self, file: &str) -> bool;
+    fn rebuild(self: Arc<Self>, gpu: &Gpu) -> Result<(), ShaderError>;
+}
+#[cfg(target_arch = "wasm32")]
+pub(crate) trait Rebuild {
+    fn uses(&self, file: &str) -> bool;
+    fn rebuild(self: Arc<Self>, gpu: &Gpu) -> Result<(), ShaderError>;
+}
+
+/// A device's shaders: where they are read from, and every [`Reloadable`]
+/// built on it that is still alive. Part of [`Gpu`]: it lives here, beside it, so that the device and
+/// `reload`, which rebuilds pipelines on the device, do not lean on each
+/// other.
+#[derive(Default)]
+pub(crate) struct ShaderRegistry {
+    pub(crate) root: Mutex<Option<std::path::PathBuf>>,
+    /// Text the shader panel put in place of a file's, by path: read before
+    /// the source tree or the embedded copy (see [`Gpu::edit_shader`]).
+    pub(crate) edits: Mutex<HashMap<String, String>>,
+    /// Every file a module was made from on this device, with its imports.
+    pub(crate) met: Mutex<Vec<ShaderFile>>,
+    pub(crate) live: Mutex<Vec<Weak<dyn Rebuild>>>,
+    /// The files noted by each `build` running now, with its thread
+    /// (tests build on one device from several threads), innermost last.
+    pub(crate) noting: Mutex<Vec<(std::thread::ThreadId, Vec<&'static str>)>>,
+}
+
+impl ShaderRegistry {
+    /// Runs `build`, returning what it made and the files it read.
+    pub(crate) fn recording<T>(&self, build: impl FnOnce() -> T) -> (T, Vec<&'static str>) {
+        let thread = std::thread::current().id();
+        self.noting.lock().unwrap_or_else(|e| e.into_inner()).push((thread, Vec::new()));
+        let made = build();
+        let mut noting = self.noting.lock().unwrap_or_else(|e| e.into_inner());
+        let mine = noting.iter().rposition(|(t, _)| *t == thread).expect("pushed above");
+        (made, noting.remove(mine).1)
+    }
+
+    /// The text a module is made from: the panel's edit, else the file
+    /// under `root` (the source tree), else the embedded copy.
+    pub(crate) fn text(&self, file: &ShaderFile, root: Option<&std::path::Path>) -> Result<String, ShaderError> {
+        match self.edits.lock().unwrap_or_else(|e| e.into_inner()).get(file.path) {
+            Some(edited) => Ok(edited.clone()),
+            None => file.source(root),
+        }
+    }
+
+    /// `ShaderFile::module` calls this for the file it reads and its imports.
+    pub(crate) fn note(&self, file: &ShaderFile) {
+        let mut met = self.met.lock().unwrap_or_else(|e| e.into_inner());
+        for met_now in std::iter::once(file).chain(file.imports) {
+            if !met.iter().any(|known| known.path == met_now.path) {
+                met.push(*met_now);
+            }
+        }
+        drop(met);
+        let mut noting = self.noting.lock().unwrap_or_else(|e| e.into_inner());
+        let thread = std::thread::current().id();
+        if let Some((_, files)) = noting.iter_mut().rev().find(|(t, _)| *t == thread) {
+            for path in std::iter::once(file.path).chain(file.imports.iter().map(|i| i.path)) {
+                if !files.contains(&path) {
+                    files.push(path);
+                }
+            }
+        }
+    }
+
+    /// The live entries that use any of `changed`, dropping dead ones.
+    pub(crate) fn using(&self, changed: &[&str]) -> Vec<Arc<dyn Rebuild>> {
+        let mut live = self.live.lock().unwrap_or_else(|e| e.into_inner());
+        live.retain(|entry| entry.strong_count() > 0);
+        live.iter().filter_map(Weak::upgrade).filter(|entry| changed.iter().any(|file| entry.uses(file))).collect()
     }
 }

@@ -52,13 +52,13 @@ pub mod web;
 mod window;
 
 pub use camera::{Camera, CameraPlace, FlyController};
-pub use chapter::{Chapter, ChapterFlag, FlagValues, Frame, Target, Tolerance, View, ViewKind, ViewRow, views_of};
+pub use chapter::{Chapter, ChapterFlag, FlagValues, Frame, Tolerance, View, ViewKind, ViewRow, views_of};
 pub use cli::run;
 pub use draw_counts::{DrawCounts, Drawn, PassCount};
 pub use gpu::{Gpu, GpuNeeds, NoAdapter};
 pub use input::Input;
 pub use mesh::{Mesh, MeshData, Vertex};
-pub use multisampling::{Antialiasing, SceneTargets};
+pub use multisampling::{Antialiasing, SceneTargets, Target};
 pub use orbit::Orbit;
 pub use preparation::Preparation;
 pub use reload::Reloadable;

@@ -287,6 +287,61 @@ mod tests {
         assert_eq!(leaky.live(), 0);
     }
 
+    /// Every way in moves the count by the bytes given or taken back, as
+    /// the layouts say (worked out here, not read from the allocator):
+    /// `alloc`, `alloc_zeroed` (what `vec![0; n]` uses), `realloc` up and
+    /// down, `dealloc`. A way in that forgot to count would leave a leak
+    /// through it unseen.
+    #[test]
+    fn every_way_in_and_out_is_counted() {
+        use std::alloc::{GlobalAlloc as _, Layout, System};
+        let counting = Counting::new(System);
+        let layout = |bytes| Layout::from_size_align(bytes, 16).unwrap();
+        // SAFETY: each pointer is freed or resized with the layout it was made with.
+        unsafe {
+            let a = counting.alloc(layout(1000));
+            assert_eq!(counting.live(), 1000);
+            let zeroed = counting.alloc_zeroed(layout(4096));
+            assert_eq!(counting.live(), 5096);
+            assert!(std::slice::from_raw_parts(zeroed, 4096).iter().all(|&b| b == 0));
+            let grown = counting.realloc(a, layout(1000), 3000);
+            assert_eq!(counting.live(), 7096);
+            let shrunk = counting.realloc(grown, layout(3000), 10);
+            assert_eq!(counting.live(), 4106);
+            counting.dealloc(shrunk, layout(10));
+            counting.dealloc(zeroed, layout(4096));
+        }
+        assert_eq!(counting.live(), 0);
+    }
+
+    /// The program's own allocator is the counting one: a block taken
+    /// through the global allocator (zeroed, as `vec![0; n]` takes it, and
+    /// grown) shows in [`heap_bytes`]. Other tests run beside this one, so
+    /// the blocks are large and the margin a few megabytes.
+    #[test]
+    fn the_global_allocator_is_the_counting_one() {
+        const MIB: i64 = 1 << 20;
+        // Each step's change in the count, within a few megabytes of what
+        // it should be; tried a few times, since a test beside this one can
+        // allocate or free megabytes at any moment. A way in left uncounted
+        // misses by the whole block every time.
+        let steps = || {
+            let before = heap_bytes() as i64;
+            let mut block = vec![0u8; 64 << 20];
+            let zeroed = heap_bytes() as i64 - before;
+            block.resize(128 << 20, 1);
+            let grown = heap_bytes() as i64 - before;
+            drop(block);
+            let freed = heap_bytes() as i64 - before;
+            [zeroed - 64 * MIB, grown - 128 * MIB, freed]
+        };
+        let tries: Vec<[i64; 3]> = (0..5).map(|_| steps()).collect();
+        assert!(
+            tries.iter().any(|misses| misses.iter().all(|miss| miss.abs() < 8 * MIB)),
+            "the count missed the blocks by {tries:?} bytes"
+        );
+    }
+
     #[test]
     fn a_one_off_step_is_not_a_leak() {
         let step = Growth {

@@ -8,8 +8,28 @@
 
 use std::sync::Mutex;
 
+use crate::Gpu;
 use crate::texture::DEPTH_FORMAT;
-use crate::{Gpu, Target};
+
+/// The colour target a chapter draws into: the window's surface or an
+/// offscreen texture. Pipelines are built for `format`.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct Target {
+    pub format: wgpu::TextureFormat,
+    pub width: u32,
+    pub height: u32,
+    /// Samples a pixel asked for the scene (multisampling, chapter 02):
+    /// [`SAMPLES`], or 1 for none. The chapter's
+    /// [`SceneTargets`] grants it where the adapter can, and its pipelines
+    /// draw with what it granted.
+    pub samples: u32,
+}
+
+impl Target {
+    pub fn aspect(&self) -> f32 {
+        self.width as f32 / self.height.max(1) as f32
+    }
+}
 
 /// The sample count the chapters ask for: WebGPU guarantees 4 for the
 /// usual colour formats and for depth, and WebGL2 allows at least 4.

@@ -4,10 +4,9 @@
 //! live. A piece keeps a [`Reloadable`] where it would keep its pipelines;
 //! nothing has to pass the news down to it.
 
-use std::sync::{Arc, Mutex, Weak};
+use std::sync::{Arc, Mutex};
 
-use std::collections::HashMap;
-
+use crate::gpu::Rebuild;
 use crate::{Gpu, ShaderError, ShaderFile};
 
 /// Pipelines (or anything else made from shaders) that `build` makes, and
@@ -71,18 +70,6 @@ impl<P: Clone + wgpu::WasmNotSendSync + 'static> Reloadable<P> {
     pub fn files(&self) -> &[&'static str] {
         &self.slot.files
     }
-}
-
-/// What the device's registry can do with a [`Reloadable`] of any type.
-#[cfg(not(target_arch = "wasm32"))]
-trait Rebuild: Send + Sync {
-    fn uses(&self, file: &str) -> bool;
-    fn rebuild(self: Arc<Self>, gpu: &Gpu) -> Result<(), ShaderError>;
-}
-#[cfg(target_arch = "wasm32")]
-trait Rebuild {
-    fn uses(&self, file: &str) -> bool;
-    fn rebuild(self: Arc<Self>, gpu: &Gpu) -> Result<(), ShaderError>;
 }
 
 impl<P: wgpu::WasmNotSendSync + 'static> Rebuild for Slot<P> {
@@ -164,67 +151,31 @@ mod web_late {
     }
 }
 
-/// A device's shaders: where they are read from, and every [`Reloadable`]
-/// built on it that is still alive. Part of [`Gpu`].
-#[derive(Default)]
-pub(crate) struct ShaderRegistry {
-    pub(crate) root: Mutex<Option<std::path::PathBuf>>,
-    /// Text the shader panel put in place of a file's, by path: read before
-    /// the source tree or the embedded copy (see [`Gpu::edit_shader`]).
-    edits: Mutex<HashMap<String, String>>,
-    /// Every file a module was made from on this device, with its imports.
-    met: Mutex<Vec<ShaderFile>>,
-    live: Mutex<Vec<Weak<dyn Rebuild>>>,
-    /// The files noted by each `build` running now, with its thread
-    /// (tests build on one device from several threads), innermost last.
-    noting: Mutex<Vec<(std::thread::ThreadId, Vec<&'static str>)>>,
-}
-
-impl ShaderRegistry {
-    /// Runs `build`, returning what it made and the files it read.
-    fn recording<T>(&self, build: impl FnOnce() -> T) -> (T, Vec<&'static str>) {
-        let thread = std::thread::current().id();
-        self.noting.lock().unwrap_or_else(|e| e.into_inner()).push((thread, Vec::new()));
-        let made = build();
-        let mut noting = self.noting.lock().unwrap_or_else(|e| e.into_inner());
-        let mine = noting.iter().rposition(|(t, _)| *t == thread).expect("pushed above");
-        (made, noting.remove(mine).1)
-    }
-
-    /// The text a module is made from: the panel's edit, else the file
-    /// under `root` (the source tree), else the embedded copy.
-    pub(crate) fn text(&self, file: &ShaderFile, root: Option<&std::path::Path>) -> Result<String, ShaderError> {
-        match self.edits.lock().unwrap_or_else(|e| e.into_inner()).get(file.path) {
-            Some(edited) => Ok(edited.clone()),
-            None => file.source(root),
+// Making a module is where a file is noted for hot reload, so it lives
+// here, beside the registry's other users; `shader` itself knows no device.
+impl ShaderFile {
+    /// Composes the current text (where `gpu` reads shaders from: see
+    /// [`crate::Gpu::read_shaders_from`]) with its imports, validates it,
+    /// and creates a shader module from it on `gpu`'s device. On a device
+    /// with WebGPU's `clip_distances` feature, `CLIP_DISTANCES` is defined
+    /// for `#ifdef`s in the WGSL (chapter 07 clips with it).
+    /// Inside [`crate::Reloadable::new`], the file and its imports are noted
+    /// as what to rebuild from when they change.
+    pub fn module(&self, gpu: &crate::Gpu) -> Result<wgpu::ShaderModule, ShaderError> {
+        gpu.shaders.note(self);
+        let root = gpu.shader_root();
+        let mut imports = Vec::new();
+        for import in self.imports {
+            imports.push((import.path, gpu.shaders.text(import, root.as_deref())?));
         }
-    }
-
-    /// `ShaderFile::module` calls this for the file it reads and its imports.
-    pub(crate) fn note(&self, file: &ShaderFile) {
-        let mut met = self.met.lock().unwrap_or_else(|e| e.into_inner());
-        for met_now in std::iter::once(file).chain(file.imports) {
-            if !met.iter().any(|known| known.path == met_now.path) {
-                met.push(*met_now);
-            }
-        }
-        drop(met);
-        let mut noting = self.noting.lock().unwrap_or_else(|e| e.into_inner());
-        let thread = std::thread::current().id();
-        if let Some((_, files)) = noting.iter_mut().rev().find(|(t, _)| *t == thread) {
-            for path in std::iter::once(file.path).chain(file.imports.iter().map(|i| i.path)) {
-                if !files.contains(&path) {
-                    files.push(path);
-                }
-            }
-        }
-    }
-
-    /// The live entries that use any of `changed`, dropping dead ones.
-    fn using(&self, changed: &[&str]) -> Vec<Arc<dyn Rebuild>> {
-        let mut live = self.live.lock().unwrap_or_else(|e| e.into_inner());
-        live.retain(|entry| entry.strong_count() > 0);
-        live.iter().filter_map(Weak::upgrade).filter(|entry| changed.iter().any(|file| entry.uses(file))).collect()
+        let device = &gpu.device;
+        let clip_distances = device.features().contains(wgpu::Features::CLIP_DISTANCES);
+        let defs: &[&str] = if clip_distances { &["CLIP_DISTANCES"] } else { &[] };
+        let module = crate::shader::compose_with(&gpu.shaders.text(self, root.as_deref())?, self.path, &imports, defs)?;
+        Ok(device.create_shader_module(wgpu::ShaderModuleDescriptor {
+            label: Some(self.path),
+            source: wgpu::ShaderSource::Naga(std::borrow::Cow::Owned(module)),
+        }))
     }
 }
 

@@ -77,30 +77,6 @@ impl ShaderFile {
             None => Ok(self.embedded.to_string()),
         }
     }
-
-    /// Composes the current text (where `gpu` reads shaders from: see
-    /// [`crate::Gpu::read_shaders_from`]) with its imports, validates it,
-    /// and creates a shader module from it on `gpu`'s device. On a device
-    /// with WebGPU's `clip_distances` feature, `CLIP_DISTANCES` is defined
-    /// for `#ifdef`s in the WGSL (chapter 07 clips with it).
-    /// Inside [`crate::Reloadable::new`], the file and its imports are noted
-    /// as what to rebuild from when they change.
-    pub fn module(&self, gpu: &crate::Gpu) -> Result<wgpu::ShaderModule, ShaderError> {
-        gpu.shaders.note(self);
-        let root = gpu.shader_root();
-        let mut imports = Vec::new();
-        for import in self.imports {
-            imports.push((import.path, gpu.shaders.text(import, root.as_deref())?));
-        }
-        let device = &gpu.device;
-        let clip_distances = device.features().contains(wgpu::Features::CLIP_DISTANCES);
-        let defs: &[&str] = if clip_distances { &["CLIP_DISTANCES"] } else { &[] };
-        let module = compose_with(&gpu.shaders.text(self, root.as_deref())?, self.path, &imports, defs)?;
-        Ok(device.create_shader_module(wgpu::ShaderModuleDescriptor {
-            label: Some(self.path),
-            source: wgpu::ShaderSource::Naga(std::borrow::Cow::Owned(module)),
-        }))
-    }
 }
 
 impl ShaderFile {
