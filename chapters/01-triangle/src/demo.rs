@@ -1,45 +1,18 @@
-//! The chapter itself: what each view decides, the views, the overlay's
-//! colour pickers, and `impl Chapter`, which puts the vertex buffer and the
-//! two pipelines together into a frame.
+//! The chapter itself: the overlay's colour pickers, and `impl Chapter`,
+//! which puts the vertex buffer and the two pipelines together into a
+//! frame.
 
 use common::wgpu::util::DeviceExt as _;
 use common::{
-    Chapter, Drawn, Frame, Gpu, Preparation, Reloadable, SceneTargets, ShaderError, Target, View, ViewRow, anyhow,
-    egui, shader, views_of, wgpu,
+    Chapter, Drawn, Frame, Gpu, Preparation, Reloadable, SceneTargets, Target, View, anyhow, egui, views_of, wgpu,
 };
 
-use crate::pipeline::build_pipeline;
+use crate::pipeline::build_pipelines;
 use crate::vertex::{ColoredVertex, TRIANGLE};
+use crate::views::{Settings, VIEW_TABLE};
 
 /// The background, a dark blue-grey (linear RGB).
 const CLEAR: wgpu::Color = wgpu::Color { r: 0.02, g: 0.025, b: 0.04, a: 1.0 };
-
-/// What a view decides.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub struct Settings {
-    /// Blend the corners' colours across the triangle (off: every pixel
-    /// takes the first corner's colour).
-    pub interpolate: bool,
-}
-
-impl Settings {
-    pub const DEFAULT: Self = Self { interpolate: true };
-}
-
-/// The triangle has no camera, so no view is a preset: this enum has no values.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub enum CameraPreset {}
-
-/// Every view, with the settings it applies.
-pub const VIEW_TABLE: [ViewRow<Settings, CameraPreset>; 3] = [
-    ViewRow::mode("default", "colours interpolated across the triangle", Settings::DEFAULT),
-    ViewRow::no_aa("default", Settings::DEFAULT),
-    ViewRow::mode(
-        "flat",
-        "interpolation off: one colour per triangle, from its first vertex",
-        Settings { interpolate: false },
-    ),
-];
 
 pub struct Triangle {
     pub settings: Settings,
@@ -51,23 +24,6 @@ pub struct Triangle {
     /// Where the triangle is drawn before it reaches the target: four
     /// samples a pixel, so that its edges are smoothed (chapter 02).
     scene: SceneTargets,
-}
-
-impl Triangle {
-    fn pipelines(
-        gpu: &Gpu,
-        format: wgpu::TextureFormat,
-        multisample: wgpu::MultisampleState,
-    ) -> Result<[wgpu::RenderPipeline; 2], ShaderError> {
-        let module = shader!("triangle/triangle.wgsl").module(gpu)?;
-        gpu.catch_validation(|| {
-            [
-                build_pipeline(&gpu.device, &module, format, "vs_main", "fs_main", multisample),
-                build_pipeline(&gpu.device, &module, format, "vs_flat", "fs_flat", multisample),
-            ]
-        })
-        .map_err(ShaderError)
-    }
 }
 
 impl Chapter for Triangle {
@@ -92,7 +48,7 @@ impl Chapter for Triangle {
         });
         let scene = SceneTargets::without_depth(gpu, target);
         let (format, multisample) = (target.format, scene.multisample());
-        let pipelines = Reloadable::new(gpu, move |gpu| Self::pipelines(gpu, format, multisample))?;
+        let pipelines = Reloadable::new(gpu, move |gpu| build_pipelines(gpu, format, multisample))?;
         Ok(Self { settings: Settings::DEFAULT, vertices, corners: TRIANGLE, pipelines, scene })
     }
     // ANCHOR_END: new

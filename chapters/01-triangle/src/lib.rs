@@ -4,13 +4,17 @@
 //! The modules below come in the order the book explains them; the
 //! re-exports after them are the pieces other crates use.
 
-// One corner of the triangle as the GPU reads it, and the triangle's three.
+// Lesson 1: one corner of the triangle as the GPU reads it, and the triangle's three.
 pub mod vertex;
-// The render pipeline: shader stages, vertex layout, primitive, target format.
+// Lesson 2: the render pipeline (shader stages, vertex layout, primitive,
+// target format), and the chapter's smooth and flat pair.
 pub mod pipeline;
-// The chapter itself: its settings, views and frame.
+// Lesson 3: the views, smooth and flat (interpolation switched off).
+pub mod views;
+// The chapter itself: the vertex buffer, the pipelines and the frame.
 pub mod demo;
 
-pub use demo::{CameraPreset, Settings, Triangle, VIEW_TABLE};
-pub use pipeline::build_pipeline;
+pub use demo::Triangle;
+pub use pipeline::{build_pipeline, build_pipelines};
 pub use vertex::{ColoredVertex, TRIANGLE};
+pub use views::{CameraPreset, Settings, VIEW_TABLE};

@@ -1,7 +1,8 @@
 //! The render pipeline: everything the GPU must know before it draws the
-//! triangle, fixed in one object.
+//! triangle, fixed in one object; and the chapter's two, the smooth one and
+//! the flat one, built from `triangle.wgsl`.
 
-use common::wgpu;
+use common::{Gpu, ShaderError, shader, wgpu};
 
 use crate::vertex::ColoredVertex;
 
@@ -47,3 +48,24 @@ pub fn build_pipeline(
     })
 }
 // ANCHOR_END: pipeline
+
+// ANCHOR: pipelines
+/// The chapter's two pipelines, both from `triangle.wgsl`: the smooth one
+/// (`vs_main`, `fs_main`) and the flat one (`vs_flat`, `fs_flat`). An error
+/// in the shader, or a pipeline that fails validation, comes back as a
+/// `ShaderError`, for the overlay and the terminal to show.
+pub fn build_pipelines(
+    gpu: &Gpu,
+    format: wgpu::TextureFormat,
+    multisample: wgpu::MultisampleState,
+) -> Result<[wgpu::RenderPipeline; 2], ShaderError> {
+    let module = shader!("triangle/triangle.wgsl").module(gpu)?;
+    gpu.catch_validation(|| {
+        [
+            build_pipeline(&gpu.device, &module, format, "vs_main", "fs_main", multisample),
+            build_pipeline(&gpu.device, &module, format, "vs_flat", "fs_flat", multisample),
+        ]
+    })
+    .map_err(ShaderError)
+}
+// ANCHOR_END: pipelines

@@ -1,8 +1,9 @@
 //! The pipeline that draws the scene's meshes: the chapter's shaders, the
-//! vertex layout, back faces culled, and a depth test.
+//! vertex layout, back faces culled, and a depth test; and the chapter's
+//! pipelines, all built from it but the depth view's.
 
 use common::texture::DEPTH_FORMAT;
-use common::wgpu;
+use common::{Gpu, ShaderError, fullscreen, shader, wgpu};
 
 /// A pipeline that draws meshes with `vs_main` and `fragment_entry` of
 /// `module`, keeping the nearest fragment at each pixel, into targets of
@@ -48,3 +49,47 @@ pub fn scene_pipeline(
     })
 }
 // ANCHOR_END: pipeline
+
+/// The chapter's pipelines, kept in a `Reloadable`: rebuilt when their WGSL
+/// is saved (hot reload).
+#[derive(Clone)]
+pub struct Pipelines {
+    pub shaded: wgpu::RenderPipeline,
+    pub normals: wgpu::RenderPipeline,
+    /// `shaded` at one sample a pixel, for the depth views' scene pass.
+    pub one_sample: wgpu::RenderPipeline,
+    /// The full-screen pass that shows the depth buffer.
+    pub depth_view: wgpu::RenderPipeline,
+}
+
+impl Pipelines {
+    /// Builds them all: the scene's with `scene_layout` into targets of
+    /// `multisample`'s samples (and one at one sample), the depth view's
+    /// with `depth_layout`, all drawing in `format`.
+    pub fn build(
+        gpu: &Gpu,
+        scene_layout: &wgpu::PipelineLayout,
+        depth_layout: &wgpu::PipelineLayout,
+        format: wgpu::TextureFormat,
+        multisample: wgpu::MultisampleState,
+    ) -> Result<Self, ShaderError> {
+        let scene = shader!("camera/scene.wgsl").module(gpu)?;
+        let depth = shader!("camera/depth.wgsl", imports: ["common/fullscreen.wgsl"]).module(gpu)?;
+        let device = &gpu.device;
+        gpu.catch_validation(|| Self {
+            shaded: scene_pipeline(device, scene_layout, &scene, format, "fs_main", multisample),
+            normals: scene_pipeline(device, scene_layout, &scene, format, "fs_normals", multisample),
+            one_sample: scene_pipeline(device, scene_layout, &scene, format, "fs_main", Default::default()),
+            depth_view: fullscreen::pipeline(
+                device,
+                "depth view",
+                depth_layout,
+                &depth,
+                "fs_depth",
+                format.into(),
+                None,
+            ),
+        })
+        .map_err(ShaderError)
+    }
+}

@@ -1,5 +1,6 @@
 //! The field of primitives: the six shapes, where each object stands and
-//! how it moves (its model matrix), and the three rows of them.
+//! how it moves (its model matrix), the three rows of them, and the ground
+//! they stand on.
 
 use std::f32::consts::PI;
 
@@ -103,3 +104,18 @@ pub fn scene() -> Vec<Placement> {
     objects
 }
 // ANCHOR_END: scene
+
+// ANCHOR: ground
+/// The ground is `primitives::plane(1)`, one metre across, stretched to a
+/// square this many metres wide.
+pub const GROUND_SIZE: f32 = 60.0;
+
+/// The ground's colour; its alpha is the strength of the checker pattern
+/// the fragment shader draws (the objects' is 0).
+pub const GROUND_COLOR: [f32; 4] = [0.35, 0.36, 0.38, 1.0];
+
+/// The ground's model matrix: only a scale, since it lies at the origin.
+pub fn ground_model() -> Mat4 {
+    Mat4::from_scale(Vec3::new(GROUND_SIZE, 1.0, GROUND_SIZE))
+}
+// ANCHOR_END: ground

@@ -1,16 +1,20 @@
-//! Worked solutions to the exercises of book page 02, compiled and checked
-//! with the chapter's other tests: the page includes them by anchor, and
-//! each test asserts the figure its solution states.
+//! Worked solutions to the exercises of chapter 02's lessons, compiled and
+//! checked with the chapter's other tests: the lessons include them by
+//! anchor, and each test asserts the figure its solution states. A test's
+//! name starts with its lesson's page (`transforms`, `fly_camera`,
+//! `primitives`, `uniforms`, `depth`, `multisampling`) and the exercise's
+//! number there.
 
 use std::f32::consts::TAU;
 
-use camera::{CameraChapter, Placement, Shape, scene};
+use camera::{CameraChapter, Placement, Shape, scene, start_camera};
 use common::glam::{Mat4, Quat, Vec3, Vec4};
-use common::headless::{OFFSCREEN_FORMAT, capture};
-use common::{Camera, Chapter, Gpu, GpuNeeds, MeshData, Target, primitives};
+use common::headless::{OFFSCREEN_FORMAT, Offscreen, capture};
+use common::winit::keyboard::KeyCode;
+use common::{Camera, Chapter, FlyController, Gpu, GpuNeeds, Input, MeshData, SceneTargets, Target, primitives};
 
 // ANCHOR: edge_stretch
-/// Exercise 1: how many times wider a small sphere looks with its centre at
+/// Model, view and projection, exercise 1: how many times wider a small sphere looks with its centre at
 /// the left or right edge of the picture than at the centre, measured with
 /// the camera's own view-projection matrix.
 fn edge_stretch(fov_y_degrees: f32, aspect: f32) -> f32 {
@@ -30,7 +34,7 @@ fn edge_stretch(fov_y_degrees: f32, aspect: f32) -> f32 {
 // ANCHOR_END: edge_stretch
 
 // ANCHOR: telephoto
-/// Exercise 1, second half: the height on the picture (in clip units) of
+/// Model, view and projection, exercise 1, second half: the height on the picture (in clip units) of
 /// something 1 m tall straight ahead at `distance`.
 fn apparent_height(fov_y_degrees: f32, distance: f32) -> f32 {
     let camera = Camera { fov_y: fov_y_degrees.to_radians(), ..Camera::looking_at(Vec3::ZERO, Vec3::NEG_Z, 1.0) };
@@ -43,7 +47,7 @@ fn apparent_height(fov_y_degrees: f32, distance: f32) -> f32 {
 // ANCHOR_END: telephoto
 
 #[test]
-fn exercise_1_wide_angles_stretch_the_edges_and_long_lenses_flatten_depth() {
+fn transforms_exercise_1_wide_angles_stretch_the_edges_and_long_lenses_flatten_depth() {
     // At the edge, the angle θ off the axis stretches a small object by
     // 1 / cos²θ along the picture's radius. At 110° (vertical) and 16:9 the
     // side edge is θ = 68.5° off the axis: 7.4 times as wide. At 25°,
@@ -66,7 +70,7 @@ fn exercise_1_wide_angles_stretch_the_edges_and_long_lenses_flatten_depth() {
 }
 
 // ANCHOR: rts
-/// Exercise 2: `Placement::model` with the order swapped to R · T · S. The
+/// Primitives, exercise 1: `Placement::model` with the order swapped to R · T · S. The
 /// rotation now comes after the move, so it turns the object's position
 /// about the origin too.
 fn model_rts(placement: &Placement, time: f32) -> Mat4 {
@@ -76,7 +80,7 @@ fn model_rts(placement: &Placement, time: f32) -> Mat4 {
 // ANCHOR_END: rts
 
 #[test]
-fn exercise_2_rts_swings_the_spinning_row_around_the_origin() {
+fn primitives_exercise_1_rts_swings_the_spinning_row_around_the_origin() {
     let spinning: Vec<Placement> = scene().into_iter().filter(|p| p.spin > 0.0).collect();
     assert_eq!(spinning.len(), 6);
     for placement in &spinning {
@@ -108,7 +112,7 @@ fn degrees_between(a: Vec3, b: Vec3) -> f32 {
 }
 
 // ANCHOR: wrong_normals
-/// Exercise 3: the largest angle, over a mesh's vertices, between the
+/// Uniforms and the shaders, exercise 1: the largest angle, over a mesh's vertices, between the
 /// normal the model matrix gives and the true one, which the normal matrix
 /// (the model's inverse transpose) gives.
 fn worst_normal_error(mesh: &MeshData, model: Mat4) -> f32 {
@@ -128,7 +132,7 @@ const NORMAL_LINE: &str = "out.normal = (object.normal_matrix * vec4<f32>(in.nor
 const WRONG_NORMAL_LINE: &str = "out.normal = (object.model * vec4<f32>(in.normal, 0.0)).xyz;";
 
 #[test]
-fn exercise_3_the_model_matrix_tilts_the_stretched_rows_normals_by_up_to_43_degrees() {
+fn uniforms_exercise_1_the_model_matrix_tilts_the_stretched_rows_normals_by_up_to_43_degrees() {
     // The middle row is stretched 1.6 / 0.7 = 2.29 times more along y than
     // across. The model matrix tilts its normals towards y by that factor,
     // the true normal away from y by it: at 45° the two are
@@ -156,7 +160,7 @@ fn exercise_3_the_model_matrix_tilts_the_stretched_rows_normals_by_up_to_43_degr
         capture(gpu, &mut chapter, target, (CameraChapter::SNAPSHOT_TIME, normals), Default::default()).unwrap()
     };
     let right = render(&gpu);
-    let root = common::shader::scratch_copy("camera-exercise-3").unwrap();
+    let root = common::shader::scratch_copy("camera-uniforms-exercise-1").unwrap();
     let scene_wgsl = root.join("camera/scene.wgsl");
     let original = std::fs::read_to_string(&scene_wgsl).unwrap();
     assert!(original.contains(NORMAL_LINE), "scene.wgsl changed: update NORMAL_LINE");
@@ -181,7 +185,7 @@ fn exercise_3_the_model_matrix_tilts_the_stretched_rows_normals_by_up_to_43_degr
 }
 
 // ANCHOR: paraboloid
-/// Exercise 4: the paraboloid y = x² + z² over the disc r ≤ 0.5, as a
+/// Primitives, exercise 2: the paraboloid y = x² + z² over the disc r ≤ 0.5, as a
 /// `primitives::surface`. u goes around, v out from the centre (so that
 /// ∂P/∂v × ∂P/∂u points up, into the bowl). The surface is where
 /// F = x² + z² − y is 0, and F's gradient (2x, −1, 2z) is perpendicular to
@@ -198,7 +202,7 @@ pub fn paraboloid(segments: u32, rings: u32) -> MeshData {
 // ANCHOR_END: paraboloid
 
 #[test]
-fn exercise_4_the_paraboloid_winds_towards_its_normals_which_lean_45_degrees_at_the_rim() {
+fn primitives_exercise_2_the_paraboloid_winds_towards_its_normals_which_lean_45_degrees_at_the_rim() {
     let mesh = paraboloid(32, 8);
     // The centre's row of 33 copies of one point loses its zero-area triangles.
     assert_eq!(mesh.indices.len(), 3 * (32 + 2 * 32 * 7));
@@ -226,7 +230,7 @@ fn exercise_4_the_paraboloid_winds_towards_its_normals_which_lean_45_degrees_at_
 }
 
 // ANCHOR: hundred_cubes
-/// Exercise 5: a hundred cubes in a 10 × 10 grid, 1.5 m apart, each
+/// Uniforms and the shaders, exercise 2: a hundred cubes in a 10 × 10 grid, 1.5 m apart, each
 /// spinning at its own rate. Returned in place of `scene()` in `new`, they
 /// are drawn like the primitives: one uniform slot and one draw call each.
 pub fn hundred_cubes() -> Vec<Placement> {
@@ -244,7 +248,7 @@ pub fn hundred_cubes() -> Vec<Placement> {
 // ANCHOR_END: hundred_cubes
 
 #[test]
-fn exercise_5_a_hundred_cubes_are_a_hundred_draws_and_a_hundred_uniform_slots() {
+fn uniforms_exercise_2_a_hundred_cubes_are_a_hundred_draws_and_a_hundred_uniform_slots() {
     let cubes = hundred_cubes();
     assert_eq!(cubes.len(), 100);
     assert!(cubes.iter().all(|c| c.shape == Shape::Cube && c.spin > 0.0));
@@ -262,7 +266,7 @@ fn exercise_5_a_hundred_cubes_are_a_hundred_draws_and_a_hundred_uniform_slots() 
 }
 
 // ANCHOR: reversed_projection
-/// Exercise 6: reversed depth. The camera's projection with near and far
+/// The depth buffer, exercise 1: reversed depth. The camera's projection with near and far
 /// swapped puts the near plane at depth 1 and the far plane at 0; the
 /// pipeline then keeps the fragment whose depth is `Greater`, and the pass
 /// clears the depth buffer to 0.0 instead of 1.0.
@@ -288,9 +292,9 @@ fn depth_step(projection: Mat4, distance: f32, reversed: bool) -> f64 {
 // ANCHOR_END: depth_step
 
 #[test]
-fn exercise_6_reversed_depth_stores_far_distances_thousands_of_times_finer() {
+fn depth_exercise_1_reversed_depth_stores_far_distances_thousands_of_times_finer() {
     // The overlay's near and far planes at the ends of their sliders, where
-    // the page suggests looking for z-fighting.
+    // the depth lesson suggests looking for z-fighting.
     let camera = Camera { near: 0.01, far: 2000.0, ..Camera::looking_at(Vec3::ZERO, Vec3::NEG_Z, 16.0 / 9.0) };
     let (standard, reversed) = (camera.projection(), reversed_projection(&camera));
     // The reversed projection maps near to 1 and far to 0.
@@ -332,7 +336,7 @@ fn exercise_6_reversed_depth_stores_far_distances_thousands_of_times_finer() {
     }
 }
 
-/// The page says what the primitives' volume check catches: a mesh wound
+/// The primitives lesson says what the primitives' volume check catches: a mesh wound
 /// inside out changes its sign, but one flipped triangle of chapter 02's
 /// sphere (32 × 16) moves it by at most 0.3 %, inside the test's 3 %; the
 /// check of each triangle's winding against its normals is what catches that.
@@ -360,4 +364,76 @@ fn one_flipped_triangle_hides_in_the_volume_check_a_mesh_inside_out_does_not() {
     assert!(most > 0.0025 && most < 0.0035 && least > 0.0, "{least} {most}");
     let inside_out = volume(&mut sphere.triangles().map(|[a, b, c]| [a, c, b]));
     assert!((inside_out + whole).abs() < 1e-6);
+}
+
+// ANCHOR: fly_diagonal
+/// A fly camera, exercise 1, worked by hand: W and E held together for
+/// half a second at 8 m/s from the start camera. The direction is the
+/// level part of the view direction plus straight up, made one unit long,
+/// so the camera goes 4 m along the diagonal between them: 4 / √2 = 2.83 m
+/// up and as far across the ground, towards where the camera looks.
+fn fly_diagonal_by_hand() -> Vec3 {
+    let (eye, target) = (Vec3::new(-3.0, 4.0, 9.0), Vec3::new(0.0, 0.5, -1.0));
+    let across = (target - eye).with_y(0.0).normalize();
+    eye + (across + Vec3::Y).normalize() * 8.0 * 0.5
+}
+// ANCHOR_END: fly_diagonal
+
+#[test]
+fn fly_camera_exercise_1_w_and_e_go_four_metres_along_the_diagonal_whatever_the_pitch() {
+    let by_hand = fly_diagonal_by_hand();
+    assert!(by_hand.distance(Vec3::new(-2.19, 6.83, 6.29)) < 0.005, "{by_hand}");
+    let controller = FlyController::default();
+    assert_eq!(controller.speed, 8.0, "the default speed the exercise gives");
+    let mut keys = Input::default();
+    keys.key_down(KeyCode::KeyW);
+    keys.key_down(KeyCode::KeyE);
+    let start = start_camera(16.0 / 9.0);
+    let looking_down = Camera { pitch: start.pitch - 30f32.to_radians(), ..start };
+    for camera in [start, looking_down] {
+        // At 30 frames a second, and in one frame of half a second.
+        for (frames, dt) in [(15, 1.0 / 30.0), (1, 0.5)] {
+            let mut flown = camera;
+            for _ in 0..frames {
+                controller.update(&mut flown, &keys, dt);
+            }
+            eprintln!("pitch {:.1}°, {frames} frames: {}", camera.pitch.to_degrees(), flown.position);
+            assert!(flown.position.distance(by_hand) < 1e-4, "{} against {by_hand}", flown.position);
+        }
+    }
+}
+
+// ANCHOR: sample_bytes
+/// Smooth edges, exercise 1, worked by hand: the bytes of the scene's
+/// colour samples and depth buffer for a 1280 × 720 picture, at four
+/// samples a pixel and at one (where the scene is drawn straight into the
+/// picture, and only the depth buffer is the scene's own). A colour of
+/// `Rgba8UnormSrgb` and a depth of `Depth32Float` are 4 bytes each.
+const PIXELS: u64 = 1280 * 720;
+const FOUR_SAMPLES: u64 = 4 * 4 * PIXELS + 4 * 4 * PIXELS;
+const ONE_SAMPLE: u64 = 4 * PIXELS;
+// ANCHOR_END: sample_bytes
+
+#[test]
+fn multisampling_exercise_1_four_samples_cost_the_bytes_worked_out_by_hand() {
+    assert_eq!(FOUR_SAMPLES - ONE_SAMPLE, 25_804_800, "25.8 MB, as the lesson says");
+    let gpu = Gpu::headless(GpuNeeds::default()).expect("an adapter (lavapipe will do)");
+    let bytes = || common::memory::gpu_bytes(&gpu.device).unwrap_or(0);
+    let target = Target { format: OFFSCREEN_FORMAT, width: 1280, height: 720, samples: 1 };
+    // The picture exists whatever the samples: made before counting.
+    let picture = Offscreen::new(&gpu.device, target);
+    // Each scene is kept until the end, so that none is freed while
+    // another is counted.
+    let scene_bytes = |samples: u32| {
+        let before = bytes();
+        let scene = SceneTargets::new(&gpu, Target { samples, ..target });
+        assert_eq!(scene.samples(), samples, "the adapter multisamples the format");
+        // The colour samples are made for the first picture they resolve into.
+        let _attachment = scene.colour_attachment(&picture.view);
+        (bytes() - before, scene)
+    };
+    let ((four, _four_samples), (one, _one_sample)) = (scene_bytes(4), scene_bytes(1));
+    eprintln!("by wgpu's count: {four} bytes with four samples, {one} with one");
+    assert!(four > 0, "the device counts no memory");
+    assert_eq!((four, one), (FOUR_SAMPLES, ONE_SAMPLE));
 }
