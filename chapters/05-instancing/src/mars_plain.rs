@@ -131,6 +131,11 @@ struct Pipelines {
     culled: Option<[wgpu::RenderPipeline; 4]>,
 }
 
+// ANCHOR: rock_pipeline
+/// A pipeline that draws the rock with `vertex_entry` and `fragment_entry`
+/// of rocks.wgsl. The instanced one reads two vertex buffers, the mesh's
+/// (stepped per vertex) and the rocks' records (stepped per instance);
+/// the others read the mesh alone and find their rock elsewhere.
 fn rock_pipeline(
     gpu: &Gpu,
     module: &wgpu::ShaderModule,
@@ -163,6 +168,7 @@ fn rock_pipeline(
         cache: None,
     })
 }
+// ANCHOR_END: rock_pipeline
 
 /// What one picture drew of the rocks.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
