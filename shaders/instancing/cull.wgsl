@@ -78,9 +78,11 @@ fn cull_rocks(@builtin(global_invocation_id) id: vec3<u32>, @builtin(num_workgro
     } else if pixels < culling.sizes.x {
         level = 1u;
     }
+    // ANCHOR: append
     // atomicAdd returns the count before this invocation's 1: a slot of the
     // level's list no other invocation gets.
     let slot = atomicAdd(&draws[level].instance_count, 1u);
     lists[level * culling.counts.y + slot] = index;
+    // ANCHOR_END: append
 }
 // ANCHOR_END: cull_rocks

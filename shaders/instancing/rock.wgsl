@@ -47,7 +47,9 @@ fn bounding_sphere(rock: Rock, sphere: vec4<f32>) -> vec4<f32> {
     let centre = turn(sphere.xyz * scale, rock.position_yaw.w) + rock.position_yaw.xyz;
     return vec4<f32>(centre, sphere.w * max(scale.x, max(scale.y, scale.z)));
 }
+// ANCHOR_END: culling
 
+// ANCHOR: size
 // How many pixels across a sphere looks from the eye: its angular size,
 // 2r / d for a sphere far away, times the pixels per radian at the centre
 // of the picture. By distance, not depth, so that turning the head never
@@ -65,4 +67,4 @@ fn kept_size(pixels: f32, sizes: vec4<f32>) -> f32 {
     }
     return clamp((pixels - sizes.z) / (sizes.w - sizes.z), 0.0, 1.0);
 }
-// ANCHOR_END: culling
+// ANCHOR_END: size

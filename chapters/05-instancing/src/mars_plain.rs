@@ -5,6 +5,7 @@
 //! or flat. Chapters 05, 06 and 07 each own one and draw it through
 //! explicit inputs, one `PlainViewpoint` per picture.
 
+use std::ops::Range;
 use std::sync::Arc;
 
 use common::glam::Vec4;
@@ -13,11 +14,13 @@ use common::{Camera, Drawn, Gpu, PassTimer, Reloadable, ShaderError, ShaderFile,
 use fog::{FogBinding, FogSettings, fog_shader};
 use terrain::{Detail, Sun, TerrainData, TerrainRenderer, Viewpoint};
 
-use crate::rock_culling::{Grading, Picture, RockCulling, RockLists, RockSource, missing_capability};
+use crate::capabilities::missing_capability;
+use crate::rock_culling::{RockCulling, RockLists, RockSource};
 use crate::rock_field::{MAX_ONE_PER_DRAW, RockField};
 use crate::rock_groups::{RockRuns, visible_runs};
 use crate::rock_mesh::LEVELS;
 use crate::rock_scatter::{MAX_ROCKS, RockInstance, rocks_on_map};
+use crate::size_on_screen::{Grading, Picture};
 
 /// How the rocks are drawn and coloured.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -128,6 +131,11 @@ struct Pipelines {
     culled: Option<[wgpu::RenderPipeline; 4]>,
 }
 
+// ANCHOR: rock_pipeline
+/// A pipeline that draws the rock with `vertex_entry` and `fragment_entry`
+/// of rocks.wgsl. The instanced one reads two vertex buffers, the mesh's
+/// (stepped per vertex) and the rocks' records (stepped per instance);
+/// the others read the mesh alone and find their rock elsewhere.
 fn rock_pipeline(
     gpu: &Gpu,
     module: &wgpu::ShaderModule,
@@ -160,6 +168,7 @@ fn rock_pipeline(
         cache: None,
     })
 }
+// ANCHOR_END: rock_pipeline
 
 /// What one picture drew of the rocks.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
@@ -596,8 +605,8 @@ impl MarsPlain {
     }
 
     // ANCHOR: draw_rocks
-    /// Draws the rocks of `drawn`'s runs, where the CPU culls; returns the
-    /// number of draw calls.
+    /// Draws the rocks of `drawn`'s runs, where the CPU culls, in `mode`'s
+    /// way; returns the number of draw calls.
     fn draw_rocks(
         &self,
         pass: &mut wgpu::RenderPass<'_>,
@@ -605,38 +614,87 @@ impl MarsPlain {
         mode: Mode,
         drawn: &RockRuns,
     ) -> u32 {
-        let mesh = self.rocks.mesh();
         let pipelines = self.pipelines_for(viewpoint.samples);
-        pass.set_vertex_buffer(0, mesh.vertex_buffer.slice(..));
-        pass.set_index_buffer(mesh.index_buffer.slice(..), wgpu::IndexFormat::Uint32);
         match (mode, &viewpoint.draw_list) {
             (Mode::Indirect, Some(draw_list)) if self.indirect_ok => {
-                pass.set_pipeline(&pipelines.instanced[colouring(mode)]);
-                pass.set_vertex_buffer(1, self.rocks.instances.slice(..));
-                // One call: the GPU reads each run's draw from the list.
-                pass.multi_draw_indexed_indirect(draw_list, 0, drawn.runs.len() as u32);
-                1
+                self.draw_indirect(pass, &pipelines.instanced[colouring(mode)], draw_list, drawn)
             }
-            (Mode::OnePerDraw, _) => {
-                pass.set_pipeline(&pipelines.one_per_draw);
-                for i in drawn.runs.iter().flat_map(|run| run.clone()) {
-                    // A bind group change and a draw per rock, validated and
-                    // recorded one by one: this is the cost instancing removes.
-                    pass.set_bind_group(2, &self.singles_group, &[i * self.rocks.single_stride]);
-                    pass.draw_indexed(0..mesh.index_count, 0, 0..1);
-                }
-                drawn.rocks
-            }
-            _ => {
-                pass.set_pipeline(&pipelines.instanced[colouring(mode)]);
-                pass.set_vertex_buffer(1, self.rocks.instances.slice(..));
-                // One call per run of rocks; the GPU loops over its instances itself.
-                for run in &drawn.runs {
-                    pass.draw_indexed(0..mesh.index_count, 0, run.clone());
-                }
-                drawn.runs.len() as u32
-            }
+            (Mode::OnePerDraw, _) => self.draw_one_per_rock(pass, &pipelines.one_per_draw, drawn),
+            _ => self.draw_runs(pass, &pipelines.instanced[colouring(mode)], drawn),
         }
     }
     // ANCHOR_END: draw_rocks
+
+    // ANCHOR: draw_instanced
+    /// Sets up `pass` to draw the rock instanced: the mesh in vertex buffer
+    /// 0, which steps once per vertex, and every rock's record in vertex
+    /// buffer 1, which steps once per instance (`RockInstance::LAYOUT`).
+    fn bind_instanced(&self, pass: &mut wgpu::RenderPass<'_>, pipeline: &wgpu::RenderPipeline) {
+        let mesh = self.rocks.mesh();
+        pass.set_vertex_buffer(0, mesh.vertex_buffer.slice(..));
+        pass.set_index_buffer(mesh.index_buffer.slice(..), wgpu::IndexFormat::Uint32);
+        pass.set_pipeline(pipeline);
+        pass.set_vertex_buffer(1, self.rocks.instances.slice(..));
+    }
+
+    /// Draws the rocks `instances` of the buffer in one call: the mesh's
+    /// 60 indices, base vertex 0, and the range of instances. The GPU loops
+    /// over the instances itself, running the 60 vertices for each.
+    fn draw_instanced(&self, pass: &mut wgpu::RenderPass<'_>, instances: Range<u32>) {
+        pass.draw_indexed(0..self.rocks.mesh().index_count, 0, instances);
+    }
+    // ANCHOR_END: draw_instanced
+
+    // ANCHOR: draw_one_per_rock
+    /// The comparison: every rock of `drawn` with a draw call of its own,
+    /// its record read from its uniform slot at a dynamic offset, as
+    /// chapter 02 placed its primitives. Returns the number of calls.
+    fn draw_one_per_rock(
+        &self,
+        pass: &mut wgpu::RenderPass<'_>,
+        pipeline: &wgpu::RenderPipeline,
+        drawn: &RockRuns,
+    ) -> u32 {
+        let mesh = self.rocks.mesh();
+        pass.set_vertex_buffer(0, mesh.vertex_buffer.slice(..));
+        pass.set_index_buffer(mesh.index_buffer.slice(..), wgpu::IndexFormat::Uint32);
+        pass.set_pipeline(pipeline);
+        for i in drawn.runs.iter().flat_map(|run| run.clone()) {
+            // A bind group change and a draw per rock, validated and
+            // recorded one by one: this is the cost instancing removes.
+            pass.set_bind_group(2, &self.singles_group, &[i * self.rocks.single_stride]);
+            pass.draw_indexed(0..mesh.index_count, 0, 0..1);
+        }
+        drawn.rocks
+    }
+    // ANCHOR_END: draw_one_per_rock
+
+    // ANCHOR: draw_runs
+    /// One instanced call per run of rocks: every rock in one call where
+    /// nothing is culled, a call per run of neighbouring groups where the
+    /// CPU culls by chunk. Returns the number of calls.
+    fn draw_runs(&self, pass: &mut wgpu::RenderPass<'_>, pipeline: &wgpu::RenderPipeline, drawn: &RockRuns) -> u32 {
+        self.bind_instanced(pass, pipeline);
+        for run in &drawn.runs {
+            self.draw_instanced(pass, run.clone());
+        }
+        drawn.runs.len() as u32
+    }
+    // ANCHOR_END: draw_runs
+
+    // ANCHOR: draw_indirect
+    /// All the runs in one call: the GPU reads each run's draw, five
+    /// numbers, from `draw_list`, which `write_draw_list` filled.
+    fn draw_indirect(
+        &self,
+        pass: &mut wgpu::RenderPass<'_>,
+        pipeline: &wgpu::RenderPipeline,
+        draw_list: &wgpu::Buffer,
+        drawn: &RockRuns,
+    ) -> u32 {
+        self.bind_instanced(pass, pipeline);
+        pass.multi_draw_indexed_indirect(draw_list, 0, drawn.runs.len() as u32);
+        1
+    }
+    // ANCHOR_END: draw_indirect
 }

@@ -6,85 +6,18 @@
 //! each level with one `draw_indexed_indirect`, and the CPU never learns how
 //! many rocks there were unless it reads the counts back, a frame late.
 
-use std::sync::Arc;
-use std::sync::atomic::{AtomicBool, Ordering};
-
 use common::glam::Vec4;
 use common::wgpu::util::DeviceExt as _;
-use common::{Camera, Gpu, Mesh, PassTimer, Reloadable, ShaderError, ShaderFile, shader, wgpu};
+use common::{Gpu, Mesh, PassTimer, Reloadable, ShaderError, ShaderFile, shader, wgpu};
 
+use crate::read_back::{LateCounts, read_buffer};
 use crate::rock_mesh::LEVELS;
-
-// ANCHOR: grading
-/// How a picture grades its rocks by their size on screen, in pixels
-/// across (`pixels_across` in rock.wgsl).
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub struct Grading {
-    /// From this size up, the full rock (20 triangles).
-    pub full: f32,
-    /// From this size to `full`, the octahedron (8 triangles).
-    pub coarse: f32,
-    /// From this size to `coarse`, the tetrahedron (4); below it, nothing.
-    pub drawn: f32,
-    /// Between `drawn` and this size a rock shrinks to nothing as it gets
-    /// smaller, rather than vanishing at once.
-    pub whole: f32,
-}
-
-impl Grading {
-    /// The plain's: triangles of a few pixels at every level.
-    pub const LOD: Self = Self { full: 12.0, coarse: 4.0, drawn: 1.0, whole: 2.0 };
-    /// Every rock in view at full size and full detail, however small: the
-    /// frustum and the clip plane alone, to compare the graded picture with.
-    pub const FULL_DETAIL: Self = Self { full: 0.0, coarse: 0.0, drawn: 0.0, whole: 0.0 };
-}
-// ANCHOR_END: grading
+use crate::size_on_screen::{Grading, Picture};
 
 /// Invocations per workgroup: `@workgroup_size(64)` in cull.wgsl. A
 /// multiple of the 32 or 64 lanes a GPU runs together, and well inside
 /// WebGPU's least limit of 256 invocations per workgroup.
 pub const WORKGROUP_SIZE: u32 = 64;
-
-// ANCHOR: missing_capability
-/// Why this device cannot cull the rocks on the GPU, in one line, or
-/// `None` where it can: the path needs compute shaders, storage buffers
-/// that vertex shaders read, and draws whose arguments come from a buffer
-/// (all three missing on WebGL 2), and limits that fit `rock_bytes` of rocks.
-pub fn missing_capability(
-    downlevel: &wgpu::DownlevelCapabilities,
-    limits: &wgpu::Limits,
-    rock_bytes: u64,
-) -> Option<String> {
-    use wgpu::DownlevelFlags as Flags;
-    let needs = [
-        (Flags::COMPUTE_SHADERS, "compute shaders (DownlevelFlags::COMPUTE_SHADERS)"),
-        (Flags::VERTEX_STORAGE, "storage buffers in vertex shaders (DownlevelFlags::VERTEX_STORAGE)"),
-        (Flags::INDIRECT_EXECUTION, "indirect draws (DownlevelFlags::INDIRECT_EXECUTION)"),
-    ];
-    if let Some((_, what)) = needs.iter().find(|(flag, _)| !downlevel.flags.contains(*flag)) {
-        return Some(format!("this GPU has no {what}"));
-    }
-    if limits.max_storage_buffers_per_shader_stage < 4 {
-        return Some(format!(
-            "this GPU allows {} storage buffers per shader stage, the culling needs 4",
-            limits.max_storage_buffers_per_shader_stage
-        ));
-    }
-    if limits.max_compute_invocations_per_workgroup < WORKGROUP_SIZE
-        || limits.max_compute_workgroup_size_x < WORKGROUP_SIZE
-    {
-        return Some(format!("this GPU has no compute workgroups of {WORKGROUP_SIZE}"));
-    }
-    if limits.max_storage_buffer_binding_size < rock_bytes {
-        return Some(format!(
-            "this GPU binds at most {} MB of storage, the rocks are {} MB",
-            limits.max_storage_buffer_binding_size / 1_000_000,
-            rock_bytes / 1_000_000
-        ));
-    }
-    None
-}
-// ANCHOR_END: missing_capability
 
 // ANCHOR: culling_input
 /// `Culling` in rock.wgsl: what one picture asks of the rocks, in a small
@@ -104,25 +37,6 @@ struct CullingInput {
     counts: [u32; 4],
 }
 // ANCHOR_END: culling_input
-
-/// Where one picture is taken from, as the culling needs it: the camera,
-/// how many pixels high the picture is, and the plane it is clipped at
-/// (`terrain::KEEP_ALL` keeps everything).
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub struct Picture {
-    pub camera: Camera,
-    pub height: u32,
-    pub clip: Vec4,
-}
-
-impl Picture {
-    /// Pixels per radian at the picture's centre: `height` pixels span the
-    /// field of view, and at the centre a pixel spans 2 tan(fov/2) / height
-    /// of the distance.
-    pub fn pixels_per_radian(&self) -> f32 {
-        self.height as f32 / (2.0 * (self.camera.fov_y / 2.0).tan())
-    }
-}
 
 /// The rocks one picture culls: the buffer that holds them (group 1 of
 /// cull.wgsl, group 3 of the culled draws), the sphere around the rock in
@@ -185,6 +99,10 @@ fn cull_shader() -> ShaderFile {
     shader!("instancing/cull.wgsl", imports: ["instancing/rock.wgsl"])
 }
 
+// ANCHOR: storage_entry
+/// A storage buffer at `binding`, seen by the `visibility` stages: any
+/// size (`min_binding_size: None`, the shader's runtime-sized array takes
+/// what is bound), read-only or written.
 fn storage(binding: u32, visibility: wgpu::ShaderStages, read_only: bool) -> wgpu::BindGroupLayoutEntry {
     wgpu::BindGroupLayoutEntry {
         binding,
@@ -197,12 +115,14 @@ fn storage(binding: u32, visibility: wgpu::ShaderStages, read_only: bool) -> wgp
         count: None,
     }
 }
+// ANCHOR_END: storage_entry
 
 impl RockCulling {
     /// The culling for rocks drawn with meshes of `index_counts` indices,
     /// finest first.
     pub fn new(gpu: &Gpu, index_counts: [u32; LEVELS]) -> Result<Self, ShaderError> {
         let device = &gpu.device;
+        // ANCHOR: compute_layouts
         let picture_layout = device.create_bind_group_layout(&wgpu::BindGroupLayoutDescriptor {
             label: Some("rock culling: one picture"),
             entries: &[
@@ -215,6 +135,7 @@ impl RockCulling {
             label: Some("every rock"),
             entries: &[storage(0, wgpu::ShaderStages::COMPUTE | wgpu::ShaderStages::VERTEX, true)],
         });
+        // ANCHOR_END: compute_layouts
         let draw_layout = device.create_bind_group_layout(&wgpu::BindGroupLayoutDescriptor {
             label: Some("one level's rocks"),
             entries: &[
@@ -234,6 +155,7 @@ impl RockCulling {
             contents: &numbers,
             usage: wgpu::BufferUsages::UNIFORM,
         });
+        // ANCHOR: compute_pipeline
         let layout = device.create_pipeline_layout(&wgpu::PipelineLayoutDescriptor {
             label: Some("rock culling"),
             bind_group_layouts: &[Some(&picture_layout), Some(&rocks_layout)],
@@ -253,6 +175,7 @@ impl RockCulling {
             })
             .map_err(ShaderError)
         })?;
+        // ANCHOR_END: compute_pipeline
         Ok(Self {
             pipeline,
             picture_layout,
@@ -285,8 +208,7 @@ impl RockCulling {
     /// alignment for storage offsets, so that each can be bound on its own
     /// and every indirect draw can start at instance 0.
     pub fn lists(&self, device: &wgpu::Device, capacity: u32) -> RockLists {
-        let alignment = u64::from(device.limits().min_storage_buffer_offset_alignment);
-        let list_bytes = (u64::from(capacity.max(1)) * 4).next_multiple_of(alignment);
+        let list_bytes = list_bytes(capacity, device.limits().min_storage_buffer_offset_alignment);
         let input = device.create_buffer(&wgpu::BufferDescriptor {
             label: Some("rock culling"),
             size: std::mem::size_of::<CullingInput>() as u64,
@@ -345,7 +267,7 @@ impl RockCulling {
                 ],
             })
         });
-        let late = LateCounts::new(device);
+        let late = LateCounts::new(device, LEVELS as u64 * DRAW_BYTES);
         RockLists { input, lists, draws, picture_group, draw_groups, stride: (list_bytes / 4) as u32, capacity, late }
     }
     // ANCHOR_END: lists
@@ -388,6 +310,7 @@ impl RockCulling {
             encoder.clear_buffer(&lists.draws, level * DRAW_BYTES + 4, Some(4));
         }
         let count = rocks.count.min(lists.capacity);
+        // ANCHOR: dispatch
         if count > 0 {
             let mut pass = encoder.begin_compute_pass(&wgpu::ComputePassDescriptor {
                 label: Some("rock culling"),
@@ -399,6 +322,7 @@ impl RockCulling {
             let (x, y) = dispatch_size(count, self.max_workgroups);
             pass.dispatch_workgroups(x, y, 1);
         }
+        // ANCHOR_END: dispatch
         lists.late.copy(encoder, &lists.draws);
     }
     // ANCHOR_END: cull
@@ -425,6 +349,15 @@ impl RockCulling {
     // ANCHOR_END: draw
 }
 
+// ANCHOR: list_bytes
+/// Bytes of one level's list of up to `capacity` rocks, 4 bytes a rock,
+/// rounded up to `alignment` (the device's `min_storage_buffer_offset_alignment`)
+/// so that the next level's list may start where this one ends.
+pub fn list_bytes(capacity: u32, alignment: u32) -> u64 {
+    (u64::from(capacity.max(1)) * 4).next_multiple_of(u64::from(alignment))
+}
+// ANCHOR_END: list_bytes
+
 // ANCHOR: dispatch_size
 /// The workgroups for `rocks` rocks, `WORKGROUP_SIZE` to a group, as a
 /// grid (x, y): one row where the device allows that many along x
@@ -440,14 +373,14 @@ impl RockLists {
     /// Bytes of this picture's buffers: the lists, the draws, the input
     /// and the buffers the counts are read back through.
     pub fn gpu_bytes(&self) -> u64 {
-        let late: u64 = self.late.slots.iter().map(|slot| slot.buffer.size()).sum();
-        self.lists.size() + self.draws.size() + self.input.size() + late
+        self.lists.size() + self.draws.size() + self.input.size() + self.late.gpu_bytes()
     }
 
     /// Rocks kept at each level, finest first, by the latest count that has
     /// come back from the GPU (a frame or two late), without waiting.
     pub fn late_counts(&self) -> Option<[u32; LEVELS]> {
-        self.late.latest
+        // Each draw is five numbers; the instance count is the second.
+        self.late.latest().map(|draws| std::array::from_fn(|level| draws[level * 5 + 1]))
     }
 
     /// Rocks kept at each level by the last culling submitted, waiting for
@@ -475,109 +408,6 @@ impl RockLists {
     }
 }
 
-/// The first `bytes` of `buffer` (which has `COPY_SRC`), waiting for the
-/// GPU to finish what was submitted: through a buffer the CPU can map.
-fn read_buffer(gpu: &Gpu, buffer: &wgpu::Buffer, bytes: u64) -> Vec<u32> {
-    let readback = gpu.device.create_buffer(&wgpu::BufferDescriptor {
-        label: Some("read back"),
-        size: bytes,
-        usage: wgpu::BufferUsages::MAP_READ | wgpu::BufferUsages::COPY_DST,
-        mapped_at_creation: false,
-    });
-    let mut encoder = gpu.device.create_command_encoder(&Default::default());
-    encoder.copy_buffer_to_buffer(buffer, 0, &readback, 0, bytes);
-    gpu.queue.submit([encoder.finish()]);
-    let slice = readback.slice(..);
-    slice.map_async(wgpu::MapMode::Read, |_| {});
-    if gpu.device.poll(wgpu::PollType::wait_indefinitely()).is_err() {
-        return vec![0; (bytes / 4) as usize];
-    }
-    let values = match slice.get_mapped_range() {
-        Ok(view) => bytemuck::cast_slice(&view).to_vec(),
-        Err(_) => vec![0; (bytes / 4) as usize],
-    };
-    readback.unmap();
-    values
-}
-
-// ANCHOR: late_counts
-/// The counts of a picture's draws, copied each frame into one of a few
-/// buffers the CPU can map, and read once the GPU is done with them: a
-/// frame or two late, but without ever waiting for the GPU.
-struct LateCounts {
-    slots: [Slot; 3],
-    latest: Option<[u32; LEVELS]>,
-}
-
-struct Slot {
-    buffer: wgpu::Buffer,
-    state: SlotState,
-    /// Set by the map's callback, which wgpu may run on another thread.
-    mapped: Arc<AtomicBool>,
-}
-
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-enum SlotState {
-    /// Ready for this frame's copy.
-    Free,
-    /// The copy is recorded; once it is submitted, the buffer can be mapped.
-    Copied,
-    /// Asked to be mapped; the callback says when.
-    Mapping,
-}
-
-impl LateCounts {
-    fn new(device: &wgpu::Device) -> Self {
-        let slot = |_| Slot {
-            buffer: device.create_buffer(&wgpu::BufferDescriptor {
-                label: Some("rock counts, read late"),
-                size: LEVELS as u64 * DRAW_BYTES,
-                usage: wgpu::BufferUsages::MAP_READ | wgpu::BufferUsages::COPY_DST,
-                mapped_at_creation: false,
-            }),
-            state: SlotState::Free,
-            mapped: Arc::default(),
-        };
-        Self { slots: std::array::from_fn(slot), latest: None }
-    }
-
-    /// Reads the slots the GPU has finished with, and asks to map the ones
-    /// copied into last frame (submitted since). Never waits.
-    fn collect(&mut self, device: &wgpu::Device) {
-        let _ = device.poll(wgpu::PollType::Poll);
-        for slot in &mut self.slots {
-            match slot.state {
-                SlotState::Mapping if slot.mapped.load(Ordering::Acquire) => {
-                    if let Ok(view) = slot.buffer.slice(..).get_mapped_range() {
-                        let draws: &[u32] = bytemuck::cast_slice(&view);
-                        self.latest = Some(std::array::from_fn(|level| draws[level * 5 + 1]));
-                    }
-                    slot.buffer.unmap();
-                    slot.mapped.store(false, Ordering::Release);
-                    slot.state = SlotState::Free;
-                }
-                SlotState::Copied => {
-                    let mapped = slot.mapped.clone();
-                    slot.buffer.slice(..).map_async(wgpu::MapMode::Read, move |result| {
-                        mapped.store(result.is_ok(), Ordering::Release);
-                    });
-                    slot.state = SlotState::Mapping;
-                }
-                _ => {}
-            }
-        }
-    }
-
-    /// Records a copy of `draws` into a free slot, if one is free.
-    fn copy(&mut self, encoder: &mut wgpu::CommandEncoder, draws: &wgpu::Buffer) {
-        if let Some(slot) = self.slots.iter_mut().find(|slot| slot.state == SlotState::Free) {
-            encoder.copy_buffer_to_buffer(draws, 0, &slot.buffer, 0, LEVELS as u64 * DRAW_BYTES);
-            slot.state = SlotState::Copied;
-        }
-    }
-}
-// ANCHOR_END: late_counts
-
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -591,26 +421,5 @@ mod tests {
         assert_eq!(dispatch_size(64, 65_535), (1, 1));
         assert_eq!(dispatch_size(65, 65_535), (2, 1));
         assert_eq!(dispatch_size(0, 65_535), (0, 0));
-    }
-
-    #[test]
-    fn each_missing_capability_is_named() {
-        let full = wgpu::DownlevelCapabilities::default();
-        let limits = wgpu::Limits::default();
-        assert_eq!(missing_capability(&full, &limits, 32_000_000), None);
-        for (flag, words) in [
-            (wgpu::DownlevelFlags::COMPUTE_SHADERS, "compute shaders"),
-            (wgpu::DownlevelFlags::VERTEX_STORAGE, "storage buffers in vertex shaders"),
-            (wgpu::DownlevelFlags::INDIRECT_EXECUTION, "indirect draws"),
-        ] {
-            let lacking = wgpu::DownlevelCapabilities { flags: full.flags - flag, ..full.clone() };
-            let line = missing_capability(&lacking, &limits, 32_000_000).expect("a missing flag is named");
-            assert!(line.contains(words) && !line.contains('\n'), "{line}");
-        }
-        // WebGL 2's limits: no storage buffers at all.
-        let webgl = wgpu::Limits::downlevel_webgl2_defaults();
-        assert!(missing_capability(&full, &webgl, 32_000_000).unwrap().contains("0 storage buffers"));
-        let small = wgpu::Limits { max_storage_buffer_binding_size: 16 << 20, ..limits };
-        assert!(missing_capability(&full, &small, 32_000_000).unwrap().contains("the rocks are 32 MB"));
     }
 }

@@ -61,11 +61,15 @@ impl RockField {
             let stretch = scattered.iter().flat_map(|r| r.scale).fold(0.0, f32::max);
             let start = plain_camera(field, 1.0).position;
             let (rocks, groups) = group_by_chunk(&scattered, &field.settings, chunk_bounds, radius * stretch, start);
+            // ANCHOR: instance_buffer
+            // Every rock's 32 bytes, one after another: the instanced draws
+            // read it as vertex buffer 1, the GPU's culling as storage.
             let instances = device.create_buffer_init(&wgpu::util::BufferInitDescriptor {
                 label: Some("rock instances"),
                 contents: bytemuck::cast_slice(&rocks),
                 usage: wgpu::BufferUsages::VERTEX | wgpu::BufferUsages::STORAGE,
             });
+            // ANCHOR_END: instance_buffer
             let single_stride = (std::mem::size_of::<RockInstance>() as u32)
                 .next_multiple_of(device.limits().min_uniform_buffer_offset_alignment);
             let mut slots = vec![0u8; single_stride as usize * MAX_ONE_PER_DRAW as usize];

@@ -1,20 +1,19 @@
 //! Chapter 06's integration tests, one binary: the sun in the sky is the
-//! light on the ground, chapter 05's rocks culled by chunk, and the worked
-//! solutions to the exercises of pages 05 and 06.
+//! light on the ground, the day draws chapter 05's rocks as chapter 05
+//! does, and the worked solutions to the exercises of chapter 06.
 //!
 //! One test binary per crate: each links wgpu, naga, egui and winit, so
 //! every extra file in `tests/` would be another link of all of them.
-//! Chapters 04 and 05 have no test binary of their own; this one links
-//! both already (chapter 06 draws their plain), and its tests share one
+//! Chapters 04 and 05 have no test binary of their own: their solutions
+//! and checks are in their libraries' unit tests. The tests here share one
 //! device, so the terrain and the million rocks are made once for all of
-//! them (`Gpu::cached`), not once per chapter.
+//! them (`Gpu::cached`).
 
 use std::sync::OnceLock;
 
 use common::Gpu;
 
-mod instancing_solutions;
-mod rock_culling;
+mod plain_rocks;
 mod solutions;
 mod sun;
 

@@ -1,21 +1,21 @@
-//! Chapter 05's rocks, culled (here with chapter 06's tests, see `main.rs`
-//! for why): by chunk on the CPU, the rocks the chapter says it drew
-//! against a count made here from the scatter, chapter 03's chunk boxes and
-//! the camera's frustum; on the GPU, the compute pass's lists against a
-//! recount made here by projecting each rock's sphere, rocks placed by hand
-//! against levels worked out by hand, the fall back to the CPU where the
-//! device lacks compute shaders, and the triangles the default views draw.
+//! The chapter's rocks, culled: by chunk on the CPU, the rocks the chapter
+//! says it drew against a count made here from the scatter, chapter 03's
+//! chunk boxes and the camera's frustum; on the GPU, the compute pass's
+//! lists against a recount made here by projecting each rock's sphere,
+//! rocks placed by hand against levels worked out by hand, the fall back to
+//! the CPU where the device lacks compute shaders, and the triangles the
+//! default view draws. On the device the solutions share (`test_gpu`).
 
+use crate::solutions::test_gpu;
+use crate::{
+    Culling, Grading, InstancingChapter, MarsPlain, Picture, RockCulling, RockInstance, RockSource, SEED, Setup,
+    chunk_of, rock_levels, rock_mesh, rocks_on_map, scatter,
+};
 use common::book_figures::thousands;
 use common::glam::{Vec2, Vec3, Vec4};
 use common::headless::{OFFSCREEN_FORMAT, capture};
 use common::wgpu::util::DeviceExt as _;
 use common::{Camera, Chapter, PassTimer, Target, wgpu};
-use instancing::{
-    Culling, Grading, InstancingChapter, MarsPlain, Picture, RockCulling, RockInstance, RockSource, SEED, Setup,
-    chunk_of, rock_levels, rock_mesh, rocks_on_map, scatter,
-};
-use skybox::SkyboxChapter;
 use terrain::chunks::Aabb;
 use terrain::culling::Frustum;
 use terrain::heightfield::{CHUNK_QUADS, TerrainSettings};
@@ -29,7 +29,7 @@ fn picture<C: Chapter>(gpu: &common::Gpu, chapter: &mut C, target: Target, view:
 
 #[test]
 fn the_cpu_culling_view_draws_the_rocks_of_the_chunks_in_view_and_says_how_many() {
-    let gpu = crate::plain_gpu();
+    let gpu = test_gpu();
     let target = Target { format: OFFSCREEN_FORMAT, width: 160, height: 90, samples: 1 };
     let mut chapter: InstancingChapter = common::chapter::create(gpu, target, &Default::default()).unwrap();
     let culled = picture(gpu, &mut chapter, target, "cpu-culling");
@@ -72,14 +72,14 @@ fn the_cpu_culling_view_draws_the_rocks_of_the_chunks_in_view_and_says_how_many(
     let triangles = format!("{} rock triangles", thousands(20.0 * f64::from(in_view)));
     assert!(line.contains(&said) && line.contains(&triangles), "`{line}` should say `{said}` and `{triangles}`");
 
-    // Page 05 quotes the view's figures.
+    // The chunk lesson quotes the view's figures.
     let page = common::book_figures::section_text("05-instancing");
     for figure in [
         format!("**{} of the 1,000,000 rocks**", thousands(in_view.into())),
         format!("**in {} calls**", calls.rocks),
         format!("{} of the 4,096\ngroups", thousands(calls.rock_groups.into())),
     ] {
-        assert!(page.contains(&figure), "page 05 should say `{figure}`");
+        assert!(page.contains(&figure), "chapter 05's pages should say `{figure}`");
     }
 
     // The same runs, drawn by one indirect call, are the same picture.
@@ -146,7 +146,7 @@ fn project(camera: &Camera, height: f32, centre: Vec3, radius: f32, grading: Gra
 
 #[test]
 fn the_gpu_keeps_and_grades_the_rocks_a_projection_of_their_spheres_keeps_and_grades() {
-    let gpu = crate::plain_gpu();
+    let gpu = test_gpu();
     let target = Target { format: OFFSCREEN_FORMAT, width: 640, height: 360, samples: 1 };
     let mut chapter: InstancingChapter = common::chapter::create(gpu, target, &Default::default()).unwrap();
     picture(gpu, &mut chapter, target, "default");
@@ -259,7 +259,7 @@ const BY_HAND: [(&str, [f32; 3], f32, Option<usize>); 20] = [
 
 #[test]
 fn rocks_placed_by_hand_land_in_the_lists_worked_out_by_hand() {
-    let gpu = crate::plain_gpu();
+    let gpu = test_gpu();
     let device = &gpu.device;
     let culling = RockCulling::new(gpu, [60, 24, 12]).unwrap();
     // Each rock's own sphere is the unit sphere about where it stands, so
@@ -311,7 +311,7 @@ fn rocks_placed_by_hand_land_in_the_lists_worked_out_by_hand() {
 
 #[test]
 fn without_compute_shaders_the_plain_culls_by_chunk_and_says_which_capability_is_missing() {
-    let gpu = crate::plain_gpu();
+    let gpu = test_gpu();
     let target = Target { format: OFFSCREEN_FORMAT, width: 160, height: 90, samples: 1 };
     let mut chapter: InstancingChapter = common::chapter::create(gpu, target, &Default::default()).unwrap();
     let by_chunk = picture(gpu, &mut chapter, target, "cpu-culling");
@@ -343,9 +343,9 @@ fn rock_triangles(line: &str) -> u64 {
 }
 
 #[test]
-fn the_default_views_of_05_and_06_draw_a_tenth_of_the_rock_triangles_culling_by_chunk_drew() {
+fn the_default_view_draws_a_tenth_of_the_rock_triangles_culling_by_chunk_drew() {
     // The budget's picture size: the lent GPU's figures are at 1920 × 1080.
-    let gpu = crate::plain_gpu();
+    let gpu = test_gpu();
     let target = Target { format: OFFSCREEN_FORMAT, width: 1920, height: 1080, samples: 1 };
     let mut chapter: InstancingChapter = common::chapter::create(gpu, target, &Default::default()).unwrap();
     let mut drawn = |view: &str| {
@@ -361,19 +361,11 @@ fn the_default_views_of_05_and_06_draw_a_tenth_of_the_rock_triangles_culling_by_
     };
     let (by_chunk, graded) = (drawn("cpu-culling"), drawn("default"));
     eprintln!("at 1920 × 1080: by chunk {by_chunk:?}, graded on the GPU {graded:?}");
-    assert_eq!(by_chunk.triangles, 20 * 276_571, "the chunk groups' rocks, 20 triangles each (page 05)");
+    assert_eq!(by_chunk.triangles, 20 * 276_571, "the chunk groups' rocks, 20 triangles each (the lessons)");
     assert!(graded.triangles * 10 <= by_chunk.triangles, "{graded:?} against {by_chunk:?}");
     assert_eq!(Setup::DEFAULT.culling, Culling::PerRock);
 
-    // Chapter 06's day: the same plain from the same camera, in its own stats line.
-    let mut sky: SkyboxChapter = common::chapter::create(gpu, target, &Default::default()).unwrap();
-    let day = picture(gpu, &mut sky, target, "day");
-    assert!(day.pixels().any(|p| p != day.get_pixel(0, 0)));
-    let line = sky.stats(gpu);
-    eprintln!("chapter 06: {line}");
-    assert_eq!(rock_triangles(&line), graded.triangles, "{line}");
-
-    // Page 05 quotes the counts.
+    // The lessons quote the counts.
     let [full, octahedra, tetrahedra] = graded.levels.expect("graded on the GPU").map(|n| thousands(n.into()));
     let share = 100.0 * graded.triangles as f64 / by_chunk.triangles as f64;
     let page = common::book_figures::section_text("05-instancing");
@@ -383,6 +375,6 @@ fn the_default_views_of_05_and_06_draw_a_tenth_of_the_rock_triangles_culling_by_
         format!("({full} full, {octahedra} octahedra, {tetrahedra} tetrahedra)"),
         format!("**{} rock triangles**, {share:.1} %", thousands(graded.triangles as f64)),
     ] {
-        assert!(page.contains(&figure), "page 05 should say `{figure}`");
+        assert!(page.contains(&figure), "chapter 05's pages should say `{figure}`");
     }
 }

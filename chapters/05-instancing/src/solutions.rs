@@ -1,25 +1,38 @@
-//! Worked solutions to the exercises of book page 05 (instancing), compiled
-//! and checked here, with chapter 06's tests (see `main.rs` for why): the
-//! page includes them by anchor, and each test asserts the figure it states.
+//! Worked solutions to the exercises of chapter 05's lessons, compiled and
+//! checked with the chapter's own tests: the lessons include them by
+//! anchor, and each test asserts the figure it states. The tests that draw
+//! share one device (`test_gpu`), so the terrain and the million rocks are
+//! made once for all of them (`Gpu::cached`).
 
 use std::ops::Range;
 
-use common::glam::{Mat4, Quat, Vec3};
+use crate::rock_culling::{dispatch_size, list_bytes};
+use crate::{
+    Grading, InstancingChapter, MAX_ROCKS, Picture, RockCulling, RockGroup, RockInstance, RockRuns, RockSource,
+    WORKGROUP_SIZE, plain_camera, rock_mesh, scatter, visible_runs,
+};
+use common::glam::{Mat4, Quat, Vec3, Vec4};
 use common::headless::{OFFSCREEN_FORMAT, Offscreen, capture, read_texture};
 use common::wgpu::util::DeviceExt as _;
 use common::{Camera, Chapter, Gpu, MeshData, PassTimer, Target, Vertex, image, shader, wgpu};
 use fog::{FogBinding, FogSettings};
-use instancing::{
-    InstancingChapter, MAX_ROCKS, RockGroup, RockInstance, RockRuns, plain_camera, rock_mesh, scatter, visible_runs,
-};
 use terrain::chunks::Aabb;
 use terrain::culling::Frustum;
 use terrain::heightfield::{HeightField, TerrainSettings};
 use terrain::{KEEP_ALL, SKY, Sun, TerrainData, TerrainRenderer};
 
+/// One device for every test of the chapter that draws, with the plain's
+/// needs (`gpu_needs`: chapter 03's, and indirect draws for the
+/// `multi-draw` view): the terrain and the rocks are made once on it and
+/// shared.
+pub(crate) fn test_gpu() -> &'static Gpu {
+    static GPU: std::sync::OnceLock<Gpu> = std::sync::OnceLock::new();
+    GPU.get_or_init(|| Gpu::headless(crate::gpu_needs()).expect("an adapter (lavapipe will do)"))
+}
+
 #[test]
-fn exercise_1_one_call_per_rock_draws_the_same_picture() {
-    let gpu = crate::plain_gpu();
+fn one_draw_exercise_1_one_call_per_rock_draws_the_same_picture() {
+    let gpu = test_gpu();
     let target = Target { format: OFFSCREEN_FORMAT, width: 320, height: 180, samples: 1 };
     let mut chapter: InstancingChapter = common::chapter::create(gpu, target, &Default::default()).unwrap();
     let mut picture = |view: &str| {
@@ -82,7 +95,7 @@ fn tip(v: vec3<f32>, angle: f32) -> vec3<f32> {
 // ANCHOR_END: tilted_wgsl
 
 #[test]
-fn exercise_2_a_tilted_rock_tilts_its_normal_by_the_same_rotation() {
+fn one_draw_exercise_2_a_tilted_rock_tilts_its_normal_by_the_same_rotation() {
     let field = HeightField::generate(TerrainSettings { chunks_per_side: 16, ..Default::default() });
     let (rocks, mesh) = (scatter(&field, 200, 5), rock_mesh(5));
     let (mut worst_right, mut worst_forgotten) = (0.0f32, 0.0f32);
@@ -206,8 +219,8 @@ fn varied_rocks(kinds: u32, rocks: u32) -> Vec<(MeshData, Range<u32>)> {
 // ANCHOR_END: variety
 
 #[test]
-fn exercise_3_four_rock_meshes_cost_three_more_calls() {
-    let gpu = crate::plain_gpu();
+fn one_draw_exercise_3_four_rock_meshes_cost_three_more_calls() {
+    let gpu = test_gpu();
     let lab = RockLab::new(gpu);
     let rocks = scatter(lab.terrain.field(), 20_000, 5);
     let varied = varied_rocks(4, rocks.len() as u32);
@@ -226,10 +239,10 @@ fn exercise_3_four_rock_meshes_cost_three_more_calls() {
 }
 
 // ANCHOR: near_and_far
-/// Exercise 4: the runs the chapter draws, split by distance: the groups
-/// whose box comes nearer than `near` metres to the eye keep the full rock,
-/// the others are drawn with a coarse one. Each half is a list of runs of
-/// its own, one instanced call each, as before.
+/// Exercise 1 of the chunk lesson: the runs the chapter draws, split by
+/// distance: the groups whose box comes nearer than `near` metres to the
+/// eye keep the full rock, the others are drawn with a coarse one. Each
+/// half is a list of runs of its own, one instanced call each, as before.
 fn near_and_far(groups: &[RockGroup], count: u32, frustum: &Frustum, eye: Vec3, near: f32) -> (RockRuns, RockRuns) {
     // The nearest point of a box to the eye is the eye clamped into it.
     let distance = |b: &Aabb| eye.clamp(b.min, b.max).distance(eye);
@@ -240,8 +253,8 @@ fn near_and_far(groups: &[RockGroup], count: u32, frustum: &Frustum, eye: Vec3, 
 // ANCHOR_END: near_and_far
 
 #[test]
-fn exercise_4_far_rocks_with_a_coarse_mesh_save_three_fifths_of_the_vertices() {
-    let gpu = crate::plain_gpu();
+fn chunks_exercise_1_far_rocks_with_a_coarse_mesh_save_three_fifths_of_the_vertices() {
+    let gpu = test_gpu();
     let target = Target { format: OFFSCREEN_FORMAT, width: 320, height: 180, samples: 1 };
     let chapter: InstancingChapter = common::chapter::create(gpu, target, &Default::default()).unwrap();
     // The default view's camera, with its far plane in the haze.
@@ -266,7 +279,147 @@ fn exercise_4_far_rocks_with_a_coarse_mesh_save_three_fifths_of_the_vertices() {
     // every rock is far, and 36 of its 60 vertices go.
     assert!(near.rocks * 20 < all.rocks);
     assert!((58.0..60.0).contains(&saved), "{saved}");
-    // The figures page 05's solution gives.
+    // The figures the lesson's solution gives.
     assert_eq!((all.rocks, near.rocks, before, after), (276_571, 6_279, 16_594_260, 6_863_748));
     assert_eq!((near.runs.len(), far.runs.len()), (14, 776));
+}
+
+/// The camera of the by-hand test (`culling_checks::BY_HAND`): at the
+/// origin looking down −z, 60° high, a square picture 600 pixels high,
+/// the far plane at 600 m, nothing clipped.
+fn by_hand_picture() -> Picture {
+    let camera = Camera {
+        position: Vec3::ZERO,
+        yaw: 0.0,
+        pitch: 0.0,
+        fov_y: 60f32.to_radians(),
+        aspect: 1.0,
+        near: 0.1,
+        far: 600.0,
+    };
+    Picture { camera, height: 600, clip: KEEP_ALL }
+}
+
+/// The list each rock of `rocks` (its centre, and its radius) lands in,
+/// culled by the chapter's compute pass from the by-hand camera with
+/// `grading`: the level, or `None` where the pass drops it.
+fn levels_of(rocks: &[([f32; 3], f32)], grading: Grading) -> Vec<Option<usize>> {
+    let gpu = test_gpu();
+    let device = &gpu.device;
+    let culling = RockCulling::new(gpu, [60, 24, 12]).unwrap();
+    // Each rock's own sphere is the unit sphere about where it stands, so
+    // its radius in the world is its scale.
+    let records: Vec<RockInstance> = (rocks.iter())
+        .map(|&(position, radius)| RockInstance { position, yaw: 0.7, scale: [radius; 3], shade: 0.5 })
+        .collect();
+    let buffer = device.create_buffer_init(&wgpu::util::BufferInitDescriptor {
+        label: Some("rocks placed by an exercise"),
+        contents: bytemuck::cast_slice(&records),
+        usage: wgpu::BufferUsages::STORAGE,
+    });
+    let group = culling.rocks_group(device, &buffer);
+    let mut lists = culling.lists(device, records.len() as u32);
+    let source = RockSource { group: &group, sphere: Vec4::new(0.0, 0.0, 0.0, 1.0), count: records.len() as u32 };
+    culling.aim(&gpu.queue, &lists, &by_hand_picture(), &source, grading);
+    let mut encoder = device.create_command_encoder(&Default::default());
+    culling.cull(gpu, &mut encoder, &PassTimer::off(), &mut lists, &source);
+    gpu.queue.submit([encoder.finish()]);
+    let kept = lists.lists_now(gpu);
+    (0..rocks.len() as u32).map(|index| kept.iter().position(|list| list.contains(&index))).collect()
+}
+
+// ANCHOR: right_edge
+/// Exercise 1 of the compute lesson: how far to the right of straight
+/// ahead the centre of a sphere of `radius`, `ahead` metres away, may lie
+/// and the sphere still be kept, where half the field of view across is
+/// `half_fov`. The side plane is at `ahead · tan(half_fov)`; a centre δ
+/// past it is δ · cos(half_fov) from the plane, kept while that is at
+/// most the radius.
+fn rightmost_kept(ahead: f32, radius: f32, half_fov: f32) -> f32 {
+    ahead * half_fov.tan() + radius / half_fov.cos()
+}
+// ANCHOR_END: right_edge
+
+#[test]
+fn compute_exercise_1_a_sphere_is_kept_to_1_155_m_past_the_side_plane() {
+    let half_fov = 30f32.to_radians();
+    assert!((100.0 * half_fov.tan() - 57.735).abs() < 1e-3, "the right plane, 100 m ahead");
+    let bound = rightmost_kept(100.0, 1.0, half_fov);
+    eprintln!("kept to x = {bound:.3} m");
+    assert!((bound - 58.890).abs() < 1e-3, "{bound}");
+    // The compute shader agrees, either side of the bound. Full detail: a
+    // rock in view is kept, whatever its size.
+    let levels = levels_of(&[([58.87, 0.0, -100.0], 1.0), ([58.91, 0.0, -100.0], 1.0)], Grading::FULL_DETAIL);
+    assert_eq!(levels, [Some(0), None], "58.87 m is kept, 58.91 m dropped");
+}
+
+// ANCHOR: list_regions
+/// Exercise 1 of the indirect lesson: where each level's list starts in a
+/// picture's buffer of lists, and the bytes of all three, for `capacity`
+/// rocks on a device whose storage offsets align to `alignment` bytes.
+fn list_regions(capacity: u32, alignment: u32) -> ([u64; 3], u64) {
+    let each = list_bytes(capacity, alignment);
+    ([0, each, 2 * each], 3 * each)
+}
+// ANCHOR_END: list_regions
+
+#[test]
+fn indirect_exercise_1_three_lists_of_62_500_rocks_take_750_336_bytes_at_256() {
+    // 62,500 × 4 = 250,000 bytes, 976.6 × 256: rounded up to 977 × 256.
+    let (starts, total) = list_regions(62_500, 256);
+    assert_eq!((starts, total), ([0, 250_112, 500_224], 750_336));
+    assert_eq!(total - 3 * 62_500 * 4, 336, "112 bytes of padding a list");
+    // On the test's own device, a picture's buffers are the three lists at
+    // its alignment and a few hundred bytes more (the draws, the record,
+    // the copies read back late).
+    let device = &test_gpu().device;
+    let culling = RockCulling::new(test_gpu(), [60, 24, 12]).unwrap();
+    let alignment = device.limits().min_storage_buffer_offset_alignment;
+    let lists = culling.lists(device, 62_500).gpu_bytes();
+    let (_, ours) = list_regions(62_500, alignment);
+    eprintln!("alignment {alignment}: a picture holds {lists} bytes, {ours} of them the lists");
+    assert!(lists >= ours && lists - ours < 1024, "{lists} against {ours}");
+}
+
+// ANCHOR: dearer_full_rock
+/// Exercise 1 of the size lesson: the plain's grading, the full rock from
+/// 24 pixels across instead of 12.
+const DEARER_FULL_ROCK: Grading = Grading { full: 24.0, ..Grading::LOD };
+// ANCHOR_END: dearer_full_rock
+
+#[test]
+fn size_exercise_1_from_24_pixels_the_full_rock_ends_at_43_m() {
+    // 600 / (2 tan 30°) = 519.6 pixels a radian; radius 1 at d is 1,039.2 / d.
+    let per_radian = by_hand_picture().pixels_per_radian();
+    let across = |d: f32| 2.0 / d * per_radian;
+    assert!((2.0 * per_radian / 24.0 - 43.3).abs() < 0.05, "the full rock ends at 43.3 m");
+    assert!((across(50.0) - 20.8).abs() < 0.05 && across(50.0) > DEARER_FULL_ROCK.coarse);
+    // The compute pass, with the new grading and the old.
+    let rocks = [([0.0, 0.0, -43.0], 1.0), ([0.0, 0.0, -44.0], 1.0), ([0.0, 0.0, -50.0], 1.0)];
+    assert_eq!(levels_of(&rocks, DEARER_FULL_ROCK), [Some(0), Some(1), Some(1)]);
+    assert_eq!(levels_of(&rocks, Grading::LOD), [Some(0), Some(0), Some(0)], "all full rocks before");
+}
+
+// ANCHOR: five_million
+/// Exercise 1 of the advanced lesson: the grid of workgroups for `rocks`
+/// rocks where a dispatch holds at most `max_per_dimension` along a side,
+/// and how many invocations find no rock, by `cull_rocks`'s own index
+/// (`id.y * groups.x * WORKGROUP_SIZE + id.x`).
+fn idle_invocations(rocks: u32, max_per_dimension: u32) -> ((u32, u32), u64) {
+    let (x, y) = dispatch_size(rocks, max_per_dimension);
+    let row = x * WORKGROUP_SIZE;
+    let indices = (0..y).flat_map(|id_y| (0..row).map(move |id_x| id_y * row + id_x));
+    ((x, y), indices.filter(|&index| index >= rocks).count() as u64)
+}
+// ANCHOR_END: five_million
+
+#[test]
+fn limits_exercise_1_five_million_rocks_take_two_rows_mostly_idle() {
+    // 5,000,000 / 64 = 78,125 workgroups: more than 65,535, so two rows.
+    let ((x, y), idle) = idle_invocations(5_000_000, 65_535);
+    assert_eq!((x, y), (65_535, 2));
+    assert_eq!(u64::from(x * y) * 64, 8_388_480, "invocations run");
+    assert_eq!(idle, 3_388_480);
+    // A grid near square, 280 × 280 workgroups, would leave 17,600 idle.
+    assert_eq!(280 * 280 * 64 - 5_000_000, 17_600);
 }
