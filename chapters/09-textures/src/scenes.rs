@@ -1,7 +1,8 @@
 //! What the chapter draws, as data: chapter 08's city with textures (its
 //! pieces baked into one model, texture coordinates scaled so every
 //! texture keeps its size in metres), the stage a model stands on, and the
-//! sampling lab's endless checkerboard.
+//! sampling lab's endless checkerboard; and which of these sets a camera
+//! is in.
 
 use std::path::PathBuf;
 
@@ -12,6 +13,17 @@ use lighting::lights::{Light, LightKind};
 
 use crate::mesh::{MaterialDesc, ModelData};
 use crate::tangents::triangle_tangents;
+
+/// Which set the camera is in: each of the sets below is one.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Scene {
+    /// Chapter 08's city, textured, with car models and the tower.
+    City,
+    /// A model on a stage, with a brick wall and a row of primitives.
+    Stage,
+    /// A checkerboard floor to the horizon, for comparing samplers.
+    Lab,
+}
 
 // ANCHOR: texel_density
 /// The city's textures and how many metres one repeat of each covers: a

@@ -1,20 +1,24 @@
-//! Worked solutions to the exercises on chapter 09's page. Each makes the
-//! change its exercise asks for and asserts the figure the page's solution
+//! Worked solutions to the exercises of chapter 09's lessons, in the
+//! lessons' order, each test named after its lesson. Each makes the change
+//! its exercise asks for and asserts the figure the lesson's solution
 //! states, so that the solutions are built and checked with the chapter.
 
 use std::collections::HashMap;
 use std::path::Path;
 
-use common::glam::{Vec2, Vec3};
+use common::glam::{Mat4, Vec2, Vec3};
 use common::headless::read_level_bytes;
 use common::image::RgbaImage;
 use common::texture::ColorSpace;
 use common::{Camera, Chapter, Gpu, MeshData, ShaderFile, primitives, shader, wgpu};
 use lighting::aerial_camera;
-use lighting::city::{City, Material};
+use lighting::city::{City, Material, Shape};
+use lighting::lights::Light;
 use textures::materials::{Uploader, upload};
 use textures::mipmaps::{MipMaker, box_filter_srgb};
 use textures::obj::smooth_normals;
+use textures::scenes::{stage_lights, stage_placement, world_uvs};
+use textures::tangents::{triangle_tangents, vertex_tangents};
 use textures::{CameraPreset, TexturesChapter};
 
 /// `file` with `edits` made to the text of `path` (the file itself or a
@@ -41,8 +45,49 @@ fn pixel_metres(distance: f32) -> f32 {
     distance * 2.0 * 30f32.to_radians().tan() / 720.0
 }
 
+// Lesson 1: texture coordinates and texel density.
+
+// ANCHOR: round_tower
+/// Texture coordinates, exercise 1: a round tower `diameter` metres across
+/// (chapter 08's 24-sided cylinder, 30 m tall) clad in concrete, one repeat
+/// per 4 m. Returns how many repeats go round it (the largest u on its
+/// side, where the seam closes) and how wide one is (the length of the
+/// side's top ring of vertices over that).
+fn round_tower(diameter: f32) -> (f32, f32) {
+    let cylinder = Shape::Cylinder.mesh();
+    let model = Mat4::from_scale(Vec3::new(diameter, 30.0, diameter));
+    let uvs = world_uvs(&cylinder, model, Shape::Cylinder, 4.0);
+    let side: Vec<(Vec3, Vec2)> = cylinder
+        .vertices
+        .iter()
+        .zip(&uvs)
+        .filter(|(v, _)| v.normal[1] == 0.0)
+        .map(|(v, uv)| (model.transform_point3(v.position.into()), *uv))
+        .collect();
+    let repeats = side.iter().map(|(_, uv)| uv.x).fold(0.0, f32::max);
+    let mut top: Vec<(Vec3, Vec2)> = side.into_iter().filter(|(p, _)| p.y > 0.0).collect();
+    top.sort_by(|a, b| a.1.x.total_cmp(&b.1.x));
+    let round: f32 = top.windows(2).map(|pair| pair[0].0.distance(pair[1].0)).sum();
+    (repeats, round / repeats)
+}
+// ANCHOR_END: round_tower
+
+#[test]
+fn coordinates_exercise_1_a_round_tower_takes_a_whole_number_of_repeats() {
+    let (repeats_12, width_12) = round_tower(12.0);
+    let (repeats_10, width_10) = round_tower(10.0);
+    println!(
+        "12 m across: {repeats_12} repeats of {width_12:.3} m; 10 m across: {repeats_10} repeats of {width_10:.3} m"
+    );
+    // Worked by hand: 24 chords of 2 r sin 7.5°, over 4 m, rounded.
+    assert_eq!((repeats_12, repeats_10), (9.0, 8.0));
+    assert!((width_12 - 4.18).abs() < 0.005 && (width_10 - 3.92).abs() < 0.005);
+}
+
+// Lesson 2: sampling, aliasing and mipmaps.
+
 // ANCHOR: brick_repeat
-/// Exercise 1: brick texels across one pixel of a wall `distance` metres
+/// Sampling, exercise 1: brick texels across one pixel of a wall `distance` metres
 /// away, facing the camera, when one repeat of the 256-texel brick covers
 /// `repeat` metres; and the mip level a trilinear sampler then reads.
 fn brick_footprint(distance: f32, repeat: f32) -> (f32, f32) {
@@ -89,7 +134,7 @@ fn brick_contrast(level: u32) -> f32 {
 // ANCHOR_END: brick_repeat
 
 #[test]
-fn exercise_1_bricks_every_3_m_are_huge_in_the_street_and_nearly_flat_from_the_air() {
+fn sampling_exercise_1_bricks_every_3_m_are_huge_in_the_street_and_nearly_flat_from_the_air() {
     // In the street, a wall across the 12 m road; from the air, the aerial
     // camera's distance to the middle one of the city's brick buildings.
     let street = 10.0;
@@ -110,7 +155,7 @@ fn exercise_1_bricks_every_3_m_are_huge_in_the_street_and_nearly_flat_from_the_a
 /// Metres from the aerial camera to the middle one of the city's brick buildings.
 const AIR_TO_BRICK: f32 = 321.0;
 // ANCHOR: lod_clamp
-/// Exercise 2: the trilinear sampler with its finest level clamped to 2.
+/// Sampling, exercise 2: the trilinear sampler with its finest level clamped to 2.
 fn clamped_to_level_2() -> wgpu::SamplerDescriptor<'static> {
     wgpu::SamplerDescriptor { lod_min_clamp: 2.0, ..textures::materials::SamplerMode::Mipmaps.descriptor(false) }
 }
@@ -140,7 +185,7 @@ fn lab_levels() -> Vec<(f32, f32)> {
 // ANCHOR_END: lod_clamp
 
 #[test]
-fn exercise_2_a_clamped_finest_level_blurs_everything_near() {
+fn sampling_exercise_2_a_clamped_finest_level_blurs_everything_near() {
     assert_eq!(clamped_to_level_2().lod_min_clamp, 2.0);
     let levels = lab_levels();
     // The farthest row that still wants a level below 2, and the nearest row's level.
@@ -159,227 +204,10 @@ fn exercise_2_a_clamped_finest_level_blurs_everything_near() {
 const LEVEL_2_REACH: f32 = 11.6;
 const LEVEL_2_ROWS: f32 = 304.0;
 
-// ANCHOR: toksvig
-/// Exercise 3: mipmap.wgsl keeps the length of the averaged normal in
-/// alpha. It reads the four texels itself, and weights each direction by
-/// the length stored with it, so that every level's length is that of the
-/// average of all the base texels under it.
-const KEEP_LENGTH: (&str, &str) = (
-    "    let average = textureSampleLevel(above, bilinear, in.uv, 0.0).xyz * 2.0 - 1.0;
-    let n = normalize(select(vec3<f32>(0.0, 0.0, 1.0), average, length(average) > 1e-4));
-    return vec4<f32>(n * 0.5 + 0.5, 1.0);",
-    "    let corner = vec2<i32>(in.clip_position.xy) * 2;
-    var sum = vec3<f32>(0.0);
-    for (var i = 0; i < 4; i++) {
-        let texel = textureLoad(above, corner + vec2<i32>(i % 2, i / 2), 0);
-        sum += normalize(texel.xyz * 2.0 - 1.0) * texel.a;
-    }
-    let average = sum / 4.0;
-    let n = normalize(select(vec3<f32>(0.0, 0.0, 1.0), average, length(average) > 1e-4));
-    return vec4<f32>(n * 0.5 + 0.5, length(average));",
-);
-
-/// …and textured.wgsl lowers the shininess by Toksvig's factor,
-/// |N̄| / (|N̄| + s (1 − |N̄|)): the shorter the average, the wider the highlight.
-const TOKSVIG: [(&str, &str); 4] = [
-    (
-        "    var n = frame3.n;\n    if material.flags.x == 1u {",
-        "    var n = frame3.n;\n    var shininess = material.shininess;\n    if material.flags.x == 1u {",
-    ),
-    (
-        "fn shade(in: Varyings, n: vec3<f32>, albedo_texel: vec4<f32>) -> vec4<f32> {",
-        "fn shade(in: Varyings, n: vec3<f32>, albedo_texel: vec4<f32>) -> vec4<f32> {
-    return shade_with(in, n, albedo_texel, material.shininess);
-}
-
-fn toksvig(average_length: f32, shininess: f32) -> f32 {
-    return average_length / (average_length + shininess * (1.0 - average_length)) * shininess;
-}
-
-fn shade_with(in: Varyings, n: vec3<f32>, albedo_texel: vec4<f32>, shininess: f32) -> vec4<f32> {",
-    ),
-    (
-        "Surface(albedo, material.specular, material.shininess, physical.x, physical.y)",
-        "Surface(albedo, material.specular, shininess, physical.x, physical.y)",
-    ),
-    (
-        "        let texel = textureSample(normal_map, surface_sampler, in.uv).xyz;
-        n = mapped_normal(frame3, texel, options.flip_green == 1u);
-    }
-    return shade(in, n, textureSample(albedo_map, surface_sampler, in.uv));",
-        "        let texel = textureSample(normal_map, surface_sampler, in.uv);
-        n = mapped_normal(frame3, texel.xyz, options.flip_green == 1u);
-        shininess = toksvig(texel.a, shininess);
-    }
-    return shade_with(in, n, textureSample(albedo_map, surface_sampler, in.uv), shininess);",
-    ),
-];
-
-/// The mean length of the averaged normal at each mip level of a normal
-/// map, each level's texels the average of the base texels under them.
-fn averaged_lengths(path: &str) -> Vec<f32> {
-    let image = picture(path);
-    let mut level: Vec<Vec3> = image.pixels().map(|t| direction(t).normalize()).collect();
-    let mut size = image.width() as usize;
-    let mut lengths = Vec::new();
-    while size >= 1 {
-        lengths.push(level.iter().map(|v| v.length()).sum::<f32>() / level.len() as f32);
-        if size == 1 {
-            break;
-        }
-        let half = size / 2;
-        level = (0..half * half)
-            .map(|i| {
-                let (x, y) = (i % half * 2, i / half * 2);
-                (level[y * size + x]
-                    + level[y * size + x + 1]
-                    + level[(y + 1) * size + x]
-                    + level[(y + 1) * size + x + 1])
-                    / 4.0
-            })
-            .collect();
-        size = half;
-    }
-    lengths
-}
-
-fn toksvig_shininess(length: f32, shininess: f32) -> f32 {
-    length / (length + shininess * (1.0 - length)) * shininess
-}
-// ANCHOR_END: toksvig
-
-#[test]
-fn exercise_3_toksvig_widens_the_metal_highlight_from_afar() {
-    compiles_with(
-        shader!("textures/mipmap.wgsl", imports: ["common/fullscreen.wgsl"]),
-        "textures/mipmap.wgsl",
-        &[KEEP_LENGTH],
-    );
-    compiles_with(
-        shader!("textures/textured.wgsl", imports: ["lighting/brdf.wgsl", "lighting/sky_light.wgsl", "lighting/lights.wgsl", "textures/surface.wgsl"]),
-        "textures/textured.wgsl",
-        &TOKSVIG,
-    );
-    let lengths = averaged_lengths("textures/metal/normal.png");
-    let expected = [1.000, 0.989, 0.978, 0.957, 0.949, 0.946, 0.944, 0.943, 0.943];
-    assert!(lengths.iter().zip(expected).all(|(l, e)| (l - e).abs() < 0.001), "{lengths:?}");
-    let shininess: Vec<f32> = lengths.iter().map(|l| toksvig_shininess(*l, 64.0)).collect();
-    println!("metal normal map, mean |N̄| by level: {lengths:.3?}; Toksvig's shininess from 64: {shininess:.1?}");
-    // The torus: 1.6 m across, the metal twice round it (256 texels per
-    // 2.5 m of its outer side): from the whole-stage camera, 11 m away, and
-    // from 40 m, the level a pixel reads.
-    let level = |distance: f32| (256.0 / 2.5 * pixel_metres(distance)).log2().max(0.0);
-    println!("the torus reads level {:.1} from 11 m and {:.1} from 40 m", level(11.0), level(40.0));
-    let at = |distance: f32| shininess[level(distance).round() as usize];
-    assert!((at(11.0) - 37.9).abs() < 0.1 && (at(40.0) - TOKSVIG_AT_40_M).abs() < 0.1, "{}", at(40.0));
-}
-
-/// Toksvig's shininess for the metal (64) at the level the torus reads from 40 m.
-const TOKSVIG_AT_40_M: f32 = 16.6;
-
-// ANCHOR: green
-/// Exercise 4: a normal map made the other way (DirectX's, green pointing
-/// down the picture): the project's map with its green flipped, texel by texel.
-fn flip_green(map: &RgbaImage) -> RgbaImage {
-    let mut flipped = map.clone();
-    flipped.pixels_mut().for_each(|p| p[1] = 255 - p[1]);
-    flipped
-}
-
-/// Lambert's light on every texel of `map` (tangent space: x along the
-/// picture, y up it, z out) from direction `light`, reading green as
-/// `surface.wgsl` does, flipped if the overlay's checkbox is on.
-fn lit(map: &RgbaImage, light: Vec3, checkbox: bool) -> Vec<f32> {
-    map.pixels()
-        .map(|t| {
-            let mut n = direction(t);
-            if checkbox {
-                n.y = -n.y;
-            }
-            n.normalize().dot(light.normalize()).max(0.0)
-        })
-        .collect()
-}
-// ANCHOR_END: green
-
-#[test]
-fn exercise_4_a_directx_map_is_lit_from_below_until_the_checkbox_flips_it() {
-    let brick = picture("textures/brick/normal.png");
-    let directx = flip_green(&brick);
-    let from_above = Vec3::new(0.0, 1.0, 1.0);
-    let from_below = Vec3::new(0.0, -1.0, 1.0);
-    // Read as the project's maps are, the DirectX map is the brick lit from below…
-    let wrong = lit(&directx, from_above, false);
-    let differs = |a: &[f32], b: &[f32]| a.iter().zip(b).map(|(a, b)| (a - b).abs()).fold(0.0, f32::max);
-    assert!(differs(&wrong, &lit(&brick, from_below, false)) < 1e-6);
-    // …and with the checkbox, the brick lit from above (to the last bits of rounding).
-    let right = lit(&brick, from_above, false);
-    assert!(differs(&lit(&directx, from_above, true), &right) < 1e-6);
-    // The bricks' upper edges (texels tilted up the picture) go dark.
-    let tilts: Vec<f32> = brick.pixels().map(|t| direction(t).y).collect();
-    let upper: Vec<usize> = (0..tilts.len()).filter(|&i| tilts[i] > 0.3).collect();
-    let mean = |values: &[f32]| upper.iter().map(|&i| values[i]).sum::<f32>() / upper.len() as f32;
-    println!("the upper edges' light: {:.2} read right, {:.2} read the wrong way up", mean(&right), mean(&wrong));
-    assert!((mean(&right) - UPPER_EDGES_RIGHT).abs() < 0.02 && (mean(&wrong) - UPPER_EDGES_WRONG).abs() < 0.02);
-}
-
-/// Lambert's light on the brick's upper edges, from 45° above: read right, and the wrong way up.
-const UPPER_EDGES_RIGHT: f32 = 0.95;
-const UPPER_EDGES_WRONG: f32 = 0.0;
-
-// ANCHOR: smoothing
-/// An edge, by the positions of its two ends (to a tenth of a millimetre).
-type Edge = [[i64; 3]; 2];
-/// A face along an edge: its own normal, and the normals it gives the edge's ends.
-type FaceAlong = (Vec3, [Vec3; 2]);
-
-/// Exercise 5: a mesh's edges between faces that are not in one plane,
-/// and how many of them stay sharp once `smooth_normals` has given it
-/// normals with `max_angle` degrees as the limit (an edge is sharp when
-/// its two faces give its ends different normals).
-fn sharp_edges(mesh: &MeshData, max_angle: f32) -> (usize, usize) {
-    let (smooth, _) = smooth_normals(mesh, max_angle);
-    let key = |i: u32| smooth.vertices[i as usize].position.map(|c| (c * 1e4).round() as i64);
-    let mut edges: HashMap<Edge, Vec<FaceAlong>> = HashMap::new();
-    for t in smooth.indices.chunks_exact(3) {
-        let p = |k: usize| Vec3::from(smooth.vertices[t[k] as usize].position);
-        let face = (p(1) - p(0)).cross(p(2) - p(0)).normalize();
-        for k in 0..3 {
-            let (a, b) = (t[k], t[(k + 1) % 3]);
-            let (ka, kb) = (key(a), key(b));
-            let normals = |i: u32| Vec3::from(smooth.vertices[i as usize].normal);
-            let (entry, ends) =
-                if ka < kb { ([ka, kb], [normals(a), normals(b)]) } else { ([kb, ka], [normals(b), normals(a)]) };
-            edges.entry(entry).or_default().push((face, ends));
-        }
-    }
-    let creases: Vec<_> = edges.values().filter(|f| f.len() == 2 && f[0].0.dot(f[1].0) < 0.9999).collect();
-    let sharp = creases.iter().filter(|f| f[0].1.iter().zip(&f[1].1).any(|(a, b)| a.distance(*b) > 1e-4)).count();
-    (sharp, creases.len())
-}
-// ANCHOR_END: smoothing
-
-#[test]
-fn exercise_5_the_smoothing_angle_decides_which_edges_stay_sharp() {
-    let shapes = [
-        ("sphere", primitives::uv_sphere(16, 8)),
-        ("cylinder", primitives::cylinder(16)),
-        ("cube", primitives::cube()),
-    ];
-    let mut found = Vec::new();
-    for (name, mesh) in &shapes {
-        let counts: Vec<(usize, usize)> = [20.0, 60.0, 90.0].iter().map(|a| sharp_edges(mesh, *a)).collect();
-        println!("{name}: sharp edges of creased ones at 20°, 60°, 90°: {counts:?}");
-        found.push(counts.iter().map(|(sharp, _)| *sharp).collect::<Vec<_>>());
-    }
-    assert_eq!(found, SHARP_EDGES);
-}
-
-/// Sharp edges of the sphere, cylinder and cube at 20°, 60° and 90°.
-const SHARP_EDGES: [[usize; 3]; 3] = [[176, 0, 0], [48, 32, 0], [12, 12, 0]];
+// Lesson 3: sRGB, which numbers are light.
 
 // ANCHOR: compute_mips
-/// Exercise 6: a mip level by a compute shader, written to a storage
+/// sRGB, exercise 1: a mip level by a compute shader, written to a storage
 /// texture. Normal maps: average, normalise, store. Colour: the texels are
 /// read through an sRGB view (decoded to light), averaged, encoded by the
 /// shader, and stored through a plain `Rgba8Unorm` view of the same bytes,
@@ -481,7 +309,7 @@ fn level_1_by_compute(gpu: &Gpu, image: &RgbaImage, entry: &str, srgb: bool) -> 
 // ANCHOR_END: compute_mips
 
 #[test]
-fn exercise_6_compute_mips_match_the_render_passes_and_srgb_needs_a_plain_view() {
+fn srgb_exercise_1_compute_mips_match_the_render_passes_and_srgb_needs_a_plain_view() {
     let gpu = Gpu::headless(TexturesChapter::gpu_needs()).unwrap();
     // No sRGB format can be a storage texture, here or in WebGPU.
     let srgb = gpu.adapter.get_texture_format_features(wgpu::TextureFormat::Rgba8UnormSrgb);
@@ -507,3 +335,350 @@ fn exercise_6_compute_mips_match_the_render_passes_and_srgb_needs_a_plain_view()
     let by_compute = level_1_by_compute(&gpu, &albedo, "cs_colour", true);
     assert!(reference.as_raw().iter().zip(&by_compute).all(|(a, b)| a.abs_diff(*b) <= 1));
 }
+
+// Lesson 4: models from OBJ and MTL.
+
+// ANCHOR: smoothing
+/// An edge, by the positions of its two ends (to a tenth of a millimetre).
+type Edge = [[i64; 3]; 2];
+/// A face along an edge: its own normal, and the normals it gives the edge's ends.
+type FaceAlong = (Vec3, [Vec3; 2]);
+
+/// Models, exercise 1: a mesh's edges between faces that are not in one plane,
+/// and how many of them stay sharp once `smooth_normals` has given it
+/// normals with `max_angle` degrees as the limit (an edge is sharp when
+/// its two faces give its ends different normals).
+fn sharp_edges(mesh: &MeshData, max_angle: f32) -> (usize, usize) {
+    let (smooth, _) = smooth_normals(mesh, max_angle);
+    let key = |i: u32| smooth.vertices[i as usize].position.map(|c| (c * 1e4).round() as i64);
+    let mut edges: HashMap<Edge, Vec<FaceAlong>> = HashMap::new();
+    for t in smooth.indices.chunks_exact(3) {
+        let p = |k: usize| Vec3::from(smooth.vertices[t[k] as usize].position);
+        let face = (p(1) - p(0)).cross(p(2) - p(0)).normalize();
+        for k in 0..3 {
+            let (a, b) = (t[k], t[(k + 1) % 3]);
+            let (ka, kb) = (key(a), key(b));
+            let normals = |i: u32| Vec3::from(smooth.vertices[i as usize].normal);
+            let (entry, ends) =
+                if ka < kb { ([ka, kb], [normals(a), normals(b)]) } else { ([kb, ka], [normals(b), normals(a)]) };
+            edges.entry(entry).or_default().push((face, ends));
+        }
+    }
+    let creases: Vec<_> = edges.values().filter(|f| f.len() == 2 && f[0].0.dot(f[1].0) < 0.9999).collect();
+    let sharp = creases.iter().filter(|f| f[0].1.iter().zip(&f[1].1).any(|(a, b)| a.distance(*b) > 1e-4)).count();
+    (sharp, creases.len())
+}
+// ANCHOR_END: smoothing
+
+#[test]
+fn models_exercise_1_the_smoothing_angle_decides_which_edges_stay_sharp() {
+    let shapes = [
+        ("sphere", primitives::uv_sphere(16, 8)),
+        ("cylinder", primitives::cylinder(16)),
+        ("cube", primitives::cube()),
+    ];
+    let mut found = Vec::new();
+    for (name, mesh) in &shapes {
+        let counts: Vec<(usize, usize)> = [20.0, 60.0, 90.0].iter().map(|a| sharp_edges(mesh, *a)).collect();
+        println!("{name}: sharp edges of creased ones at 20°, 60°, 90°: {counts:?}");
+        found.push(counts.iter().map(|(sharp, _)| *sharp).collect::<Vec<_>>());
+    }
+    assert_eq!(found, SHARP_EDGES);
+}
+
+/// Sharp edges of the sphere, cylinder and cube at 20°, 60° and 90°.
+const SHARP_EDGES: [[usize; 3]; 3] = [[176, 0, 0], [48, 32, 0], [12, 12, 0]];
+
+// Lesson 5: bringing your own model.
+
+// ANCHOR: centimetres
+/// Bringing your own model, exercise 1: a box the size of a car, 450 cm
+/// long, 150 cm high and 180 cm wide, as an OBJ in centimetres (no normals,
+/// no texture coordinates, quads), or in metres when `unit` is 1: the scale
+/// the stage gives it, and the length and height it stands on the stage.
+fn car_sized_box(unit: f32) -> (f32, f32, f32) {
+    let (length, height, width) = (4.5 / unit, 1.5 / unit, 1.8 / unit);
+    let mut text = String::new();
+    for i in 0..8 {
+        let corner = |bit: usize, size: f32| if i >> bit & 1 == 1 { size } else { 0.0 };
+        text += &format!("v {} {} {}\n", corner(0, length), corner(1, height), corner(2, width));
+    }
+    text += "f 1 3 4 2\nf 5 6 8 7\nf 1 2 6 5\nf 3 7 8 4\nf 1 5 7 3\nf 2 4 8 6\n";
+    let read = |_: &Path| -> Result<Vec<u8>, common::files::ReadError> { Ok(text.as_bytes().to_vec()) };
+    let loaded = textures::obj::load(Path::new("car-sized box.obj"), &read).unwrap();
+    let (placement, scale) = stage_placement(loaded.model.bounds());
+    let placed = |p: Vec3| placement.transform_point3(p);
+    let on_stage = placed(Vec3::new(length, 0.0, 0.0)).distance(placed(Vec3::ZERO));
+    let tall = placed(Vec3::new(0.0, height, 0.0)).y - placed(Vec3::ZERO).y;
+    (scale, on_stage, tall)
+}
+// ANCHOR_END: centimetres
+
+#[test]
+fn your_model_exercise_1_a_model_in_centimetres_stands_as_tall_as_one_in_metres() {
+    let (scale_cm, length_cm, height_cm) = car_sized_box(0.01);
+    let (scale_m, length_m, height_m) = car_sized_box(1.0);
+    println!(
+        "in centimetres: scaled ×{scale_cm:.6}, {length_cm:.3} m long, {height_cm:.3} m high; \
+         in metres: ×{scale_m:.4}, {length_m:.3} m long, {height_m:.3} m high"
+    );
+    // Worked by hand: the diagonal is √(450² + 150² + 180²) = 507.35 cm.
+    assert!((scale_cm - 0.009855).abs() < 1e-6 && (scale_m - 0.9855).abs() < 1e-4);
+    for (length, height) in [(length_cm, height_cm), (length_m, height_m)] {
+        assert!((length - 4.435).abs() < 0.001 && (height - 1.478).abs() < 0.001);
+    }
+}
+
+// Lesson 6: normal maps, tangent space and the TBN matrix.
+
+// ANCHOR: wall_frame
+/// Normal maps, exercise 1: a triangle of a wall facing +z, corners at
+/// (0, 0, 0), (2, 0, 0) and (0, 1, 0) with texture coordinates (0, 1),
+/// (±0.5, 1) and (0, 0.75), mirrored in u when `mirrored`: T and B of the
+/// triangle, and the handedness w its corners get.
+fn wall_frame(mirrored: bool) -> (Vec3, Vec3, f32) {
+    let corners = [Vec3::ZERO, Vec3::new(2.0, 0.0, 0.0), Vec3::new(0.0, 1.0, 0.0)];
+    let u = if mirrored { -0.5 } else { 0.5 };
+    let uvs = [Vec2::new(0.0, 1.0), Vec2::new(u, 1.0), Vec2::new(0.0, 0.75)];
+    let (t, b) = triangle_tangents(corners, uvs).unwrap();
+    let w = vertex_tangents(&corners, &[Vec3::Z; 3], &uvs, &[0, 1, 2])[0].w;
+    (t, b, w)
+}
+// ANCHOR_END: wall_frame
+
+#[test]
+fn normal_maps_exercise_1_a_mirrored_texture_turns_the_tangent_and_its_handedness() {
+    let (t, b, w) = wall_frame(false);
+    let (t_mirrored, b_mirrored, w_mirrored) = wall_frame(true);
+    println!("T {t}, B {b}, w {w}; mirrored: T {t_mirrored}, B {b_mirrored}, w {w_mirrored}");
+    // Worked by hand from T = (Δv₂ e₁ − Δv₁ e₂) / d and B = (Δu₁ e₂ − Δu₂ e₁) / d.
+    assert!(t.abs_diff_eq(Vec3::new(4.0, 0.0, 0.0), 1e-5) && b.abs_diff_eq(Vec3::new(0.0, -4.0, 0.0), 1e-5));
+    assert!(t_mirrored.abs_diff_eq(Vec3::new(-4.0, 0.0, 0.0), 1e-5) && b_mirrored.abs_diff_eq(b, 1e-5));
+    assert_eq!((w, w_mirrored), (1.0, -1.0));
+    // Up the picture, w (N × T), is up the wall either way.
+    for (t, w) in [(t, w), (t_mirrored, w_mirrored)] {
+        assert!((Vec3::Z.cross(t.normalize()) * w).abs_diff_eq(Vec3::Y, 1e-6));
+    }
+}
+
+// Lesson 7: flat, Gouraud and Phong, textured.
+
+// ANCHOR: lamp_pool
+/// Flat, Gouraud and Phong, exercise 1: how much of `lamp`'s light reaches
+/// the floor at `point`, per unit of its colour: chapter 08's falloff times
+/// cos θ, the floor's normal being +y. What lighting per fragment gives.
+fn lamp_on_floor(lamp: &Light, point: Vec3) -> f32 {
+    let cos = (lamp.position - point).normalize().y.max(0.0);
+    lamp.reaching(point).x / lamp.colour.x * cos
+}
+
+/// What lighting per vertex gives at `point` on the stage's floor
+/// (`common`'s plane of 8 × 8 quads, scaled to 40 m): the light at the
+/// corners of the triangle under it, blended by its barycentric weights.
+fn lamp_on_floor_per_vertex(lamp: &Light, point: Vec3) -> f32 {
+    let floor = primitives::plane(8);
+    let corner = |i: u32| Vec3::from(floor.vertices[i as usize].position) * Vec3::new(40.0, 1.0, 40.0);
+    // Twice the signed area of (p, q, r) seen from above.
+    let area = |p: Vec3, q: Vec3, r: Vec3| (q.x - p.x) * (r.z - p.z) - (r.x - p.x) * (q.z - p.z);
+    floor
+        .indices
+        .chunks_exact(3)
+        .find_map(|t| {
+            let [a, b, c] = [corner(t[0]), corner(t[1]), corner(t[2])];
+            let whole = area(a, b, c);
+            let weights = [area(point, b, c), area(a, point, c), area(a, b, point)].map(|w| w / whole);
+            weights.iter().all(|w| *w >= 0.0).then(|| {
+                weights[0] * lamp_on_floor(lamp, a)
+                    + weights[1] * lamp_on_floor(lamp, b)
+                    + weights[2] * lamp_on_floor(lamp, c)
+            })
+        })
+        .expect("the point is on the floor")
+}
+// ANCHOR_END: lamp_pool
+
+#[test]
+fn shading_exercise_1_per_vertex_the_lamps_pool_loses_half_its_peak() {
+    let warm = stage_lights()[0];
+    let under = Vec3::new(warm.position.x, 0.0, warm.position.z);
+    let (per_fragment, per_vertex) = (lamp_on_floor(&warm, under), lamp_on_floor_per_vertex(&warm, under));
+    let nearest_vertex = lamp_on_floor(&warm, Vec3::new(-5.0, 0.0, 0.0));
+    println!(
+        "under the lamp: {per_fragment:.4} per fragment, {per_vertex:.4} per vertex; \
+         at the nearest vertex, (−5, 0, 0): {nearest_vertex:.4}"
+    );
+    // Worked by hand: 3 m straight down; the corners 3.39, 5.61 and 4.64 m
+    // away, weighted 0.6, 0.1 and 0.3.
+    assert!((per_fragment - 0.0996).abs() < 0.0001 && (per_vertex - 0.0522).abs() < 0.0001);
+    assert!((nearest_vertex - 0.0703).abs() < 0.0001);
+}
+
+// Lesson 8 (advanced): green up, tangent space and face tangents.
+
+// ANCHOR: green
+/// Tangent frames, exercise 1: a normal map made the other way (DirectX's, green pointing
+/// down the picture): the project's map with its green flipped, texel by texel.
+fn flip_green(map: &RgbaImage) -> RgbaImage {
+    let mut flipped = map.clone();
+    flipped.pixels_mut().for_each(|p| p[1] = 255 - p[1]);
+    flipped
+}
+
+/// Lambert's light on every texel of `map` (tangent space: x along the
+/// picture, y up it, z out) from direction `light`, reading green as
+/// `surface.wgsl` does, flipped if the overlay's checkbox is on.
+fn lit(map: &RgbaImage, light: Vec3, checkbox: bool) -> Vec<f32> {
+    map.pixels()
+        .map(|t| {
+            let mut n = direction(t);
+            if checkbox {
+                n.y = -n.y;
+            }
+            n.normalize().dot(light.normalize()).max(0.0)
+        })
+        .collect()
+}
+// ANCHOR_END: green
+
+#[test]
+fn tangent_frames_exercise_1_a_directx_map_is_lit_from_below_until_the_checkbox_flips_it() {
+    let brick = picture("textures/brick/normal.png");
+    let directx = flip_green(&brick);
+    let from_above = Vec3::new(0.0, 1.0, 1.0);
+    let from_below = Vec3::new(0.0, -1.0, 1.0);
+    // Read as the project's maps are, the DirectX map is the brick lit from below…
+    let wrong = lit(&directx, from_above, false);
+    let differs = |a: &[f32], b: &[f32]| a.iter().zip(b).map(|(a, b)| (a - b).abs()).fold(0.0, f32::max);
+    assert!(differs(&wrong, &lit(&brick, from_below, false)) < 1e-6);
+    // …and with the checkbox, the brick lit from above (to the last bits of rounding).
+    let right = lit(&brick, from_above, false);
+    assert!(differs(&lit(&directx, from_above, true), &right) < 1e-6);
+    // The bricks' upper edges (texels tilted up the picture) go dark.
+    let tilts: Vec<f32> = brick.pixels().map(|t| direction(t).y).collect();
+    let upper: Vec<usize> = (0..tilts.len()).filter(|&i| tilts[i] > 0.3).collect();
+    let mean = |values: &[f32]| upper.iter().map(|&i| values[i]).sum::<f32>() / upper.len() as f32;
+    println!("the upper edges' light: {:.2} read right, {:.2} read the wrong way up", mean(&right), mean(&wrong));
+    assert!((mean(&right) - UPPER_EDGES_RIGHT).abs() < 0.02 && (mean(&wrong) - UPPER_EDGES_WRONG).abs() < 0.02);
+}
+
+/// Lambert's light on the brick's upper edges, from 45° above: read right, and the wrong way up.
+const UPPER_EDGES_RIGHT: f32 = 0.95;
+const UPPER_EDGES_WRONG: f32 = 0.0;
+
+// ANCHOR: toksvig
+/// Tangent frames, exercise 2: mipmap.wgsl keeps the length of the averaged normal in
+/// alpha. It reads the four texels itself, and weights each direction by
+/// the length stored with it, so that every level's length is that of the
+/// average of all the base texels under it.
+const KEEP_LENGTH: (&str, &str) = (
+    "    let average = textureSampleLevel(above, bilinear, in.uv, 0.0).xyz * 2.0 - 1.0;
+    let n = normalize(select(vec3<f32>(0.0, 0.0, 1.0), average, length(average) > 1e-4));
+    return vec4<f32>(n * 0.5 + 0.5, 1.0);",
+    "    let corner = vec2<i32>(in.clip_position.xy) * 2;
+    var sum = vec3<f32>(0.0);
+    for (var i = 0; i < 4; i++) {
+        let texel = textureLoad(above, corner + vec2<i32>(i % 2, i / 2), 0);
+        sum += normalize(texel.xyz * 2.0 - 1.0) * texel.a;
+    }
+    let average = sum / 4.0;
+    let n = normalize(select(vec3<f32>(0.0, 0.0, 1.0), average, length(average) > 1e-4));
+    return vec4<f32>(n * 0.5 + 0.5, length(average));",
+);
+
+/// …and textured.wgsl lowers the shininess by Toksvig's factor,
+/// |N̄| / (|N̄| + s (1 − |N̄|)): the shorter the average, the wider the highlight.
+const TOKSVIG: [(&str, &str); 4] = [
+    (
+        "    var n = frame3.n;\n    if material.flags.x == 1u {",
+        "    var n = frame3.n;\n    var shininess = material.shininess;\n    if material.flags.x == 1u {",
+    ),
+    (
+        "fn shade(in: Varyings, n: vec3<f32>, albedo_texel: vec4<f32>) -> vec4<f32> {",
+        "fn shade(in: Varyings, n: vec3<f32>, albedo_texel: vec4<f32>) -> vec4<f32> {
+    return shade_with(in, n, albedo_texel, material.shininess);
+}
+
+fn toksvig(average_length: f32, shininess: f32) -> f32 {
+    return average_length / (average_length + shininess * (1.0 - average_length)) * shininess;
+}
+
+fn shade_with(in: Varyings, n: vec3<f32>, albedo_texel: vec4<f32>, shininess: f32) -> vec4<f32> {",
+    ),
+    (
+        "Surface(albedo, material.specular, material.shininess, physical.x, physical.y)",
+        "Surface(albedo, material.specular, shininess, physical.x, physical.y)",
+    ),
+    (
+        "        let texel = textureSample(normal_map, surface_sampler, in.uv).xyz;
+        n = mapped_normal(frame3, texel, options.flip_green == 1u);
+    }
+    return shade(in, n, textureSample(albedo_map, surface_sampler, in.uv));",
+        "        let texel = textureSample(normal_map, surface_sampler, in.uv);
+        n = mapped_normal(frame3, texel.xyz, options.flip_green == 1u);
+        shininess = toksvig(texel.a, shininess);
+    }
+    return shade_with(in, n, textureSample(albedo_map, surface_sampler, in.uv), shininess);",
+    ),
+];
+
+/// The mean length of the averaged normal at each mip level of a normal
+/// map, each level's texels the average of the base texels under them.
+fn averaged_lengths(path: &str) -> Vec<f32> {
+    let image = picture(path);
+    let mut level: Vec<Vec3> = image.pixels().map(|t| direction(t).normalize()).collect();
+    let mut size = image.width() as usize;
+    let mut lengths = Vec::new();
+    while size >= 1 {
+        lengths.push(level.iter().map(|v| v.length()).sum::<f32>() / level.len() as f32);
+        if size == 1 {
+            break;
+        }
+        let half = size / 2;
+        level = (0..half * half)
+            .map(|i| {
+                let (x, y) = (i % half * 2, i / half * 2);
+                (level[y * size + x]
+                    + level[y * size + x + 1]
+                    + level[(y + 1) * size + x]
+                    + level[(y + 1) * size + x + 1])
+                    / 4.0
+            })
+            .collect();
+        size = half;
+    }
+    lengths
+}
+
+fn toksvig_shininess(length: f32, shininess: f32) -> f32 {
+    length / (length + shininess * (1.0 - length)) * shininess
+}
+// ANCHOR_END: toksvig
+
+#[test]
+fn tangent_frames_exercise_2_toksvig_widens_the_metal_highlight_from_afar() {
+    compiles_with(
+        shader!("textures/mipmap.wgsl", imports: ["common/fullscreen.wgsl"]),
+        "textures/mipmap.wgsl",
+        &[KEEP_LENGTH],
+    );
+    compiles_with(
+        shader!("textures/textured.wgsl", imports: ["lighting/brdf.wgsl", "lighting/sky_light.wgsl", "lighting/lights.wgsl", "textures/surface.wgsl"]),
+        "textures/textured.wgsl",
+        &TOKSVIG,
+    );
+    let lengths = averaged_lengths("textures/metal/normal.png");
+    let expected = [1.000, 0.989, 0.978, 0.957, 0.949, 0.946, 0.944, 0.943, 0.943];
+    assert!(lengths.iter().zip(expected).all(|(l, e)| (l - e).abs() < 0.001), "{lengths:?}");
+    let shininess: Vec<f32> = lengths.iter().map(|l| toksvig_shininess(*l, 64.0)).collect();
+    println!("metal normal map, mean |N̄| by level: {lengths:.3?}; Toksvig's shininess from 64: {shininess:.1?}");
+    // The torus: 1.6 m across, the metal twice round it (256 texels per
+    // 2.5 m of its outer side): from the whole-stage camera, 11 m away, and
+    // from 40 m, the level a pixel reads.
+    let level = |distance: f32| (256.0 / 2.5 * pixel_metres(distance)).log2().max(0.0);
+    println!("the torus reads level {:.1} from 11 m and {:.1} from 40 m", level(11.0), level(40.0));
+    let at = |distance: f32| shininess[level(distance).round() as usize];
+    assert!((at(11.0) - 37.9).abs() < 0.1 && (at(40.0) - TOKSVIG_AT_40_M).abs() < 0.1, "{}", at(40.0));
+}
+
+/// Toksvig's shininess for the metal (64) at the level the torus reads from 40 m.
+const TOKSVIG_AT_40_M: f32 = 16.6;
