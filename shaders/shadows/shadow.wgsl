@@ -81,10 +81,12 @@ fn poisson_tap(i: u32, angle: f32, radius: f32) -> vec2<f32> {
 // ANCHOR_END: poisson
 
 // ANCHOR: filters
+// ANCHOR: hard
 // One comparison: is the stored depth at `uv` at least `depth`?
 fn hard(uv: vec2<f32>, depth: f32) -> f32 {
     return textureSampleCompareLevel(shadow_map, compare_nearest, uv, depth);
 }
+// ANCHOR_END: hard
 
 // Percentage-closer filtering (Reeves et al. 1987): the answers of nine
 // comparisons one texel apart, averaged. Each tap compares before it

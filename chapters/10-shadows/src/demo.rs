@@ -1,288 +1,41 @@
-//! The chapter itself: the settings each view applies, the views, the side
-//! camera and the part of the level it sees, who plays (the script or the
-//! keys), and `impl Chapter`, which renders the sun's shadow map and the
-//! lantern's cube, then the level through the shadowed renderer, then
-//! chapter 08's post chain.
-
-use std::path::Path;
+//! The chapter's wiring: `impl Chapter`, which makes the pieces, applies
+//! the views (`views`), lets the keys take over from the script (`play`),
+//! and renders a frame: the sun's shadow map and the lantern's cube, then
+//! the level through the shadowed renderer, then chapter 08's post chain;
+//! and the overlay's controls.
 
 use common::args::UsageError;
-use common::glam::{Mat4, Vec2, Vec3, Vec4};
+use common::glam::{Vec3, Vec4};
 use common::{
-    Camera, Chapter, ChapterFlag, FlagValues, Frame, Gpu, Input, Preparation, Target, View, ViewRow, anyhow, egui,
-    views_of, wgpu, winit::keyboard::KeyCode,
+    Chapter, ChapterFlag, FlagValues, Frame, Gpu, Input, Preparation, Target, View, anyhow, egui, views_of, wgpu,
 };
 use lighting::bloom::BloomSettings;
 use lighting::lights::{Daylight, Light};
 use lighting::{CitySky, Highlight, LoopOptions, PostChain, PostOutput, PostSettings, SceneLights};
-use textures::materials::{Materials, Uploader};
-use textures::mesh::{GpuModel, ModelInstance};
+use textures::materials::Uploader;
 use textures::mipmaps::MipMaker;
-use textures::{Draw, DrawList, obj, upload_model};
 
-use crate::game::{self, Controls, Game, Level, PropKind};
+use crate::camera_presets::{CAMERA_DISTANCE, CameraPreset, lantern_camera, side_camera};
+use crate::game::{self, Game, Level};
+use crate::level_models::{self, LevelModels};
+use crate::light_box::{LightBox, fit_light, visible_part};
 use crate::lines::{LineList, Lines};
 use crate::parallax::Parallax;
 use crate::physics;
-use crate::point_shadow::{self, CubeCost, CubeView, PointFilter, PointShadow, PointShadowSettings};
+use crate::play::{Play, controls_from};
+use crate::point_shadow::{self, CubeCost, CubeView, PointFilter, PointShadow};
 use crate::scene;
-use crate::shadow_map::{self, Bias, Cull, Filter, LightBox, ShadowMap, ShadowSettings, fit_light};
+use crate::shadow_map::{self, Cull, Filter, ShadowMap};
 use crate::shadowed_renderer::ShadowedRenderer;
-
-// ANCHOR: views
-/// Every view, once, with what it shows. All but `lantern` are modes: the
-/// side camera follows the player whatever the view.
-pub const VIEW_TABLE: [ViewRow<Settings, CameraPreset>; 16] = [
-    ViewRow::mode(
-        "default",
-        "the game mid-jump, with soft shadows that harden where they touch (PCSS)",
-        Settings::DEFAULT,
-    ),
-    // The filters side by side, on a 512² map (texels of 8.8 cm), seen
-    // from close up: big enough to see what each filter does to them.
-    ViewRow::mode(
-        "hard",
-        "one comparison per pixel: the shadow map's texels are the shadow's edge",
-        Settings::close_up(Filter::Hard),
-    ),
-    ViewRow::mode(
-        "pcf-3x3",
-        "nine comparisons a texel apart, averaged: a soft edge one texel wide",
-        Settings::close_up(Filter::Pcf3x3),
-    ),
-    ViewRow::mode(
-        "poisson",
-        "sixteen comparisons on a Poisson disk, turned per pixel: the seed's filter",
-        Settings::close_up(Filter::Poisson),
-    ),
-    ViewRow::mode("acne", "no bias: lit surfaces shadow themselves in stripes", Settings::hard_with(Bias::NONE)),
-    ViewRow::mode(
-        "peter-panning",
-        "far too much bias: shadows come loose from what casts them",
-        Settings::hard_with(Bias::TOO_MUCH),
-    ),
-    ViewRow::mode(
-        "shadow-map",
-        "the sun's depth, full screen: near the sun dark, far light",
-        Settings { show: Show::ShadowMap, ..Settings::DEFAULT },
-    ),
-    ViewRow::preset(
-        "lantern",
-        "the lantern in the tunnel at nightfall: its light stops at the ceiling, and the rock casts a shadow",
-        Settings::LANTERN,
-        CameraPreset::Lantern,
-    ),
-    ViewRow::mode(
-        "cube-shadow-map",
-        "the lantern's six shadow-map faces unfolded in a cross: near the light dark, far light",
-        Settings { show: Show::CubeMap, ..Settings::DEFAULT },
-    ),
-    ViewRow::mode(
-        "light-frustum",
-        "the sun's box (yellow) around the part of the level the camera sees (cyan)",
-        Settings { light_box: true, camera_distance: 60.0, ..Settings::DEFAULT },
-    ),
-    ViewRow::mode(
-        "collision-boxes",
-        "the boxes the physics works with, drawn over the scene",
-        Settings { collision_boxes: true, ..Settings::DEFAULT },
-    ),
-    ViewRow::mode(
-        "parallax",
-        "the background layers tinted by depth: red near, green middle, blue far",
-        Settings { tint_layers: true, ..Settings::DEFAULT },
-    ),
-    ViewRow::no_aa("default", Settings::DEFAULT),
-    ViewRow::bench("map-1024", "Poisson filtering with a 1024² shadow map", Settings::filtered(Filter::Poisson, 1024)),
-    ViewRow::bench("map-4096", "Poisson filtering with a 4096² shadow map", Settings::filtered(Filter::Poisson, 4096)),
-    ViewRow::bench(
-        "no-shadows",
-        "no lookup at all, nor the lantern's cube: what the filters are measured against",
-        Settings { lantern: PointShadowSettings::OFF, ..Settings::filtered(Filter::Off, shadow_map::DEFAULT_SIZE) },
-    ),
-];
-
-/// Where a preset puts the camera instead of behind the player.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub enum CameraPreset {
-    /// In front of the tunnel, looking at the lantern ([`lantern_camera`]).
-    Lantern,
-}
-// ANCHOR_END: views
-
-/// What the camera shows.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub enum Show {
-    /// The lit scene.
-    Scene,
-    /// The shadow map, full screen.
-    ShadowMap,
-    /// How much sun reaches each pixel (red), whether its surface faces
-    /// the sun (green) and how much of the lantern's light arrives (blue),
-    /// unlit: what the shadow tests count.
-    Sunlit,
-    /// The lantern's cube shadow map, unfolded, full screen.
-    CubeMap,
-}
-
-/// What the sun's box is fitted to.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub enum Fit {
-    /// The part of the level the camera sees.
-    Visible,
-    /// The whole level: simpler, and every texel three times as coarse.
-    WholeLevel,
-}
-
-/// What a view decides.
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub struct Settings {
-    pub shadow: ShadowSettings,
-    /// The lantern's cube shadow map.
-    pub lantern: PointShadowSettings,
-    pub fit: Fit,
-    /// The time of day as a phase (0.25 sunrise, 0.5 noon, 0.75 sunset).
-    pub phase: f32,
-    /// Whether the sun moves on by itself, a day every [`DAY_SECONDS`].
-    pub sun_moves: bool,
-    pub show: Show,
-    pub collision_boxes: bool,
-    pub light_box: bool,
-    pub tint_layers: bool,
-    /// How far behind the level the camera stands, metres.
-    pub camera_distance: f32,
-    pub bloom: bool,
-}
-
-impl Settings {
-    /// The game mid-jump in soft shadows: what the chapter starts with.
-    pub const DEFAULT: Self = Self {
-        shadow: ShadowSettings { filter: Filter::Pcss, ..ShadowSettings::DEFAULT },
-        lantern: PointShadowSettings::DEFAULT,
-        fit: Fit::Visible,
-        // Nine in the morning: the sun 35° high, on the left, in front.
-        phase: 0.375,
-        sun_moves: false,
-        show: Show::Scene,
-        collision_boxes: false,
-        light_box: false,
-        tint_layers: false,
-        camera_distance: CAMERA_DISTANCE,
-        bloom: true,
-    };
-
-    /// The `lantern` view: the default scene at nightfall, when the
-    /// lantern is the only light.
-    pub const LANTERN: Self = Self { phase: 0.8, ..Self::DEFAULT };
-
-    /// The default scene with the shadow map looked up by `filter` in a
-    /// `size`² map.
-    pub const fn filtered(filter: Filter, size: u32) -> Self {
-        Self { shadow: ShadowSettings { filter, size, ..Self::DEFAULT.shadow }, ..Self::DEFAULT }
-    }
-
-    /// The scene with a 512² map looked up by `filter`, seen from
-    /// [`CLOSE_UP_DISTANCE`]: the sun's box is still fitted to the game's
-    /// camera, so its texels are as large as in the game, and large on screen.
-    pub const fn close_up(filter: Filter) -> Self {
-        Self { camera_distance: CLOSE_UP_DISTANCE, ..Self::filtered(filter, 512) }
-    }
-
-    /// The default scene with hard shadows and `bias`.
-    pub const fn hard_with(bias: Bias) -> Self {
-        Self { shadow: ShadowSettings { filter: Filter::Hard, bias, ..Self::DEFAULT.shadow }, ..Self::DEFAULT }
-    }
-}
-
-// ANCHOR: camera
-/// How far in front of the level the camera stands, metres.
-pub const CAMERA_DISTANCE: f32 = 11.0;
-/// Where the filter views' camera stands instead, metres.
-pub const CLOSE_UP_DISTANCE: f32 = 4.0;
-
-/// The side camera: `distance` in front of the level's middle (z = 0),
-/// looking down at the player at about 17°, so that the ground where
-/// shadows fall shows.
-pub fn side_camera(player: Vec2, distance: f32, aspect: f32) -> Camera {
-    let eye = Vec3::new(player.x, player.y + 0.3 * distance, distance);
-    Camera { near: 0.5, far: 400.0, ..Camera::looking_at(eye, Vec3::new(player.x, player.y, 0.0), aspect) }
-}
-
-/// The part of the level the camera sees: where the corners of its view
-/// cross the level's front and back faces (z = ±`half_depth`). The sun's
-/// box is fitted around these eight points.
-pub fn visible_part(camera: &Camera, half_depth: f32) -> [Vec3; 8] {
-    let inverse = camera.view_projection().inverse();
-    std::array::from_fn(|i| {
-        let ndc = Vec3::new(if i & 1 == 0 { -1.0 } else { 1.0 }, if i & 2 == 0 { -1.0 } else { 1.0 }, 1.0);
-        let far = inverse.project_point3(ndc);
-        let z = if i & 4 == 0 { half_depth } else { -half_depth };
-        let t = (z - camera.position.z) / (far.z - camera.position.z);
-        camera.position + (far - camera.position) * t
-    })
-}
-
-/// The `lantern` view's camera: in front of the tunnel, right of the
-/// lantern and a little above it, looking down past it at the ground its
-/// light falls on.
-pub fn lantern_camera(lantern: Vec3, aspect: f32) -> Camera {
-    let eye = lantern + Vec3::new(2.6, -0.35, 6.2);
-    Camera { near: 0.1, far: 400.0, ..Camera::looking_at(eye, lantern + Vec3::new(0.2, -0.5, 0.0), aspect) }
-}
-// ANCHOR_END: camera
-
-/// The models the level is drawn with, in the order the draws number
-/// them: the level, one per prop kind ([`PropKind::ALL`]), the lantern,
-/// the player.
-struct Models {
-    level: GpuModel,
-    props: Vec<GpuModel>,
-    lantern: GpuModel,
-    player: GpuModel,
-}
-
-/// The lantern's place in the models' order: the one model its own cube
-/// leaves out, since its light is inside it.
-pub const LANTERN_MODEL: usize = 1 + PropKind::ALL.len();
-
-// ANCHOR: play
-/// Who plays: the script (pictures, and a window until a key is pressed)
-/// or the keys.
-enum Play {
-    /// The scripted run at the scene time, kept so that the next frame
-    /// continues from it rather than replaying from the start. (To see it
-    /// again in a window, set the overlay's scene time back to 0.)
-    Demo(Game),
-    Keys(Game),
-}
-
-/// How long a day lasts when the sun moves, seconds.
-pub const DAY_SECONDS: f32 = 120.0;
-
-/// The keys' controls this frame. Pressing left and right together
-/// cancels out; jump is held, so holding Space jumps again on landing.
-pub fn controls_from(input: &Input) -> Controls {
-    let any = |keys: &[KeyCode]| keys.iter().any(|k| input.held(*k));
-    Controls {
-        left: any(&[KeyCode::KeyA, KeyCode::ArrowLeft]),
-        right: any(&[KeyCode::KeyD, KeyCode::ArrowRight]),
-        jump: any(&[KeyCode::Space, KeyCode::KeyW, KeyCode::ArrowUp]),
-    }
-}
-// ANCHOR_END: play
+use crate::views::{DAY_SECONDS, Fit, Settings, Show, VIEW_TABLE};
 
 pub struct ShadowsChapter {
     pub settings: Settings,
     level: Level,
     solids: Vec<physics::Aabb>,
     play: Play,
-    materials: Materials,
-    models: Models,
-    /// Every instance: the level's and the props', which never move, then
-    /// the player's, written each frame.
-    instances: wgpu::Buffer,
-    /// Which model (an index into `Models`' order) draws which instances.
-    draws: Vec<(usize, std::ops::Range<u32>)>,
+    /// The level's models, materials and instances.
+    models: LevelModels,
     /// The box around everything that casts a shadow.
     bounds: (Vec3, Vec3),
     renderer: ShadowedRenderer,
@@ -316,68 +69,6 @@ impl ShadowsChapter {
             Play::Keys(game) => Some(game),
             Play::Demo(_) => None,
         }
-    }
-
-    /// The game as it stands at scene time `time`.
-    fn game_at(&mut self, time: f32) -> Game {
-        match &mut self.play {
-            Play::Keys(game) => *game,
-            Play::Demo(game) => {
-                // The script ends at 21 s and the player stands still from
-                // then on: a time past a minute is a minute, so that
-                // `--time 1e9` does not simulate thirty years.
-                let steps = (time.min(60.0) / game::STEP).round() as u64;
-                if steps < game.steps {
-                    *game = Game::new(&self.level);
-                }
-                while game.steps < steps {
-                    let controls = game::script(game.time());
-                    game.step(&self.solids, controls);
-                }
-                *game
-            }
-        }
-    }
-
-    /// The instances of the level (one), the props kind by kind (trees,
-    /// rocks, crates, islands, the sphere), the lantern, and a last one for
-    /// the player, with the draws that use them: (model, instances), the
-    /// model numbered as in [`LANTERN_MODEL`]'s order. Every draw casts the
-    /// sun's shadow; all but the lantern's cast the lantern's.
-    pub fn level_instances(level: &Level, game: &Game) -> (Vec<ModelInstance>, Vec<(usize, std::ops::Range<u32>)>) {
-        let mut instances = vec![ModelInstance::new(Mat4::IDENTITY, 1.0)];
-        let mut draws = vec![(0, 0..1)];
-        for (i, kind) in PropKind::ALL.into_iter().enumerate() {
-            let start = instances.len() as u32;
-            instances.extend(scene::prop_instances(level, kind));
-            draws.push((1 + i, start..instances.len() as u32));
-        }
-        let start = instances.len() as u32;
-        instances.push(scene::lantern_instance(level));
-        draws.push((LANTERN_MODEL, start..start + 1));
-        let start = instances.len() as u32;
-        instances.push(scene::player_instance(game));
-        draws.push((LANTERN_MODEL + 1, start..start + 1));
-        (instances, draws)
-    }
-
-    /// Moves the player's instance, the last one, to where `game` has it.
-    fn place_player(&self, gpu: &Gpu, game: &Game) {
-        let size = std::mem::size_of::<ModelInstance>() as u64;
-        let offset = self.instances.size() - size;
-        gpu.queue.write_buffer(&self.instances, offset, bytemuck::bytes_of(&scene::player_instance(game)));
-    }
-
-    /// The collision boxes, as the physics sees them, in the plane z = 0.
-    fn collision_lines(&self, game: &Game) -> LineList {
-        let mut list = LineList::default();
-        let solid = Vec4::new(0.2, 1.0, 0.3, 1.0);
-        for aabb in &self.solids {
-            list.rectangle(aabb.min.extend(0.0), aabb.max.extend(0.0), solid);
-        }
-        let player = if game.on_floor { Vec4::new(1.0, 0.85, 0.1, 1.0) } else { Vec4::new(1.0, 0.25, 0.2, 1.0) };
-        list.rectangle(game.player.aabb.min.extend(0.0), game.player.aabb.max.extend(0.0), player);
-        list
     }
 }
 
@@ -416,37 +107,18 @@ impl Chapter for ShadowsChapter {
     }
 
     fn new(gpu: &Gpu, target: Target, (): ()) -> anyhow::Result<Self> {
-        let device = &gpu.device;
         let post = PostChain::new(gpu, target)?;
         let multisample = post.hdr().multisample();
         let level = game::level();
-        let read: obj::ReadFile = &scene::read;
         let mut warnings = Vec::new();
-        let mut load = |path: &str| -> anyhow::Result<obj::LoadedModel> {
-            let loaded = obj::load(Path::new(path), read)?;
-            warnings.extend(loaded.warnings.iter().cloned());
-            Ok(loaded)
-        };
-        let props =
-            PropKind::ALL.iter().map(|&kind| load(scene::prop_model(kind))).collect::<anyhow::Result<Vec<_>>>()?;
-        let player = load(scene::PLAYER_MODEL)?;
+        let (props, player) = level_models::read_models(&mut warnings)?;
         let scene_lights = SceneLights::new(gpu)?;
         let mut mips = MipMaker::new(gpu)?;
-        let mut up = Uploader::new(gpu, &mut mips, read);
-        let mut materials = Materials::new(&mut up);
-        let models = Models {
-            level: upload_model(&mut up, &mut materials, &scene::level_model(&level), "level"),
-            props: props
-                .iter()
-                .zip(PropKind::ALL)
-                .map(|(prop, kind)| upload_model(&mut up, &mut materials, &prop.model, &format!("{kind:?}")))
-                .collect(),
-            lantern: upload_model(&mut up, &mut materials, &scene::lantern_model(&level), "lantern"),
-            player: upload_model(&mut up, &mut materials, &player.model, "player"),
-        };
+        let mut up = Uploader::new(gpu, &mut mips, &scene::read);
+        let mut models = LevelModels::upload(gpu, &mut up, &level, &props, &player);
         let parallax = Parallax::new(gpu, &mut up, &scene_lights, &level, multisample)?;
         up.finish();
-        warnings.append(&mut materials.warnings);
+        warnings.append(&mut models.materials.warnings);
         for warning in &warnings {
             eprintln!("warning: {warning}");
         }
@@ -455,7 +127,7 @@ impl Chapter for ShadowsChapter {
         let renderer = ShadowedRenderer::with_point_light(
             gpu,
             &scene_lights,
-            &materials,
+            &models.materials,
             &shadow_map,
             &point_shadow,
             multisample,
@@ -465,25 +137,13 @@ impl Chapter for ShadowsChapter {
         let sky = CitySky::new(gpu, &scene_lights, multisample)?;
         let solids = level.solids();
         let bounds = scene::level_bounds(&level);
-        let (instances, draws) = Self::level_instances(&level, &Game::new(&level));
-        let instances = wgpu::util::DeviceExt::create_buffer_init(
-            device,
-            &wgpu::util::BufferInitDescriptor {
-                label: Some("instances"),
-                contents: bytemuck::cast_slice(&instances),
-                usage: wgpu::BufferUsages::VERTEX | wgpu::BufferUsages::COPY_DST,
-            },
-        );
         let lantern = scene::lantern_light(&level);
         Ok(Self {
             settings: Settings::DEFAULT,
             play: Play::Demo(Game::new(&level)),
             solids,
             level,
-            materials,
             models,
-            instances,
-            draws,
             bounds,
             renderer,
             shadow_map,
@@ -557,7 +217,7 @@ impl Chapter for ShadowsChapter {
     // ANCHOR: render
     fn render(&mut self, gpu: &Gpu, frame: &mut Frame) {
         let s = self.settings;
-        let game = self.game_at(frame.time);
+        let game = self.play.game_at(&self.level, &self.solids, frame.time);
         let player = game.player.aabb.centre();
         let camera = match self.preset {
             Some(CameraPreset::Lantern) => lantern_camera(self.level.lantern, self.target.aspect()),
@@ -568,19 +228,7 @@ impl Chapter for ShadowsChapter {
         let game_camera = side_camera(player, CAMERA_DISTANCE, self.target.aspect());
         let bounds = self.bounds;
         let visible = visible_part(&game_camera, bounds.1.z);
-        let focus: Vec<Vec3> = match s.fit {
-            Fit::Visible => visible.to_vec(),
-            Fit::WholeLevel => (0..8)
-                .map(|i| {
-                    let pick = |bit, lo: f32, hi: f32| if i & bit == 0 { lo } else { hi };
-                    Vec3::new(
-                        pick(1, bounds.0.x, bounds.1.x),
-                        pick(2, bounds.0.y, bounds.1.y),
-                        pick(4, bounds.0.z, bounds.1.z),
-                    )
-                })
-                .collect(),
-        };
+        let focus = s.fit.focus(&visible, bounds);
         let phase = if s.sun_moves { s.phase + frame.time / DAY_SECONDS } else { s.phase };
         let day: Daylight = scene::sun_at(phase.rem_euclid(1.0));
         // The map's size first: the box's texels are fitted to it.
@@ -591,18 +239,8 @@ impl Chapter for ShadowsChapter {
         let options = LoopOptions { culling: false, highlight: Highlight::BlinnPhong, heat_map: false };
         self.scene_lights.write(gpu, &camera, &day, &[], &Default::default(), options);
         self.sky.write(gpu, &camera, &day);
-        self.place_player(gpu, &game);
-        let m = &self.models;
-        let models: Vec<&GpuModel> = std::iter::once(&m.level).chain(&m.props).chain([&m.lantern, &m.player]).collect();
-        let list = DrawList {
-            materials: &self.materials,
-            instances: &self.instances,
-            draws: self
-                .draws
-                .iter()
-                .map(|(i, instances)| Draw { model: models[*i], instances: instances.clone() })
-                .collect(),
-        };
+        self.models.place_player(gpu, &game);
+        let list = self.models.everything();
 
         // Pass one: the sun's view, depth only.
         frame.drawn.extend([self.shadow_map.render(gpu, frame.encoder, frame.timer, &s.shadow, &list)]);
@@ -618,16 +256,7 @@ impl Chapter for ShadowsChapter {
         self.point_shadow.write(gpu, &self.lantern, &s.lantern);
         self.cube_cost = CubeCost::default();
         if s.lantern.filter != PointFilter::Off || s.show == Show::CubeMap {
-            let casters = DrawList {
-                materials: &self.materials,
-                instances: &self.instances,
-                draws: self
-                    .draws
-                    .iter()
-                    .filter(|(i, _)| *i != LANTERN_MODEL)
-                    .map(|(i, instances)| Draw { model: models[*i], instances: instances.clone() })
-                    .collect(),
-            };
+            let casters = self.models.lantern_casters();
             self.cube_cost = self.point_shadow.render(frame.encoder, frame.timer, &casters);
             frame.drawn.extend([self.cube_cost.pass_count()]);
         }
@@ -655,7 +284,7 @@ impl Chapter for ShadowsChapter {
         // Lines over the picture.
         let mut lines = LineList::default();
         if s.collision_boxes {
-            lines = self.collision_lines(&game);
+            lines = LineList::collision_boxes(&self.solids, &game);
         }
         if s.light_box {
             lines.box_edges(&light.corners(), Vec4::new(1.0, 0.85, 0.1, 1.0));

@@ -6,31 +6,43 @@
 //! the small engine of the seed: boxes that collide, a player who runs and
 //! jumps, and background layers that scroll at their own rates.
 //!
-//! The modules below come in the order the book explains them; the
-//! re-exports after them are the pieces later chapters compose.
+//! The modules below come in the order the book's lessons teach them; the
+//! re-exports after them are the pieces later chapters, the tests and the
+//! diagrams compose.
 
-// The sun's box, the shadow map, its pass and its filters.
+// A shadow map in two passes: the map, its pass, its lookups and filters.
 pub mod shadow_map;
+// The second pass: lit models, the sun scaled by what the map says.
+pub mod shadowed_renderer;
+// The sun's box: fitted to what the camera sees, snapped to texels.
+pub mod light_box;
 // The lantern's cube shadow map: six faces, compared by distance.
 pub mod point_shadow;
-// Boxes that fall, slide and stop against other boxes.
+// The game: boxes that fall, slide and stop against other boxes,
 pub mod physics;
-// The level, the player, and the script that plays it.
+// the level, the player and the script that plays it in fixed steps,
 pub mod game;
-// Background layers that scroll at their own rates.
+// and who plays, the script or the keys.
+pub mod play;
+// Parallax: background layers that scroll at their own rates.
 pub mod parallax;
-// Textured, lit models with the sun scaled by the shadow map.
-pub mod shadowed_renderer;
-// The level as things to draw, and the sun's path.
+// The level as things to draw, the lantern, and the sun's path.
 pub mod scene;
+// The level on the GPU: models, instances and the passes' draw lists.
+pub mod level_models;
+// The side camera and the lantern view's preset.
+pub mod camera_presets;
 // Lines over the picture: collision boxes, the sun's box.
 pub mod lines;
-// The chapter itself: its settings, views, camera, play and frame.
+// The views and the settings each applies.
+pub mod views;
+// The chapter's wiring: new, views applied, play, the frame, the overlay.
 pub mod demo;
 
-pub use demo::{
-    CAMERA_DISTANCE, CameraPreset, DAY_SECONDS, Fit, Settings, ShadowsChapter, Show, VIEW_TABLE, controls_from,
-    lantern_camera, side_camera, visible_part,
-};
+pub use camera_presets::{CAMERA_DISTANCE, CameraPreset, lantern_camera, side_camera};
+pub use demo::ShadowsChapter;
+pub use light_box::visible_part;
+pub use play::controls_from;
 pub use point_shadow::PointShadow;
 pub use shadowed_renderer::ShadowedRenderer;
+pub use views::{DAY_SECONDS, Fit, Settings, Show, VIEW_TABLE};

@@ -5,6 +5,9 @@ use common::chapter::uniform_entry;
 use common::glam::{Mat4, Vec3, Vec4};
 use common::{Drawn, Gpu, PassCount, Reloadable, ShaderError, shader, wgpu};
 
+use crate::game::Game;
+use crate::physics::Aabb;
+
 /// A corner of a line.
 #[repr(C)]
 #[derive(Clone, Copy, Debug, bytemuck::Pod, bytemuck::Zeroable)]
@@ -41,6 +44,20 @@ impl LineList {
                 }
             }
         }
+    }
+
+    /// The collision boxes as the physics sees them, in the plane z = 0:
+    /// the `solids` green, the player's box yellow when it stands on
+    /// something and red in the air.
+    pub fn collision_boxes(solids: &[Aabb], game: &Game) -> Self {
+        let mut list = LineList::default();
+        let solid = Vec4::new(0.2, 1.0, 0.3, 1.0);
+        for aabb in solids {
+            list.rectangle(aabb.min.extend(0.0), aabb.max.extend(0.0), solid);
+        }
+        let player = if game.on_floor { Vec4::new(1.0, 0.85, 0.1, 1.0) } else { Vec4::new(1.0, 0.25, 0.2, 1.0) };
+        list.rectangle(game.player.aabb.min.extend(0.0), game.player.aabb.max.extend(0.0), player);
+        list
     }
 }
 

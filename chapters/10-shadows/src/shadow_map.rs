@@ -1,14 +1,15 @@
 //! The shadow map: the scene's depth as the sun sees it, rendered first,
-//! then read by every lit fragment. This module fits the sun's
-//! orthographic box to what the camera sees, snaps it to whole texels,
-//! renders the depth with a bias, and binds the map for the main pass with
-//! the settings its filters need.
+//! then read by every lit fragment. This module renders the depth inside
+//! the sun's box (fitted by the `light_box` module) with a bias, and binds
+//! the map for the main pass with the settings its filters need.
 
 use common::chapter::{storage_entry, texture_entry, uniform_entry};
-use common::glam::{Mat4, Vec3};
 use common::{Drawn, Gpu, PassCount, PassTimer, Reloadable, ShaderError, shader, wgpu};
 use textures::DrawList;
 use textures::mesh::{ModelInstance, TexturedVertex};
+
+// The box is the map's input: chapter 11 and the diagrams import both from here.
+pub use crate::light_box::{LightBox, fit_light};
 
 // ANCHOR: settings
 /// A depth format: the map stores one distance per texel, nothing else.
@@ -129,71 +130,6 @@ pub fn clamp_size(requested: u32, adapter_max: u32) -> (u32, Option<String>) {
     (size, note)
 }
 // ANCHOR_END: clamp
-
-// ANCHOR: fit
-/// The sun's orthographic box: where it looks from, what it covers, and
-/// what one texel of the map covers.
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub struct LightBox {
-    /// World to the light's clip space.
-    pub view_proj: Mat4,
-    /// Metres one texel covers, across the box.
-    pub texel: f32,
-    /// Metres from the box's near face to its far face.
-    pub depth: f32,
-}
-
-/// Fits the sun's box for a map of `size` texels: its sides around the
-/// `focus` points (the part of the level the camera sees), its depth over
-/// every caster in `caster_bounds` (something off screen can still throw
-/// a shadow into view). `towards_sun` is a unit vector.
-///
-/// Two things keep shadows from shimmering as the camera moves. The box's
-/// width is that of a sphere around the focus points, rounded up to half
-/// a metre: when the camera only slides, the width never changes, so a
-/// texel always covers the same ground. And the box moves only in whole
-/// texels, so every texel edge stays where it was on the ground.
-pub fn fit_light(towards_sun: Vec3, focus: &[Vec3], caster_bounds: (Vec3, Vec3), size: u32) -> LightBox {
-    let up = if towards_sun.y.abs() > 0.99 { Vec3::Z } else { Vec3::Y };
-    // A rotation only: light space is world space turned to face the sun.
-    let rotation = Mat4::look_to_rh(Vec3::ZERO, -towards_sun, up);
-    let (low, high) = focus.iter().fold((Vec3::MAX, Vec3::MIN), |(lo, hi), p| (lo.min(*p), hi.max(*p)));
-    let centre = (low + high) / 2.0;
-    let reach = focus.iter().map(|p| p.distance(centre)).fold(0.0, f32::max);
-    let radius = (reach * 2.0).ceil() / 2.0;
-    let texel = 2.0 * radius / size as f32;
-    let middle = rotation.transform_point3(centre);
-    let snap = |v: f32| (v / texel).round() * texel;
-    let (x, y) = (snap(middle.x), snap(middle.y));
-    // Depth: from the caster nearest the sun to the point farthest from it.
-    let (cl, ch) = caster_bounds;
-    let corners = (0..8).map(|i| {
-        Vec3::new(
-            if i & 1 == 0 { cl.x } else { ch.x },
-            if i & 2 == 0 { cl.y } else { ch.y },
-            if i & 4 == 0 { cl.z } else { ch.z },
-        )
-    });
-    let distances = corners.chain(focus.iter().copied()).map(|p| -rotation.transform_point3(p).z);
-    let (near, far) = distances.fold((f32::MAX, f32::MIN), |(n, f), d| (n.min(d), f.max(d)));
-    let (near, far) = (near - 1.0, far + 1.0);
-    let projection = Mat4::orthographic_rh(x - radius, x + radius, y - radius, y + radius, near, far);
-    LightBox { view_proj: projection * rotation, texel, depth: far - near }
-}
-// ANCHOR_END: fit
-
-impl LightBox {
-    /// The box's eight corners in the world, for drawing it.
-    pub fn corners(&self) -> [Vec3; 8] {
-        let inverse = self.view_proj.inverse();
-        std::array::from_fn(|i| {
-            let x = if i & 1 == 0 { -1.0 } else { 1.0 };
-            let y = if i & 2 == 0 { -1.0 } else { 1.0 };
-            let z = if i & 4 == 0 { 0.0 } else { 1.0 };
-            inverse.project_point3(Vec3::new(x, y, z))
-        })
-    }
-}
 
 // ANCHOR: uniform
 /// `Shadow` in shadow.wgsl.

@@ -107,13 +107,13 @@ fn every_key_at_once_and_jump_every_frame_break_nothing() {
 /// inside no block of the level (the sphere only touches the ground).
 #[test]
 fn the_islands_and_the_sphere_are_drawn_and_out_of_the_players_way() {
-    use shadows::ShadowsChapter;
     use shadows::game::PropKind;
+    use shadows::level_models::level_instances;
     use shadows::scene;
     use std::path::Path;
 
     let level = game::level();
-    let (instances, draws) = ShadowsChapter::level_instances(&level, &Game::new(&level));
+    let (instances, draws) = level_instances(&level, &Game::new(&level));
     for (kind, count) in [(PropKind::Island, 3), (PropKind::Sphere, 1)] {
         let which = 1 + PropKind::ALL.iter().position(|k| *k == kind).unwrap();
         let (_, range) = draws.iter().find(|(model, _)| *model == which).expect("a draw for the kind");

@@ -1,11 +1,14 @@
-//! Worked solutions to the exercises on chapter 10's page. Each makes the
-//! change its exercise asks for and asserts the figure the page's solution
-//! states, so that the solutions are built and checked with the chapter.
+//! Worked solutions to the exercises of chapter 10's lessons, each named
+//! by its lesson and its number there (the acne lesson's exercise 1 is
+//! "Acne, exercise 1"). Each makes the change its exercise asks for and
+//! asserts the figure the lesson's solution states, so that the solutions
+//! are built and checked with the chapter.
 
-use common::glam::{Mat4, Vec3};
+use common::glam::{Mat4, Vec2, Vec3};
 use common::headless::{OFFSCREEN_FORMAT, capture};
 use common::{Camera, Chapter, Gpu, ShaderFile, Target, shader};
 use shadows::game::{self, Controls, Game, JUMP_SPEED, PropKind, STEP};
+use shadows::parallax::{LAYERS, Layer};
 use shadows::point_shadow::CubeFace;
 use shadows::shadow_map::{Bias, Cull, Filter, LightBox, ShadowSettings, fit_light};
 use shadows::{CAMERA_DISTANCE, Settings, ShadowsChapter, Show, scene, side_camera, visible_part};
@@ -45,7 +48,7 @@ fn sunlit(gpu: &Gpu, chapter: &mut ShadowsChapter, settings: Settings, time: f32
 }
 
 // ANCHOR: bias_search
-/// Exercise 1: the smallest bias of one kind that removes the acne, the
+/// Acne, exercise 1: the smallest bias of one kind that removes the acne, the
 /// other kind at zero. `bias(x)` makes the bias for a value `x`; the acne
 /// is gone when no more sun-facing pixels are in shadow than with the
 /// chapter's default bias, give or take 1 % of them.
@@ -69,10 +72,10 @@ fn smallest_bias_without_acne(
 }
 // ANCHOR_END: bias_search
 
-/// Exercises 1, 2 and 4 on one chapter: the biases, front faces, and the
-/// sun going down.
+/// The acne lesson's exercises 1, 2 and 3 on one chapter: the biases,
+/// front faces, and the sun going down.
 #[test]
-fn exercises_1_2_and_4_biases_culling_and_the_evening_sun() {
+fn acne_exercises_1_2_and_3_biases_culling_and_the_evening_sun() {
     let gpu = Gpu::headless(ShadowsChapter::gpu_needs()).unwrap();
     let target = Target { format: OFFSCREEN_FORMAT, width: 320, height: 180, samples: 1 };
     let mut chapter = ShadowsChapter::new(&gpu, target, ()).unwrap();
@@ -143,7 +146,7 @@ fn exercises_1_2_and_4_biases_culling_and_the_evening_sun() {
     let (culled, no_bias) = measured::SHADOWED_FRONT_CULLED_AND_WITHOUT_BIAS;
     assert!(close(culled_front.facing_shadowed, culled) && close(acne.facing_shadowed, no_bias), "a change detector");
 
-    // Exercise 4: the acne view, and the default bias, as the sun goes down.
+    // Exercise 3: the acne view, and the default bias, as the sun goes down.
     let mut by_phase = Vec::new();
     for phase in [0.375, 0.7, 0.73] {
         let (elevation, texel_on_ground) = sun_on_the_ground(phase, time);
@@ -164,7 +167,7 @@ fn exercises_1_2_and_4_biases_culling_and_the_evening_sun() {
 }
 
 // ANCHOR: front_faces
-/// Exercise 2: the shadow pass keeps the far sides of solids (it culls the
+/// Acne, exercise 2: the shadow pass keeps the far sides of solids (it culls the
 /// faces towards the sun), with no bias of either kind, hard shadows.
 fn front_faces_culled_without_bias() -> Settings {
     let no_bias = Settings::hard_with(Bias::NONE);
@@ -173,7 +176,7 @@ fn front_faces_culled_without_bias() -> Settings {
 // ANCHOR_END: front_faces
 
 // ANCHOR: evening
-/// Exercise 4: the sun's height at `phase`, degrees, and how much ground a
+/// Acne, exercise 3: the sun's height at `phase`, degrees, and how much ground a
 /// texel of the map covers there (the texel across the box, over the sine
 /// of the sun's height: a grazing sun stretches it).
 fn sun_on_the_ground(phase: f32, time: f32) -> (f32, f32) {
@@ -186,7 +189,7 @@ fn sun_on_the_ground(phase: f32, time: f32) -> (f32, f32) {
 // ANCHOR_END: evening
 
 // ANCHOR: tight_fit
-/// Exercise 3: the sun's box fitted to the smallest rectangle around the
+/// The sun's box, exercise 1: the sun's box fitted to the smallest rectangle around the
 /// `focus` points in the light's own space, rather than a sphere. Its depth
 /// is `fit_light`'s; a square map takes the rectangle's longer side.
 fn fit_light_tightly(towards_sun: Vec3, focus: &[Vec3], caster_bounds: (Vec3, Vec3), size: u32) -> LightBox {
@@ -230,7 +233,7 @@ fn visible_at(time: f32) -> [Vec3; 8] {
 }
 
 #[test]
-fn exercise_3_a_rectangle_in_the_lights_space_has_smaller_texels_and_keeps_its_size() {
+fn sun_box_exercise_1_a_rectangle_in_the_lights_space_has_smaller_texels_and_keeps_its_size() {
     let level = game::level();
     let bounds = scene::level_bounds(&level);
     let towards_sun = scene::sun_at(Settings::DEFAULT.phase).direction;
@@ -265,7 +268,7 @@ fn exercise_3_a_rectangle_in_the_lights_space_has_smaller_texels_and_keeps_its_s
 }
 
 // ANCHOR: cascades
-/// Exercise 5: the part of the view nearer than `distance` metres along
+/// The sun's box, exercise 2: the part of the view nearer than `distance` metres along
 /// each corner ray, between the level's front face (z = `half_depth`) and
 /// its back: the focus of the near cascade.
 fn near_part(camera: &Camera, half_depth: f32, distance: f32) -> Vec<Vec3> {
@@ -322,7 +325,7 @@ fn near_cascade(world: vec3<f32>) -> f32 {
 // ANCHOR_END: cascades
 
 #[test]
-fn exercise_5_a_near_cascade_halves_the_texel_where_the_view_is_close() {
+fn sun_box_exercise_2_a_near_cascade_halves_the_texel_where_the_view_is_close() {
     compiles_with(
         shader!(
             "shadows/scene.wgsl",
@@ -352,7 +355,7 @@ fn exercise_5_a_near_cascade_halves_the_texel_where_the_view_is_close() {
 }
 
 // ANCHOR: double_jump
-/// Exercise 6: the game with one more jump in the air, taken by pressing
+/// Collisions, exercise 1: the game with one more jump in the air, taken by pressing
 /// jump again (not by holding it) before landing.
 struct DoubleJump {
     game: Game,
@@ -381,7 +384,7 @@ impl DoubleJump {
 /// The first test to write: pressing jump three times in one flight lifts
 /// the player twice as high as one jump (2 × v² / 2g), and no higher.
 #[test]
-fn exercise_6_a_second_jump_in_the_air_lifts_the_player_once() {
+fn collisions_exercise_1_a_second_jump_in_the_air_lifts_the_player_once() {
     let level = game::level();
     let solids = level.solids();
     let mut player = DoubleJump::new(&level);
@@ -416,7 +419,7 @@ enum CubeCulling {
     BeyondRangeOrFace,
 }
 
-/// Exercise 7: the triangles the lantern's six passes draw in the
+/// The lantern, exercise 1: the triangles the lantern's six passes draw in the
 /// `lantern` view (the demo at the snapshot time), culling instance by
 /// instance with the boxes of their models' vertices.
 fn cube_triangles(culling: CubeCulling) -> u64 {
@@ -470,7 +473,7 @@ fn cube_triangles(culling: CubeCulling) -> u64 {
 // ANCHOR_END: cube_culling
 
 #[test]
-fn exercise_7_culling_the_lanterns_casters_by_range_and_face() {
+fn lantern_exercise_1_culling_the_lanterns_casters_by_range_and_face() {
     let all = cube_triangles(CubeCulling::Nothing);
     let in_range = cube_triangles(CubeCulling::BeyondRange);
     let in_face = cube_triangles(CubeCulling::BeyondRangeOrFace);
@@ -483,14 +486,148 @@ fn exercise_7_culling_the_lanterns_casters_by_range_and_face() {
     assert!(in_face <= in_range && in_range <= all, "culling more never draws more");
 }
 
+// ANCHOR: linear_depth
+/// Two passes, exercise 1: two points `gap` metres apart along the sun's
+/// rays, projected into the sun's `light` box: how far apart their stored
+/// depths are.
+fn depth_apart(light: &LightBox, towards_sun: Vec3, point: Vec3, gap: f32) -> f32 {
+    let farther = point - towards_sun * gap;
+    light.view_proj.project_point3(farther).z - light.view_proj.project_point3(point).z
+}
+// ANCHOR_END: linear_depth
+
+#[test]
+fn two_passes_exercise_1_orthographic_depth_is_linear_in_distance() {
+    // A sun looking straight down −z, and casters from z = −`reach` to
+    // `reach`: the box runs a metre beyond them at each end.
+    let towards_sun = Vec3::Z;
+    let box_for = |reach: f32| {
+        let bounds = (Vec3::new(-1.0, -1.0, -reach), Vec3::new(1.0, 1.0, reach));
+        let focus = [bounds.0, bounds.1];
+        fit_light(towards_sun, &focus, bounds, 2048)
+    };
+    for (reach, by_hand) in [(49.0, 0.0345), (99.0, 0.01725)] {
+        let light = box_for(reach);
+        assert!((light.depth - 2.0 * (reach + 1.0)).abs() < 1e-3, "a box {} m deep", light.depth);
+        // Near the sun's face, in the middle, near the far face.
+        for z in [reach - 3.0, 0.0, -reach + 4.0] {
+            let apart = depth_apart(&light, towards_sun, Vec3::new(0.5, -0.5, z), 3.45);
+            assert!((apart - by_hand).abs() < 1e-5, "{} m deep, at z = {z}: {apart} against {by_hand}", light.depth);
+        }
+    }
+    // The default picture's box, whatever its depth: a gap over the depth.
+    let level = game::level();
+    let towards_sun = scene::sun_at(Settings::DEFAULT.phase).direction;
+    let focus = visible_at(ShadowsChapter::SNAPSHOT_TIME);
+    let light = fit_light(towards_sun, &focus, scene::level_bounds(&level), 2048);
+    for point in focus {
+        let apart = depth_apart(&light, towards_sun, point, 3.45);
+        assert!((apart - 3.45 / light.depth).abs() < 1e-5, "at {point}: {apart}");
+    }
+}
+
+// ANCHOR: pcf_5x5
+/// Soft edges, exercise 1: the 3 × 3 filter widened to 5 × 5, as edits of
+/// shadow.wgsl.
+const PCF_5X5: [(&str, &str); 3] = [
+    ("    for (var y = -1; y <= 1; y++) {", "    for (var y = -2; y <= 2; y++) {"),
+    ("        for (var x = -1; x <= 1; x++) {", "        for (var x = -2; x <= 2; x++) {"),
+    ("    return sum / 9.0;", "    return sum / 25.0;"),
+];
+// ANCHOR_END: pcf_5x5
+
+/// Pixels of a `Show::Sunlit` picture that get some of the sun but not
+/// all (the soft band), and that get all of it.
+fn partly_and_fully_lit(image: &common::image::RgbaImage) -> (usize, usize) {
+    let partly = image.pixels().filter(|p| (16..240).contains(&p[0])).count();
+    let fully = image.pixels().filter(|p| p[0] >= 250).count();
+    (partly, fully)
+}
+
+#[test]
+fn soft_edges_exercise_1_a_5x5_filter_widens_the_soft_band() {
+    // By hand: the filter views' box is 45 m wide, so a texel of their
+    // 512² map is 45 / 512 m; the chapter's box says the same.
+    let level = game::level();
+    let towards_sun = scene::sun_at(Settings::DEFAULT.phase).direction;
+    let focus = visible_at(ShadowsChapter::SNAPSHOT_TIME);
+    let light = fit_light(towards_sun, &focus, scene::level_bounds(&level), 512);
+    assert!((light.texel - 45.0 / 512.0).abs() < 1e-6, "a texel of {} m", light.texel);
+
+    // The edit made to a copy of the shaders, which the chapter reloads.
+    let root = shader::scratch_copy("shadows-pcf-5x5").unwrap();
+    let file = root.join("shadows/shadow.wgsl");
+    let original = std::fs::read_to_string(&file).unwrap();
+    let gpu = Gpu::headless(ShadowsChapter::gpu_needs()).unwrap();
+    gpu.read_shaders_from(Some(root.clone()));
+    let target = Target { format: OFFSCREEN_FORMAT, width: 320, height: 180, samples: 1 };
+    let mut chapter = ShadowsChapter::new(&gpu, target, ()).unwrap();
+    let index = common::chapter::view_index::<ShadowsChapter>("pcf-3x3").unwrap();
+    let picture = |chapter: &mut ShadowsChapter| {
+        chapter.settings = Settings { show: Show::Sunlit, ..shadows::VIEW_TABLE[index].settings };
+        capture(&gpu, chapter, target, (ShadowsChapter::SNAPSHOT_TIME, index), Default::default()).unwrap()
+    };
+    let three = partly_and_fully_lit(&picture(&mut chapter));
+    let mut edited = original.clone();
+    for (before, after) in PCF_5X5 {
+        assert_eq!(edited.matches(before).count(), 1, "{before}");
+        edited = edited.replace(before, after);
+    }
+    std::fs::write(&file, edited).unwrap();
+    let rebuilt = gpu.reload_shaders(&["shadows/shadow.wgsl"]).unwrap();
+    assert!(rebuilt >= 1, "nothing was built from the edited shadow.wgsl");
+    let five = partly_and_fully_lit(&picture(&mut chapter));
+    let _ = std::fs::remove_dir_all(&root);
+    println!("partly and fully lit pixels: {three:?} with 3 × 3, {five:?} with 5 × 5");
+    // A wider band between sun and shadow, taken from both sides of it.
+    assert!(five.0 > three.0, "the soft band did not widen: {three:?} then {five:?}");
+    assert!(five.1 < three.1, "the band took no fully lit pixels: {three:?} then {five:?}");
+}
+
+// ANCHOR: fourth_layer
+/// Parallax, exercise 1: a fourth layer, 201 m from the camera, its
+/// picture twice the far layer's height (and its bottom twice as low) so
+/// that it fills the screen as that one does.
+const FOURTH_LAYER: Layer = Layer { picture: "layers/far.png", z: -190.0, height: 120.0, bottom: -50.0, haze: 0.7 };
+// ANCHOR_END: fourth_layer
+
+/// How far a point of the plane z = `z` on the side camera's central ray
+/// moves across the screen when the camera slides a metre, over how far
+/// a point of the level (z = 0) does: the share of the level's speed.
+fn slide_share(z: f32) -> f32 {
+    let aspect = 16.0 / 9.0;
+    let before = side_camera(Vec2::ZERO, CAMERA_DISTANCE, aspect);
+    let after = side_camera(Vec2::X, CAMERA_DISTANCE, aspect);
+    // The camera looks at the player, at the origin: the central ray.
+    let along = -before.position.normalize();
+    let on_ray = |z: f32| before.position + along * ((z - before.position.z) / along.z);
+    let moved = |p: Vec3| after.view_projection().project_point3(p).x - before.view_projection().project_point3(p).x;
+    moved(on_ray(z)) / moved(on_ray(0.0))
+}
+
+#[test]
+fn parallax_exercise_1_a_plane_201_m_away_slides_at_11_over_201() {
+    // By hand: the camera stands 11 m from the level, the layer 201 m.
+    let by_hand = CAMERA_DISTANCE / (CAMERA_DISTANCE - FOURTH_LAYER.z);
+    assert!((by_hand - 11.0 / 201.0).abs() < 1e-6 && (by_hand - 0.055).abs() < 5e-4);
+    let share = slide_share(FOURTH_LAYER.z);
+    println!("the fourth layer slides at {share:.4} of the level's speed (by hand {by_hand:.4})");
+    assert!((share - by_hand).abs() < 1e-4, "{share} against {by_hand}");
+    // And the chapter's three layers at 0.44, 0.24 and 0.11.
+    for (layer, expected) in LAYERS.iter().zip([0.44, 0.24, 0.11]) {
+        let share = slide_share(layer.z);
+        assert!((share - expected).abs() < 0.005, "{}: {share}", layer.picture);
+    }
+}
+
 /// Measured: what these tests got by running the chapter (its renders,
 /// `fit_light`, the game's physics, the lantern's casters) and copied with
-/// page 10's solutions, which say they are measured
+/// chapter 10's solutions, which say they are measured
 /// (`common::book_figures::Measured`: change detectors, not derivations).
 mod measured {
     use common::book_figures::Measured;
 
-    /// Exercise 1: the smallest normal offset and slope scale that remove
+    /// Acne, exercise 1: the smallest normal offset and slope scale that remove
     /// the acne on their own; the sun-facing pixels in shadow with the
     /// default bias, the first offset and the first two slope scales; the
     /// share of the real shadows lost at 64 times those (below zero: gained).
@@ -498,29 +635,29 @@ mod measured {
     pub const SHADOWED_PIXELS: [usize; 4] = [3057, 9003, 10_821, 4029];
     pub const OFFSET_LOSES: Measured = Measured::new(-0.085, 0.01);
     pub const SLOPE_LOSES: Measured = Measured::new(0.085, 0.01);
-    /// Exercise 2: the share of the faces turned away from the sun that read
+    /// Acne, exercise 2: the share of the faces turned away from the sun that read
     /// as lit with front faces culled and no bias, and usually; sun-facing
     /// pixels in shadow with front faces culled, and with no bias at all.
     pub const AWAY_LIT_FRONT: Measured = Measured::new(0.593, 0.02);
     pub const AWAY_LIT_DEFAULT: Measured = Measured::new(0.404, 0.02);
     pub const SHADOWED_FRONT_CULLED_AND_WITHOUT_BIAS: (usize, usize) = (3051, 18_248);
-    /// Exercise 4: at phases 0.375, 0.7 and 0.73, the share of sun-facing
+    /// Acne, exercise 3: at phases 0.375, 0.7 and 0.73, the share of sun-facing
     /// pixels in shadow without bias and with the default one, and the
     /// ground a shadow-map texel covers, metres.
     pub const EVENING: [(f64, f64, f32); 3] = [(0.548, 0.092, 0.0379), (0.582, 0.166, 0.0868), (0.611, 0.221, 0.2140)];
-    /// Exercise 3: a texel of the 2048² map fitted to a sphere and to the
+    /// The sun's box, exercise 1: a texel of the 2048² map fitted to a sphere and to the
     /// rectangle, cm; the rectangle's smallest and largest texel, m, over
     /// the demo with the sun moving.
     pub const SPHERE_TEXEL_CM: Measured = Measured::new(2.20, 0.01);
     pub const TIGHT_TEXEL_CM: Measured = Measured::new(1.59, 0.01);
     pub const MOVING_SUN_TEXELS: (Measured, Measured) = (Measured::new(0.0143, 0.0001), Measured::new(0.0190, 0.0001));
-    /// Exercise 5: a texel of the near cascade's map, cm, and which cascade
+    /// The sun's box, exercise 2: a texel of the near cascade's map, cm, and which cascade
     /// each corner of the visible part reads.
     pub const NEAR_TEXEL_CM: Measured = Measured::new(1.03, 0.01);
     pub const FAR_CORNERS_READ: [usize; 8] = [0, 0, 0, 0, 1, 0, 1, 1];
-    /// Exercise 6: the highest the double jump takes the player, m (one jump: 2.08 m).
+    /// Collisions, exercise 1: the highest the double jump takes the player, m (one jump: 2.08 m).
     pub const DOUBLE_JUMP_HEIGHT: Measured = Measured::new(4.08, 0.02);
-    /// Exercise 7: the lantern's casters' triangles over its six passes; left
+    /// The lantern, exercise 1: the lantern's casters' triangles over its six passes; left
     /// within its range, and within a face's frustum too.
     pub const CUBE_TRIANGLES: u64 = 24_468;
     pub const CULLED_TRIANGLES: (u64, u64) = (3_960, 2_008);
