@@ -78,7 +78,7 @@ fn one_frame_draws_one_triangle() {
     let drawn = draw_frame(&gpu, &mut chapter, &offscreen.view, (0.0, 0), Default::default(), &timer);
     let triangles = (triangle::vertex::TRIANGLE.len() / 3) as u64;
     assert_eq!(triangles, 1);
-    assert_eq!(drawn, [PassCount { pass: "triangle", drawn: Drawn { draws: 1, triangles } }]);
+    assert_eq!(drawn, [PassCount { pass: "triangle", drawn: Drawn::counted(1, triangles) }]);
     assert_eq!(timer.take_labels(), ["triangle"], "counted under the name the pass is timed by");
 }
 

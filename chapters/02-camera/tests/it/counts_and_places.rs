@@ -25,7 +25,7 @@ fn the_scene_pass_counts_every_mesh_it_draws() {
     let placements = scene();
     let objects: u64 = placements.iter().map(|p| p.shape.mesh().triangles().count() as u64).sum();
     let ground = primitives::plane(1).triangles().count() as u64;
-    let expected = Drawn { draws: placements.len() as u32 + 1, triangles: objects + ground };
+    let expected = Drawn::counted(placements.len() as u32 + 1, objects + ground);
     // Worked by hand from `scene()`: three of each of the six shapes.
     assert_eq!(placements.len(), 3 * Shape::ALL.len());
     for (name, extra) in [("default", None), ("depth", Some(Drawn::FULL_SCREEN)), ("normals", None)] {
