@@ -1,16 +1,20 @@
-//! Worked solutions to the exercises on chapter 11's page. Each makes the
-//! change its exercise asks for and asserts the figure the page's solution
-//! states, so that the solutions are built and checked with the chapter.
+//! Worked solutions to the exercises of chapter 11's lessons. Each makes
+//! the change its exercise asks for and asserts the figure the lesson's
+//! solution states, so that the solutions are built and checked with the
+//! chapter. A test's name starts with its lesson's page (`cones`,
+//! `jump_flooding`, `water_texture`, `endless_sea`, `boat`, `sunset`) and
+//! the exercise's number there.
 
 use common::book_figures::median_ms;
-use common::glam::Vec2;
+use common::glam::{Vec2, Vec3};
 use common::headless::read_bytes;
 use common::{Chapter, Gpu, PassTimer, ShaderFile, shader};
-use voronoi_water::VoronoiWaterChapter;
-use voronoi_water::boat;
+use voronoi_water::boat::{self, Helm, Pose};
+use voronoi_water::boat_shadow::{SHADOW_REACH, shadow_focus};
 use voronoi_water::sea::{self, CELL, GRID_VERTICES, TILE_METRES};
 use voronoi_water::sites::{self, nearest, torus_offset};
 use voronoi_water::voronoi::{Method, Voronoi, VoronoiSettings};
+use voronoi_water::{DayClock, Settings, VoronoiWaterChapter, atmosphere};
 
 /// `file` with `edits` made to the text of `path` (the file itself or a
 /// module it imports), composed with its imports and validated by naga.
@@ -39,9 +43,10 @@ fn centre(i: usize, (width, height): (u32, u32)) -> Vec2 {
 }
 
 // ANCHOR: segments
-/// Exercise 1: how a diagram by cones of `segments` sides differs from the
-/// exact one: the pixels that hold another site than their nearest, and
-/// the worst of them, in pixels (how much nearer the true site is).
+/// The cones lesson, exercise 1: how a diagram by cones of `segments` sides
+/// differs from the exact one: the pixels that hold another site than their
+/// nearest, and the worst of them, in pixels (how much nearer the true site
+/// is).
 fn cone_errors(ids: &[u32], exact: &[usize], sites: &[Vec2], size: (u32, u32)) -> (usize, f32) {
     let pixel = 1.0 / size.0.min(size.1) as f32;
     let mut wrong = 0;
@@ -59,7 +64,7 @@ fn cone_errors(ids: &[u32], exact: &[usize], sites: &[Vec2], size: (u32, u32)) -
 // ANCHOR_END: segments
 
 #[test]
-fn exercise_1_few_segments_make_wavy_edges_and_64_still_miss_the_exact_diagram() {
+fn cones_exercise_1_few_segments_make_wavy_edges_and_64_still_miss_the_exact_diagram() {
     let gpu = Gpu::headless(VoronoiWaterChapter::gpu_needs()).unwrap();
     // The `cells` view's size and its test's time.
     let size = (400, 240);
@@ -80,10 +85,10 @@ fn exercise_1_few_segments_make_wavy_edges_and_64_still_miss_the_exact_diagram()
 }
 
 // ANCHOR: crossover
-/// Exercise 2: each method's pass time at `size`² as a straight line in the
-/// site count, (milliseconds at no sites, milliseconds per site), through
-/// the bench's medians at 1,024 and 16,384 sites: the cones', then jump
-/// flooding's.
+/// The jump flooding lesson, exercise 1: each method's pass time at `size`²
+/// as a straight line in the site count, (milliseconds at no sites,
+/// milliseconds per site), through the bench's medians at 1,024 and 16,384
+/// sites: the cones', then jump flooding's.
 fn cost_lines(table: &str, size: u32) -> [(f64, f64); 2] {
     let median = |view: String, pass: &str| median_ms(table, &view, &format!("GPU: {pass}")).unwrap();
     let line = |method: &str, pass: &str| {
@@ -102,7 +107,7 @@ fn crossover([cones, flood]: [(f64, f64); 2]) -> Option<f64> {
 // ANCHOR_END: crossover
 
 #[test]
-fn exercise_2_jump_flooding_wins_past_a_crossover_that_moves_with_the_size() {
+fn jump_flooding_exercise_1_jump_flooding_wins_past_a_crossover_that_moves_with_the_size() {
     let path = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("../../book/src/bench/voronoi-water.md");
     let table = std::fs::read_to_string(path).unwrap();
     let (lines_512, lines_1024) = (cost_lines(&table, 512), cost_lines(&table, 1024));
@@ -127,9 +132,9 @@ fn exercise_2_jump_flooding_wins_past_a_crossover_that_moves_with_the_size() {
 }
 
 // ANCHOR: two_cells
-/// Exercise 3: where the grid's first vertex is when the grid moves in
-/// steps of `step` whole cells (the chapter's snapping is 1; 0 does not
-/// snap at all), for a boat at `boat`.
+/// The endless sea lesson, exercise 1: where the grid's first vertex is
+/// when the grid moves in steps of `step` whole cells (the chapter's
+/// snapping is 1; 0 does not snap at all), for a boat at `boat`.
 fn grid_origin_in_steps(boat: Vec2, step: u32) -> Vec2 {
     let cells = boat / CELL;
     let half = (GRID_VERTICES / 2 - 1) as f32;
@@ -154,7 +159,7 @@ fn drawn_height(origin: Vec2, p: Vec2, time: f32) -> f32 {
 // ANCHOR_END: two_cells
 
 #[test]
-fn exercise_3_a_grid_snapped_to_two_cells_does_not_swim_either() {
+fn endless_sea_exercise_1_a_grid_snapped_to_two_cells_does_not_swim_either() {
     // The sea test's fixed points and moves: a fraction of a cell, then across.
     let start = Vec2::new(2050.3, 2047.1);
     let fixed: Vec<Vec2> = (0..40).map(|k| start + Vec2::new(k as f32 * 1.37 - 27.0, k as f32 * 0.71 - 14.0)).collect();
@@ -178,9 +183,10 @@ fn exercise_3_a_grid_snapped_to_two_cells_does_not_swim_either() {
 }
 
 // ANCHOR: gaussian
-/// Exercise 4: process.wgsl's blur as a Gaussian whose standard deviation
-/// is the box's, √(r (r + 1) / 3), out to three of them: run twice like
-/// the box, the same width as the tent the two boxes make.
+/// The water texture lesson, exercise 1: process.wgsl's blur as a Gaussian
+/// whose standard deviation is the box's, √(r (r + 1) / 3), out to three of
+/// them: run twice like the box, the same width as the tent the two boxes
+/// make.
 const GAUSSIAN_BLUR: (&str, &str) = (
     "    let r = i32(process.options.y);
     var sum = vec4<f32>(0.0);
@@ -261,9 +267,10 @@ fn encoded(linear: f32) -> f32 {
 }
 
 // ANCHOR: worley
-/// Exercise 5: F2 − F1 at `p`, the distance to the second-nearest site
-/// less the distance to the nearest (Worley 1996): zero on the cells'
-/// edges, growing into them. As the shader below works it out.
+/// The water texture lesson, exercise 2: F2 − F1 at `p`, the distance to
+/// the second-nearest site less the distance to the nearest (Worley 1996):
+/// zero on the cells' edges, growing into them. As the shader below works
+/// it out.
 fn f2_minus_f1(sites: &[Vec2], p: Vec2) -> f32 {
     let (mut f1, mut f2) = (f32::MAX, f32::MAX);
     for site in sites {
@@ -317,10 +324,11 @@ fn sobel(brightness: &[f32], size: usize) -> Vec<f32> {
         .collect()
 }
 
-/// Exercises 4 and 5 on the sea's texture at the snapshot time: the
-/// Gaussian against the two boxes, and F2 − F1 foam against Sobel's.
+/// The water texture lesson's exercises 1 and 2 on the sea's texture at the
+/// snapshot time: the Gaussian against the two boxes, and F2 − F1 foam
+/// against Sobel's.
 #[test]
-fn exercises_4_and_5_a_gaussian_blur_and_worleys_foam() {
+fn water_texture_exercises_1_and_2_a_gaussian_blur_and_worleys_foam() {
     compiles_with(
         shader!("voronoi-water/process.wgsl", imports: ["common/fullscreen.wgsl"]),
         "voronoi-water/process.wgsl",
@@ -336,7 +344,7 @@ fn exercises_4_and_5_a_gaussian_blur_and_worleys_foam() {
     let ids = diagram(&gpu, &sites, (size as u32, size as u32), &flooding);
     let brightness: Vec<f32> = ids.iter().map(|&id| cell_brightness(id)).collect();
 
-    // Exercise 4: both blurs, compared as 8-bit brightness.
+    // Exercise 1: both blurs, compared as 8-bit brightness.
     let (boxed, gaussian) = kernels(4);
     let (by_boxes, by_gaussian) =
         (blurred_twice(&brightness, size, &boxed), blurred_twice(&brightness, size, &gaussian));
@@ -348,7 +356,7 @@ fn exercises_4_and_5_a_gaussian_blur_and_worleys_foam() {
     measured::GAUSSIAN_MEAN.check("box twice against Gaussian twice, the mean difference", mean);
     measured::GAUSSIAN_WORST.check("box twice against Gaussian twice, the worst difference", worst);
 
-    // Exercise 5: on the cells' edges, foam where F2 − F1 is under 0.005
+    // Exercise 2: on the cells' edges, foam where F2 − F1 is under 0.005
     // of the tile (16 cm), against Sobel's foam (past half its ramp).
     let edge =
         |i: usize| ids[i] != ids[(i / size) * size + (i + 1) % size] || ids[i] != ids[(i + size) % (size * size)];
@@ -376,11 +384,11 @@ fn exercises_4_and_5_a_gaussian_blur_and_worleys_foam() {
 }
 
 // ANCHOR: wake
-/// Exercise 6: a wake, two arms of sites spreading behind the boat at
-/// Kelvin's 19.5° from its track: where the boat was each `spacing`
-/// seconds over the last `count` of them, pushed out to either side by
-/// tan 19.5° of how far behind it is now. In tile coordinates (the water
-/// texture repeats every 32 m), to join the wandering sites.
+/// The boat lesson, exercise 1: a wake, two arms of sites spreading behind
+/// the boat at Kelvin's 19.5° from its track: where the boat was each
+/// `spacing` seconds over the last `count` of them, pushed out to either
+/// side by tan 19.5° of how far behind it is now. In tile coordinates (the
+/// water texture repeats every 32 m), to join the wandering sites.
 fn wake_sites(time: f32, count: u32, spacing: f32) -> Vec<Vec2> {
     let mut sites = Vec::new();
     for k in 1..=count {
@@ -396,7 +404,7 @@ fn wake_sites(time: f32, count: u32, spacing: f32) -> Vec<Vec2> {
 // ANCHOR_END: wake
 
 #[test]
-fn exercise_6_a_wake_of_small_cells_behind_the_boat() {
+fn boat_exercise_1_a_wake_of_small_cells_behind_the_boat() {
     let gpu = Gpu::headless(VoronoiWaterChapter::gpu_needs()).unwrap();
     let time = voronoi_water::SNAPSHOT_TIME;
     let mut all = sites::positions(time);
@@ -417,30 +425,75 @@ fn exercise_6_a_wake_of_small_cells_behind_the_boat() {
     measured::WAKE_CELLS_SMALLER.check("how many times smaller a wake cell is", sea_cells / wake_cells);
 }
 
+// ANCHOR: shadow_reach
+/// The sunset lesson, exercise 1: how far along the sun's rays (towards
+/// `towards_sun`) the shadow of a point `height` metres above the lowest
+/// water runs before it reaches that water, were `shadow_focus` not to
+/// stop it at `SHADOW_REACH`; and the sun's height, in degrees, below
+/// which the cap cuts it short.
+fn uncapped_run(height: f32, towards_sun: Vec3) -> (f32, f32) {
+    (height / towards_sun.y, (height / SHADOW_REACH).asin().to_degrees())
+}
+// ANCHOR_END: shadow_reach
+
+#[test]
+fn sunset_exercise_1_the_mast_tops_shadow_would_run_132_m_at_sunset() {
+    // Worked by hand: the mast top is 8.2 − 0.5 = 7.7 m above the mean
+    // water for a boat on level water, and the lowest water, every wave in
+    // a trough, is 276.5 / 90 = 3.07 m below it (the amplitudes are 1/90
+    // of wavelengths summing to 276.5 m): 10.77 m in all.
+    let height = boat::MAST_TOP - boat::DRAFT + sea::sea_waves().iter().map(|w| w.amplitude).sum::<f32>();
+    assert!((height - 10.772).abs() < 1e-3, "{height}");
+    // The default view's sun at the snapshot: phase 0.735, where sin of
+    // the sun's height is cos 30° · sin(2π · 0.485) = 0.0815, 4.67°.
+    let phase = DayClock::default().phase(&Settings::SUNSET, voronoi_water::SNAPSHOT_TIME);
+    let sunset = atmosphere::sun_direction(phase);
+    assert!((sunset.y.asin().to_degrees() - 4.67).abs() < 0.01, "{}", sunset.y.asin().to_degrees());
+    // 10.77 m / 0.0815 = 132 m of ray; the cap cuts below asin(10.77 / 40).
+    let (run, cap_below) = uncapped_run(height, sunset);
+    println!("the mast top's shadow would run {run:.1} m; the cap cuts it below {cap_below:.1}°");
+    assert!((run - 132.2).abs() < 0.2, "{run}");
+    assert!((cap_below - 15.6).abs() < 0.05, "{cap_below}");
+    // The chapter's own function, for a level boat: its mast-top corner
+    // (the third of the eight) is followed 40 m at sunset, and at noon
+    // the whole 10.77 / cos 30° = 12.44 m.
+    let helm = Helm { position: Vec2::new(2048.0, 2048.0), heading: 0.0, speed: 0.0 };
+    let level = Pose { helm, heave: 0.0, pitch: 0.0, roll: 0.0 };
+    let followed = |towards: Vec3| {
+        let (focus, _) = shadow_focus(&level, &sea::sea_waves(), towards);
+        (focus[8 + 2] - focus[2]).length()
+    };
+    assert!((followed(sunset) - SHADOW_REACH).abs() < 1e-3, "{}", followed(sunset));
+    assert!((followed(atmosphere::sun_direction(0.5)) - 12.44).abs() < 0.01);
+}
+
 /// Measured: what these tests got by running the chapter (its Voronoi
-/// diagrams, its sea's grid) and copied with page 11's solutions, which
+/// diagrams, its sea's grid) and copied with chapter 11's solutions, which
 /// say they are measured (`common::book_figures::Measured`: change
 /// detectors, not derivations).
 mod measured {
     use common::book_figures::Measured;
 
-    /// Exercise 1: cones of 3, 8 and 64 segments at 3 s: pixels of 96,000
-    /// given the wrong site, and the worst error, pixels.
+    /// The cones lesson's exercise 1: cones of 3, 8 and 64 segments at
+    /// 3 s: pixels of 96,000 given the wrong site, and the worst error,
+    /// pixels.
     pub const CONE_ERRORS: [(u32, usize, f32); 3] = [(3, 21_892, 22.9), (8, 2533, 2.33), (64, 42, 0.01)];
-    /// Exercise 3: how far the drawn sea moves at a fixed point when the
-    /// grid follows the boat unsnapped, m.
+    /// The endless sea lesson's exercise 1: how far the drawn sea moves
+    /// at a fixed point when the grid follows the boat unsnapped, m.
     pub const UNSNAPPED_MOVE: Measured = Measured::new(0.054, 0.002);
-    /// Exercise 4: box twice against Gaussian twice, mean and worst
-    /// difference in 8-bit levels.
+    /// The water texture lesson's exercise 1: box twice against
+    /// Gaussian twice, mean and worst difference in 8-bit levels.
     pub const GAUSSIAN_MEAN: Measured = Measured::new(0.057, 0.005);
     pub const GAUSSIAN_WORST: Measured = Measured::new(0.90, 0.05);
-    /// Exercise 5: the cells' edge pixels, and the share Sobel's foam covers
-    /// at half strength or more, and at all.
+    /// The water texture lesson's exercise 2: the cells' edge pixels,
+    /// and the share Sobel's foam covers at half strength or more, and
+    /// at all.
     pub const EDGE_PIXELS: usize = 8931;
     pub const SOBEL_COVERS: Measured = Measured::new(0.059, 0.005);
     pub const SOBEL_TOUCHES: Measured = Measured::new(0.447, 0.01);
-    /// Exercise 6: a wandering site's cell and a wake site's, pixels on
-    /// average, and how many times smaller the wake's is.
+    /// The boat lesson's exercise 1: a wandering site's cell and a wake
+    /// site's, pixels on average, and how many times smaller the wake's
+    /// is.
     pub const SEA_CELL: Measured = Measured::new(873.0, 9.0);
     pub const WAKE_CELL: Measured = Measured::new(302.0, 4.0);
     pub const WAKE_CELLS_SMALLER: Measured = Measured::new(2.89, 0.087);
