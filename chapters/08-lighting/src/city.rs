@@ -480,8 +480,10 @@ impl City {
         let mut poses = Vec::new();
         let mut drones = Vec::new();
         for car in &self.cars {
+            // ANCHOR: car_pose
             let pose = car.path.at(car_time);
             let place = Mat4::from_rotation_translation(Quat::from_rotation_y(pose.heading), pose.position);
+            // ANCHOR_END: car_pose
             let part = |shape, offset: Vec3, scale: Vec3, material| Piece {
                 shape,
                 model: place * Mat4::from_scale_rotation_translation(scale, Quat::IDENTITY, offset),
@@ -503,6 +505,7 @@ impl City {
                     Material::TailLight,
                 ));
             }
+            // ANCHOR: car_lights
             // The headlight: a spot riding with the car, looking ahead and a little down.
             let ahead = pose.forward();
             let down = (ahead - Vec3::Y * 0.22).normalize();
@@ -518,11 +521,14 @@ impl City {
                 Vec3::new(1.0, 0.05, 0.02) * 10.0,
                 7.0,
             ));
+            // ANCHOR_END: car_lights
             poses.push(pose);
         }
         for drone in &self.drones {
+            // ANCHOR: drone_bob
             let t = drone_time + drone.phase;
             let centre = drone.position + Vec3::Y * 1.2 * (TAU * t / 3.3).sin();
+            // ANCHOR_END: drone_bob
             let place = Mat4::from_rotation_translation(Quat::from_rotation_y(0.1 * t), centre);
             let part = |shape, offset: Vec3, rotation: Quat, scale: Vec3, material| Piece {
                 shape,

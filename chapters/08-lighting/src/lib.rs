@@ -7,53 +7,69 @@
 //! its height, a river with tides, trees and roads; on the towers, parts
 //! that move; across the river, a billboard lit by spot lights.
 //!
-//! The modules below come in the order the book explains them; the
+//! The modules below come in the order the book's lessons teach them; the
 //! re-exports after them are the pieces later chapters compose.
 
+// The sun by time of day; point and spot lights, how they fall off, their cones.
+pub mod lights;
+// The three terms a surface reflects, one at a time: ambient, diffuse, specular.
+pub mod light_terms;
+// The city's pieces on the GPU: normals of scaled pieces; shaded flat, Gouraud or Phong.
+pub mod city_meshes;
 // How cars and drones move: paths, poses, clocks that pause.
 pub mod paths;
 // The city as data: pieces, materials, lamps, traffic.
 pub mod city;
-// Lights, how they fall off, and the sun by time of day.
-pub mod lights;
+// Parts of buildings that move: a turning crown, a sliding sign.
+pub mod moving_parts;
+// The billboard on the hill, lit by spot lights.
+pub mod billboard;
+// The lights that shine in a frame, and the bench's extra beacons.
+pub mod frame_lights;
+// Which lights reach which cluster of the view.
+pub mod clusters;
+// The frame's camera, sun, lights and cluster lists as group 0 of `lights.wgsl`.
+pub mod scene_lights;
+// How many lights the loop visits per pixel: what culling saves.
+pub mod lights_per_pixel;
+// The bright light, blurred wide.
+pub mod bloom;
+// From the HDR picture to the screen: HDR target, bloom, tone map, FXAA.
+pub mod post;
+// Smoothing the finished picture's edges: FXAA.
+pub mod fxaa;
 // Physically based shading: microfacets, GGX, Smith, Schlick; the split-sum table.
 pub mod pbr;
 // The sky as a light: its radiance in nine spherical harmonics, by compute.
 pub mod irradiance;
 // The sky as a mirror: a cube map blurred by roughness, level by level, by compute.
 pub mod prefiltered_sky;
-// The city's pieces on the GPU, shaded flat, Gouraud or Phong.
-pub mod city_meshes;
-// Which lights reach which cluster of the view.
-pub mod clusters;
-// The frame's camera, sun, lights and cluster lists as group 0 of `lights.wgsl`.
-pub mod scene_lights;
-// The bright light, blurred wide.
-pub mod bloom;
-// Smoothing the finished picture's edges: FXAA.
-pub mod fxaa;
-// From the HDR picture to the screen: HDR target, bloom, tone map, FXAA.
-pub mod post;
+// Two rows of spheres, rougher left to right: paint above, gold below.
+pub mod material_spheres;
 // The sky over the city.
 pub mod city_sky;
 // Around the city: ground by a height function, a river with tides, trees, roads.
 pub mod countryside;
-// Parts of buildings that move: a turning crown, a sliding sign.
-pub mod moving_parts;
-// The billboard on the hill, lit by spot lights.
-pub mod billboard;
-// Two rows of spheres, rougher left to right: paint above, gold below.
-pub mod material_spheres;
-// The chapter itself: its settings, views, cameras and frame.
+// The scene assembled for the GPU: meshes, models, the billboard, the materials.
+pub mod scenery;
+// Where the camera goes: the aerial view, the sphere's close-up, the places, the rides.
+pub mod camera_presets;
+// The views, written once, and the settings each applies.
+pub mod views;
+// The chapter itself: `impl Chapter`, which wires the pieces into a frame.
 pub mod demo;
 
+pub use camera_presets::{
+    CameraPreset, Riding, aerial_camera, billboard_camera, drone_camera, follow_camera, hill_camera, landscape_camera,
+    lollipop_camera, rooftop_camera, skyline_camera, sphere_camera, street_camera,
+};
 pub use city_meshes::{GpuInstance, GpuMaterial, faceted};
 pub use city_sky::CitySky;
-pub use demo::{
-    CameraPreset, Display, LightCount, LightTerm, LightingChapter, Riding, Settings, Shading, VIEW_TABLE,
-    aerial_camera, beacons, billboard, billboard_camera, drone_camera, follow_camera, frame_lights, hill_camera,
-    landscape_camera, lollipop_camera, rooftop_camera, skyline_camera, sphere_camera, street_camera,
-};
+pub use demo::LightingChapter;
+pub use frame_lights::{LightCount, beacons, frame_lights};
 pub use fxaa::Fxaa;
+pub use light_terms::LightTerm;
 pub use post::{HDR_FORMAT, HdrTarget, PostChain, PostOutput, PostSettings, ToneMap};
 pub use scene_lights::{Highlight, LoopOptions, MAX_LIGHTS, SceneLights};
+pub use scenery::billboard;
+pub use views::{Display, Settings, Shading, VIEW_TABLE};

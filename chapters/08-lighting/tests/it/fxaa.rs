@@ -9,11 +9,11 @@ use common::texture::{linear_to_srgb, srgb_to_linear};
 use common::{Antialiasing, DrawCounts, Frame, Gpu, GpuNeeds, PassTimer, Target, wgpu};
 use lighting::Fxaa;
 
-const SIZE: (u32, u32) = (192, 96);
+pub(crate) const SIZE: (u32, u32) = (192, 96);
 
 /// Runs FXAA over `linear`, a picture given as one grey level (linear
 /// light, 0 to 1) a pixel, row by row; returns the result the same way.
-fn fxaa(gpu: &Gpu, linear: &[f32]) -> Vec<f32> {
+pub(crate) fn fxaa(gpu: &Gpu, linear: &[f32]) -> Vec<f32> {
     let (width, height) = SIZE;
     let size = wgpu::Extent3d { width, height, depth_or_array_layers: 1 };
     let input = gpu.device.create_texture(&wgpu::TextureDescriptor {

@@ -1,6 +1,6 @@
 //! Chapter 08's integration tests, one binary: the bloom chain, `--camera`
 //! on a riding view, light extremes, the three shading models and the three terms of the light,
-//! the worked solutions to the page's exercises, the tone map pass
+//! the worked solutions to the lessons' exercises, the tone map pass
 //! against its Rust mirror, FXAA on edges whose coverage is known, and the
 //! physics of Cook-Torrance.
 //!

@@ -1,19 +1,26 @@
-//! Worked solutions to the exercises on chapter 08's page. Each makes the
-//! change its exercise asks for and asserts the figure the page's solution
-//! states, so that the solutions are built and checked with the chapter.
+//! Worked solutions to the exercises on chapter 08's lessons. Each makes
+//! the change its exercise asks for and asserts the figure the lesson's
+//! solution states, so that the solutions are built and checked with the
+//! chapter; a test's name starts with its lesson's (`highlights_exercise_1_…`
+//! is exercise 1 of highlights.md).
 //! Changes to a shader are text edits of the real file, composed and
 //! validated by naga as the chapter's loader does: an edit whose text is no
 //! longer in the shader fails here instead of rotting on the page.
 
 use std::collections::HashMap;
+use std::f32::consts::PI;
 
 use common::book_figures::Measured;
-use common::glam::{Vec2, Vec3};
+use common::glam::{Mat3, Mat4, Vec2, Vec3};
 use common::headless::{OFFSCREEN_FORMAT, capture, read_floats};
 use common::{Camera, Chapter, Gpu, ShaderFile, Target, chapter::view_index, image, shader};
-use lighting::city::City;
+use lighting::GpuInstance;
+use lighting::city::{City, Material};
 use lighting::clusters::{self, GRID};
 use lighting::lights::{Light, LightKind, TimeOfDay, daylight};
+use lighting::material_spheres;
+use lighting::paths::{PausableClock, SegmentedPath};
+use lighting::prefiltered_sky::PrefilteredSky;
 use lighting::{LightCount, LightingChapter, MAX_LIGHTS, aerial_camera, beacons, frame_lights, sphere_camera};
 
 /// `file` with `edits` made to the text of `path` (the file itself or a
@@ -37,7 +44,7 @@ fn pixel_ray(camera: &Camera, (x, y): (u32, u32), (width, height): (u32, u32)) -
 }
 
 // ANCHOR: blinn_match
-/// Exercise 1: the shininess that makes Blinn's highlight on the glass
+/// Highlights, exercise 1: the shininess that makes Blinn's highlight on the glass
 /// sphere closest (least squares over the pixels) to Phong's at
 /// `phong_shininess`, as the `phong` view sees it in the morning sun.
 /// Both highlights are normalised as lights.wgsl normalises them.
@@ -75,18 +82,18 @@ fn blinn_shininess_matching_phong(phong_shininess: f32) -> f32 {
 // ANCHOR_END: blinn_match
 
 #[test]
-fn exercise_1_blinn_needs_about_four_times_phongs_shininess() {
+fn highlights_exercise_1_blinn_needs_about_four_times_phongs_shininess() {
     let blinn = blinn_shininess_matching_phong(96.0);
     println!("Blinn's highlight matches Phong's at 96 best at shininess {blinn} ({:.2} times)", blinn / 96.0);
     assert!((blinn - BLINN_MATCHING_96).abs() <= 8.0, "best match at {blinn}");
 }
 
-/// The best match exercise 1's solution states: derived here, from the
+/// The best match the highlights lesson's exercise 1 states: derived here, from the
 /// two highlights' formulas over the sphere as the view sees it.
 const BLINN_MATCHING_96: f32 = 352.0;
 
 // ANCHOR: city_falloff
-/// Exercise 2: the city project's falloff, which never reaches zero…
+/// Light casters, exercise 1: the city project's falloff, which never reaches zero…
 fn city_project_falloff(distance: f32) -> f32 {
     1.0 / (1.0 + 0.09 * distance + 0.032 * distance * distance)
 }
@@ -121,7 +128,7 @@ fn lamp_cluster_entries(count: usize, range: f32) -> usize {
 // ANCHOR_END: city_falloff
 
 #[test]
-fn exercise_2_the_city_projects_falloff_has_no_end_and_culling_pays_for_it() {
+fn light_casters_exercise_1_the_city_projects_falloff_has_no_end_and_culling_pays_for_it() {
     compiles_with(CITY, "lighting/lights.wgsl", &[CITY_PROJECT_FALLOFF]);
     // A street lamp hangs 6.6 m above the road and reaches 18 m.
     let (below, at_range) = (city_project_falloff(6.6), city_project_falloff(18.0));
@@ -140,7 +147,7 @@ fn exercise_2_the_city_projects_falloff_has_no_end_and_culling_pays_for_it() {
 }
 
 // ANCHOR: torch
-/// Exercise 3: a torch, a point light riding with the camera, added to a
+/// Clustered culling, exercise 1: a torch, a point light riding with the camera, added to a
 /// frame's lights.
 fn with_torch(mut lights: Vec<Light>, camera: &Camera) -> Vec<Light> {
     lights.push(Light { position: camera.position, colour: Vec3::splat(40.0), range: 25.0, kind: LightKind::Point });
@@ -161,7 +168,7 @@ fn covered_pixels(camera: &Camera, depths: &[[f32; 4]], width: u32) -> Vec<(u32,
 }
 
 // ANCHOR: grid
-/// Exercise 5: how many lights a fragment visits, on average over the
+/// Clustered culling, exercise 2: how many lights a fragment visits, on average over the
 /// pixels of a depth picture, with the view cut into `grid` clusters
 /// (across, down, deep), each listing the lights `cull` would list there:
 /// its two tests, for any grid.
@@ -286,7 +293,7 @@ fn lights_reaching(camera: &Camera, lights: &[Light], pixels: &[(u32, u32, f32)]
 }
 
 // ANCHOR: reinhard
-/// Exercise 4: Reinhard's operator in place of the ACES fit, in tonemap.wgsl.
+/// HDR, tone mapping and bloom, exercise 1: Reinhard's operator in place of the ACES fit, in tonemap.wgsl.
 const REINHARD: (&str, &str) = (
     "return clamp((x * (2.51 * x + 0.03)) / (x * (2.43 * x + 0.59) + 0.14), vec3<f32>(0.0), vec3<f32>(1.0));",
     "return x / (1.0 + x);",
@@ -301,10 +308,12 @@ fn luminance_and_saturation(p: &image::Rgba<u8>) -> (f32, f32) {
     (0.2126 * r + 0.7152 * g + 0.0722 * b, if max > 0.0 { (max - min) / max } else { 0.0 })
 }
 
-/// Exercises 3 to 5 on one night city: a torch from the street and from the
-/// air; the grid's lights per fragment; and the night under Reinhard's curve.
+/// Three exercises on one night city (one chapter made, for all three):
+/// clustered culling's two, a torch from the street and from the air, and
+/// the grid's lights per fragment; and HDR's, the night under Reinhard's
+/// curve.
 #[test]
-fn exercises_3_to_5_on_the_night_city() {
+fn culling_exercises_1_and_2_and_hdr_exercise_1_on_the_night_city() {
     let root = shader::scratch_copy("lighting-solutions").unwrap();
     let gpu = Gpu::headless(LightingChapter::gpu_needs()).expect("an adapter (lavapipe will do)");
     gpu.read_shaders_from(Some(root.clone()));
@@ -324,7 +333,7 @@ fn exercises_3_to_5_on_the_night_city() {
         (picture, covered_pixels(&camera, &depths, size.0))
     };
 
-    // Exercise 3: the share of the pixels whose cluster lists the torch:
+    // Clustered culling, exercise 1: the share of the pixels whose cluster lists the torch:
     // measured from the street; from the air none, since the aerial camera
     // is 120 m up, farther from everything it sees than the torch reaches.
     let aspect = target.aspect();
@@ -339,7 +348,7 @@ fn exercises_3_to_5_on_the_night_city() {
         expected.check("the share of the pixels whose list holds the torch", share);
     }
 
-    // Exercise 5: lights per fragment at 256 lights, by grid.
+    // Clustered culling, exercise 2: lights per fragment at 256 lights, by grid.
     let camera = aerial_camera(aspect);
     let (_, pixels) = draw(&mut chapter, "lights-256", camera);
     let traffic = chapter.city.traffic(chapter.clocks.cars.time(time), chapter.clocks.drones.time(time));
@@ -362,7 +371,7 @@ fn exercises_3_to_5_on_the_night_city() {
     measured::PREDICTED_COST.check("the predicted cost of the 256-light frame", cost);
     measured::REACHING_256.check("lights that reach a visible point", finest);
 
-    // Exercise 4: the night under ACES, then under Reinhard.
+    // HDR, exercise 1: the night under ACES, then under Reinhard.
     let camera = aerial_camera(aspect);
     let (aces, _) = draw(&mut chapter, "night", camera);
     let file = root.join("lighting/tonemap.wgsl");
@@ -401,27 +410,28 @@ fn exercises_3_to_5_on_the_night_city() {
     let _ = std::fs::remove_dir_all(&root);
 }
 
-/// Measured: what exercises 2 to 5 got by running the chapter's culling
-/// and drawing the night city at 320 × 180, the city alone (its
-/// countryside switched off), copied with page 08's solutions, which say
-/// they are measured (`common::book_figures::Measured`: change detectors).
+/// Measured: what the exercises of light casters, clustered culling and
+/// HDR got by running the chapter's culling and drawing the night city at
+/// 320 × 180, the city alone (its countryside switched off), copied with
+/// the lessons' solutions, which say they are measured
+/// (`common::book_figures::Measured`: change detectors).
 mod measured {
     use common::book_figures::Measured;
 
-    /// Exercise 2: the first 16 street lamps' entries in the aerial
+    /// Light casters, exercise 1: the first 16 street lamps' entries in the aerial
     /// view's cluster lists, at 18 m and at 153 m of range, and the ratio.
     pub const LAMP_ENTRIES_AT_18_M: Measured = Measured::new(475.0, 5.0);
     pub const LAMP_ENTRIES_AT_153_M: Measured = Measured::new(35_891.0, 360.0);
     pub const LAMP_LIST_GROWTH: Measured = Measured::new(75.6, 3.8);
-    /// Exercise 3: the share of the street view's pixels whose cluster lists the torch.
+    /// Clustered culling, exercise 1: the share of the street view's pixels whose cluster lists the torch.
     pub const TORCH_FROM_THE_STREET: Measured = Measured::new(0.496, 0.02);
-    /// Exercise 5: lights a fragment visits at 256 lights with a 16 × 9 ×
+    /// Clustered culling, exercise 2: lights a fragment visits at 256 lights with a 16 × 9 ×
     /// 24 grid, what the bench's grids predict that costs, and the lights
     /// that really reach a visible point.
     pub const VISITED_16_9_24: Measured = Measured::new(9.16, 0.18);
     pub const PREDICTED_COST: Measured = Measured::new(3.28, 0.05);
     pub const REACHING_256: Measured = Measured::new(0.70, 0.02);
-    /// Exercise 4: dark streets (under 24 of 255 with ACES), their mean;
+    /// HDR, exercise 1: dark streets (under 24 of 255 with ACES), their mean;
     /// the brightest pixels (over 200 with ACES), their saturation and brightness.
     pub const DARK_ACES: Measured = Measured::new(18.7, 0.5);
     pub const DARK_REINHARD: Measured = Measured::new(30.4, 0.5);
@@ -432,7 +442,7 @@ mod measured {
 }
 
 // ANCHOR: facet_weighted
-/// Exercise 6: what a white non-metal of roughness 0.2, seen at n·v = 0.1,
+/// Physically based shading, exercise 1: what a white non-metal of roughness 0.2, seen at n·v = 0.1,
 /// sends back of an even white sky when its diffuse part is weighted by
 /// Fresnel at the facet, (1 − F(v·h)), instead of by what Fresnel lets in
 /// and out, (1 − F(n·l))(1 − F(n·v)) as brdf.wgsl does.
@@ -440,7 +450,7 @@ const FACET_WEIGHTED_FURNACE: f32 = 1.43;
 const COUPLED_FURNACE: f32 = 0.85;
 
 #[test]
-fn exercise_6_weighting_the_diffuse_by_the_facets_fresnel_makes_light() {
+fn microfacets_exercise_1_weighting_the_diffuse_by_the_facets_fresnel_makes_light() {
     use lighting::pbr::{self, Physical};
     let white = Physical { base_colour: Vec3::ONE, metallic: 0.0, roughness: 0.2 };
     let facet_weighted = |v: Vec3, l: Vec3| {
@@ -457,3 +467,210 @@ fn exercise_6_weighting_the_diffuse_by_the_facets_fresnel_makes_light() {
     assert!((coupled - COUPLED_FURNACE).abs() < 0.005, "{coupled}");
 }
 // ANCHOR_END: facet_weighted
+
+// ANCHOR: morning_sun
+/// Light arriving, exercise 1: the share of the morning sun's light that a
+/// face with `normal` receives, Lambert's n · l clamped at zero.
+fn morning_sunlight(normal: Vec3) -> f32 {
+    let sun = daylight(TimeOfDay::Morning.phase(0.0, 1.0)).direction;
+    normal.dot(sun).max(0.0)
+}
+// ANCHOR_END: morning_sun
+
+#[test]
+fn light_arriving_exercise_1_the_morning_sun_on_roofs_and_walls() {
+    // By hand: chapter 06's sunrise, (0.958, 0, 0.287), turned 21.6° about z.
+    let sun = daylight(TimeOfDay::Morning.phase(0.0, 1.0)).direction;
+    let by_hand = Vec3::new(0.958 * 21.6f32.to_radians().cos(), 0.958 * 21.6f32.to_radians().sin(), 0.287);
+    assert!(sun.distance(by_hand) < 2e-3, "the morning sun is {sun}, by hand {by_hand}");
+    assert!(sun.distance(Vec3::new(0.891, 0.353, 0.287)) < 1e-3, "{sun}");
+    assert!((sun.y.asin().to_degrees() - 20.6).abs() < 0.05, "the sun's elevation");
+    for (face, normal, share) in
+        [("roof", Vec3::Y, 0.353), ("east", Vec3::X, 0.891), ("south", Vec3::Z, 0.287), ("west", Vec3::NEG_X, 0.0)]
+    {
+        let got = morning_sunlight(normal);
+        println!("the morning sun on a {face}-facing face: {got:.3} of its light");
+        assert!((got - share).abs() < 1e-3, "{face}: {got} against {share}");
+    }
+    // A face turned 60° from the sun gets half.
+    let tilt = common::glam::Quat::from_axis_angle(sun.cross(Vec3::Y).normalize(), 60f32.to_radians());
+    assert!((morning_sunlight(tilt * sun) - 0.5).abs() < 1e-5);
+}
+
+// ANCHOR: scaled_normal
+/// Where the loop runs, exercise 1: the normal at the unit sphere's point
+/// (1, 1, 0)/√2 after a scale of (2, 1, 1), turned by the model matrix and
+/// by the normal matrix `GpuInstance` carries (the inverse transpose).
+fn egg_normals() -> (Vec3, Vec3) {
+    let model = Mat4::from_scale(Vec3::new(2.0, 1.0, 1.0));
+    let normal = Vec3::new(1.0, 1.0, 0.0).normalize();
+    let columns = GpuInstance::new(model, Material::Glass).normal.map(|c| Vec3::new(c[0], c[1], c[2]));
+    let normal_matrix = Mat3::from_cols(columns[0], columns[1], columns[2]);
+    (model.transform_vector3(normal).normalize(), (normal_matrix * normal).normalize())
+}
+// ANCHOR_END: scaled_normal
+
+#[test]
+fn where_the_loop_runs_exercise_1_an_eggs_normal_needs_the_inverse_transpose() {
+    let (by_model, by_normal_matrix) = egg_normals();
+    // The egg is x²/4 + y² + z² = 1; its normal is the gradient (x/2, 2y, 2z)
+    // at the point the sphere's (1, 1, 0)/√2 went to.
+    let point = Vec3::new(2.0, 1.0, 0.0) / 2f32.sqrt();
+    let gradient = Vec3::new(point.x / 2.0, 2.0 * point.y, 2.0 * point.z).normalize();
+    println!("the egg's normal: {by_model} by the model matrix, {by_normal_matrix} by its inverse transpose");
+    assert!(by_normal_matrix.distance(gradient) < 1e-5, "{by_normal_matrix} against the gradient {gradient}");
+    assert!(by_normal_matrix.distance(Vec3::new(0.447, 0.894, 0.0)) < 1e-3);
+    assert!(by_model.distance(Vec3::new(0.894, 0.447, 0.0)) < 1e-3);
+    let apart = by_model.dot(by_normal_matrix).acos().to_degrees();
+    assert!((apart - 36.9).abs() < 0.05, "{apart}° apart");
+}
+
+// ANCHOR: lap
+/// Lights that move, exercise 1: a car on a 60 × 40 m rounded rectangle
+/// with corners of 10 m, at 10 m/s, leaving the origin facing −z…
+fn exercise_path() -> SegmentedPath {
+    let segments = SegmentedPath::rounded_rectangle(60.0, 40.0, 10.0, true);
+    SegmentedPath { start: Vec2::ZERO, height: 0.0, heading: 0.0, segments, speed: 10.0 }
+}
+
+/// …and its clock, paused at 10 s of scene time and resumed at 14 s.
+fn paused_clock() -> PausableClock {
+    let mut clock = PausableClock::default();
+    clock.set_paused(true, 10.0);
+    clock.set_paused(false, 14.0);
+    clock
+}
+// ANCHOR_END: lap
+
+#[test]
+fn moving_lights_exercise_1_a_lap_a_pose_and_a_pause() {
+    let path = exercise_path();
+    let pose = path.at(5.0);
+    println!(
+        "a lap of {} m in {} s; after 5 s at {} facing {} rad",
+        path.length(),
+        path.period(),
+        pose.position,
+        pose.heading
+    );
+    // By hand: straights of 40, 20, 40 and 20 m and four quarter turns of 10 m.
+    assert!((path.length() - (120.0 + 4.0 * 10.0 * std::f32::consts::FRAC_PI_2)).abs() < 1e-3);
+    assert!((path.length() - 182.83).abs() < 0.005 && (path.period() - 18.28).abs() < 0.005);
+    // 40 m to (0, −40), then 10 m, one radian, round the turn's centre at (−10, −40).
+    let by_hand = Vec3::new(-10.0 + 10.0 * 1f32.cos(), 0.0, -40.0 - 10.0 * 1f32.sin());
+    assert!(pose.position.distance(by_hand) < 1e-3, "{} against {by_hand}", pose.position);
+    assert!(pose.position.distance(Vec3::new(-4.60, 0.0, -48.41)) < 0.01);
+    assert!((pose.heading - 1.0).abs() < 1e-4);
+    assert_eq!(paused_clock().time(19.0), 15.0);
+}
+
+// ANCHOR: fxaa_edges
+/// FXAA, exercise 1: a staircase between two greys given by their
+/// lightness (the square root of luminance, as fxaa.wgsl measures it): a
+/// straight edge of slope 0.4 drawn at one sample a pixel, `dark` below
+/// it and `light` above, in linear light.
+fn staircase(dark: f32, light: f32) -> Vec<f32> {
+    let (width, height) = crate::fxaa::SIZE;
+    let below =
+        move |x: u32, y: u32| y as f32 + 0.5 > height as f32 / 2.0 + 0.4 * (x as f32 + 0.5 - width as f32 / 2.0);
+    let pixels = (0..height).flat_map(move |y| (0..width).map(move |x| (x, y)));
+    pixels.map(|(x, y)| if below(x, y) { dark * dark } else { light * light }).collect()
+}
+// ANCHOR_END: fxaa_edges
+
+#[test]
+fn fxaa_exercise_1_which_steps_between_greys_are_edges() {
+    let gpu = Gpu::headless(common::GpuNeeds::default()).expect("an adapter (lavapipe will do)");
+    let level = |g: f32| (common::texture::linear_to_srgb(g) * 255.0).round() as u8;
+    for (name, dark, light, edge) in
+        [("a", 0.50, 0.60, true), ("b", 0.80, 0.88, false), ("c", 0.10, 0.125, false), ("d", 0.10, 0.14, true)]
+    {
+        // By hand: the spread against max(0.0312, 0.125 × the brightest).
+        assert_eq!(light - dark >= f32::max(0.0312, 0.125 * light), edge, "({name}) by hand");
+        let picture = staircase(dark, light);
+        let smoothed = crate::fxaa::fxaa(&gpu, &picture);
+        let changed = picture.iter().zip(&smoothed).filter(|(a, b)| level(**a) != level(**b)).count();
+        println!("({name}) lightness {dark} against {light}: FXAA changes {changed} pixels");
+        if edge {
+            assert!(changed >= 100, "({name}) is an edge, but FXAA changed {changed} pixels");
+        } else {
+            assert_eq!(changed, 0, "({name}) is no edge, but FXAA changed {changed} pixels");
+        }
+    }
+}
+
+// ANCHOR: monte_carlo
+/// The sky as a light, exercise 1: the i-th of n Hammersley points, as
+/// brdf.wgsl's `hammersley` makes them…
+fn hammersley(i: u32, n: u32) -> (f32, f32) {
+    (i as f32 / n as f32, i.reverse_bits() as f32 * 2.328_306_4e-10)
+}
+
+/// …and ∫ n·l dω over the hemisphere estimated from the first n of them:
+/// each sample's cos θ divided by the density of its direction, averaged.
+/// Evenly: cos θ = 1 − u₂, density 1/2π. Cosine-weighted: cos θ = √(1 − u₂),
+/// density cos θ / π. (The angle round the normal, 2π u₁, changes neither.)
+fn cosine_integral(n: u32, cosine_weighted: bool) -> f32 {
+    let sample = |i| {
+        let (_, u2) = hammersley(i, n);
+        let (cos_theta, density) =
+            if cosine_weighted { ((1.0 - u2).sqrt(), (1.0 - u2).sqrt() / PI) } else { (1.0 - u2, 1.0 / (2.0 * PI)) };
+        cos_theta / density
+    };
+    (0..n).map(sample).sum::<f32>() / n as f32
+}
+// ANCHOR_END: monte_carlo
+
+#[test]
+fn sky_light_exercise_1_monte_carlo_and_importance_sampling() {
+    // The same points as the shader's.
+    let brdf =
+        std::fs::read_to_string(concat!(env!("CARGO_MANIFEST_DIR"), "/../../shaders/lighting/brdf.wgsl")).unwrap();
+    assert!(brdf.contains("vec2<f32>(f32(i) / f32(n), f32(reverseBits(i)) * 2.3283064365386963e-10)"));
+    let (even, even_1024) = (cosine_integral(16, false), cosine_integral(1024, false));
+    println!(
+        "∫ n·l dω = π: evenly {even:.4} (16 points), {even_1024:.4} (1,024); cosine-weighted {}",
+        cosine_integral(16, true)
+    );
+    // By hand: the second coordinates are 0, 1/16, …, 15/16 once each.
+    assert!((even - 2.0 * PI * 17.0 / 32.0).abs() < 1e-5 && (even - 3.338).abs() < 5e-4);
+    assert!((even_1024 - 2.0 * PI * 1025.0 / 2048.0).abs() < 1e-4 && (even_1024 - 3.145).abs() < 5e-4);
+    for n in [1, 16, 1024] {
+        assert!((cosine_integral(n, true) - PI).abs() < 1e-4, "{n} cosine-weighted points");
+    }
+}
+
+// ANCHOR: cube_level
+/// The sky as a mirror, exercise 1: the level of the prefiltered cube a
+/// surface of `roughness` reads (`sky_light` in lights.wgsl), and the two
+/// levels trilinear filtering blends for it, with the share of the second.
+fn cube_levels(roughness: f32) -> (f32, u32, u32, f32) {
+    let level = roughness.clamp(0.0, 1.0) * (PrefilteredSky::LEVELS - 1) as f32;
+    let below = (level.floor() as u32).min(PrefilteredSky::LEVELS - 1);
+    let above = (below + 1).min(PrefilteredSky::LEVELS - 1);
+    (level, below, above, level - below as f32)
+}
+// ANCHOR_END: cube_level
+
+#[test]
+fn prefiltered_sky_exercise_1_the_levels_a_sphere_reads() {
+    let lights =
+        std::fs::read_to_string(concat!(env!("CARGO_MANIFEST_DIR"), "/../../shaders/lighting/lights.wgsl")).unwrap();
+    assert!(lights.contains("let level = clamp(surface.roughness, 0.0, 1.0) * f32(textureNumLevels(sky_cube) - 1u);"));
+    let roughness = material_spheres::ROUGHNESS[2];
+    let (level, below, above, share) = cube_levels(roughness);
+    println!(
+        "roughness {roughness}: level {level}, {:.0} % of level {below} and {:.0} % of level {above}",
+        100.0 * (1.0 - share),
+        100.0 * share
+    );
+    assert!((level - 1.2).abs() < 1e-5 && (below, above) == (1, 2) && (share - 0.2).abs() < 1e-5);
+    assert_eq!((PrefilteredSky::SIZE >> below, PrefilteredSky::SIZE >> above), (32, 16));
+    let blurred_for = [below, above].map(PrefilteredSky::roughness_of);
+    assert!((blurred_for[0] - 1.0 / 3.0).abs() < 1e-6 && (blurred_for[1] - 2.0 / 3.0).abs() < 1e-6);
+    assert!(((1.0 - share) * blurred_for[0] + share * blurred_for[1] - roughness).abs() < 1e-6);
+    // The last sphere reads the last level alone.
+    let (level, below, _, share) = cube_levels(material_spheres::ROUGHNESS[5]);
+    assert!(level == 3.0 && below == 3 && share == 0.0);
+    assert_eq!((PrefilteredSky::SIZE >> below, PrefilteredSky::roughness_of(below)), (8, 1.0));
+}
