@@ -79,6 +79,7 @@ fn height_at(sample: vec2<u32>) -> f32 {
 }
 
 // ANCHOR: morph
+// ANCHOR: morph_factor
 // How far a vertex of `level`, `distance` metres from the eye, has turned
 // into the next level: 0 until the morph starts, 1 at the range's end.
 fn morph_factor(level: u32, distance: f32) -> f32 {
@@ -89,7 +90,9 @@ fn morph_factor(level: u32, distance: f32) -> f32 {
     let start = globals.lod.y * end;
     return clamp((distance - start) / (end - start), 0.0, 1.0);
 }
+// ANCHOR_END: morph_factor
 
+// ANCHOR: terrain_vertex
 fn terrain_vertex(vertex_index: u32, this_patch: vec3<u32>) -> VertexOutput {
     let side = PATCH_QUADS + 1u;
     let local = vec2<u32>(vertex_index % side, vertex_index / side);
@@ -127,6 +130,7 @@ fn terrain_vertex(vertex_index: u32, this_patch: vec3<u32>) -> VertexOutput {
 #endif
     return out;
 }
+// ANCHOR_END: terrain_vertex
 // ANCHOR_END: morph
 
 // ANCHOR: normal
