@@ -78,7 +78,6 @@ fn height_at(sample: vec2<u32>) -> f32 {
     return textureLoad(heights, min(sample, vec2<u32>(globals.grid.w - 1u)), 0).r;
 }
 
-// ANCHOR: morph
 // ANCHOR: morph_factor
 // How far a vertex of `level`, `distance` metres from the eye, has turned
 // into the next level: 0 until the morph starts, 1 at the range's end.
@@ -103,6 +102,7 @@ fn terrain_vertex(vertex_index: u32, this_patch: vec3<u32>) -> VertexOutput {
     let unmorphed = vec3<f32>(sample.x * globals.scale.x, height, sample.y * globals.scale.x);
     let k = morph_factor(level, distance(unmorphed, globals.eye.xyz));
 
+    // ANCHOR: slide
     // A vertex at an odd place in the grid is one the next level does not
     // have. As it morphs it slides onto its even neighbour (one step back
     // along each odd axis), taking that neighbour's height with it; fully
@@ -117,6 +117,7 @@ fn terrain_vertex(vertex_index: u32, this_patch: vec3<u32>) -> VertexOutput {
         sample -= odd * f32(step) * k;
         y = mix(height, height_at(vec2<u32>(neighbour)), k);
     }
+    // ANCHOR_END: slide
     let world = vec3<f32>(sample.x * globals.scale.x, y, sample.y * globals.scale.x);
 
     var out: VertexOutput;
@@ -131,7 +132,6 @@ fn terrain_vertex(vertex_index: u32, this_patch: vec3<u32>) -> VertexOutput {
     return out;
 }
 // ANCHOR_END: terrain_vertex
-// ANCHOR_END: morph
 
 // ANCHOR: normal
 // The ground's normal under a point, from the normal map: filtered between
