@@ -159,6 +159,7 @@ fn ground_colour(height: f32, normal: vec3<f32>) -> vec3<f32> {
 }
 // ANCHOR_END: colour
 
+// ANCHOR: lit
 // Lambert's cosine law for the sun, plus ambient light from the sky, both
 // fading as the sun sets (some ambient stays: starlight).
 fn lit(colour: vec3<f32>, normal: vec3<f32>) -> vec3<f32> {
@@ -166,6 +167,7 @@ fn lit(colour: vec3<f32>, normal: vec3<f32>) -> vec3<f32> {
     let ambient = 0.05 + 0.15 * strength;
     return colour * (ambient + 0.9 * strength * max(dot(normal, globals.sun.xyz), 0.0));
 }
+// ANCHOR_END: lit
 
 // Lines along the drawn cells and their diagonals, a pixel wide at any
 // distance, fading out where cells get smaller than 2.5 pixels (denser lines
