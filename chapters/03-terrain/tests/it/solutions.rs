@@ -394,7 +394,7 @@ fn ground_exercise_2_the_walker_stands_4_25_m_up_and_the_triangle_is_4_m() {
             let wb = ((px - a.x) * (c.z - a.z) - (c.x - a.x) * (pz - a.z)) / area;
             let wc = ((b.x - a.x) * (pz - a.z) - (px - a.x) * (b.z - a.z)) / area;
             let wa = 1.0 - wb - wc;
-            (wa >= 0.0 && wb >= 0.0 && wc >= 0.0).then(|| wa * a.y + wb * b.y + wc * c.y)
+            (wa >= 0.0 && wb >= 0.0 && wc >= 0.0).then_some(wa * a.y + wb * b.y + wc * c.y)
         })
         .expect("a triangle holds the point");
     assert!((drawn - 4.0).abs() < 1e-5, "the drawn ground is {drawn} m");
