@@ -78,7 +78,7 @@ fn height_at(sample: vec2<u32>) -> f32 {
     return textureLoad(heights, min(sample, vec2<u32>(globals.grid.w - 1u)), 0).r;
 }
 
-// ANCHOR: morph
+// ANCHOR: morph_factor
 // How far a vertex of `level`, `distance` metres from the eye, has turned
 // into the next level: 0 until the morph starts, 1 at the range's end.
 fn morph_factor(level: u32, distance: f32) -> f32 {
@@ -89,7 +89,9 @@ fn morph_factor(level: u32, distance: f32) -> f32 {
     let start = globals.lod.y * end;
     return clamp((distance - start) / (end - start), 0.0, 1.0);
 }
+// ANCHOR_END: morph_factor
 
+// ANCHOR: terrain_vertex
 fn terrain_vertex(vertex_index: u32, this_patch: vec3<u32>) -> VertexOutput {
     let side = PATCH_QUADS + 1u;
     let local = vec2<u32>(vertex_index % side, vertex_index / side);
@@ -100,6 +102,7 @@ fn terrain_vertex(vertex_index: u32, this_patch: vec3<u32>) -> VertexOutput {
     let unmorphed = vec3<f32>(sample.x * globals.scale.x, height, sample.y * globals.scale.x);
     let k = morph_factor(level, distance(unmorphed, globals.eye.xyz));
 
+    // ANCHOR: slide
     // A vertex at an odd place in the grid is one the next level does not
     // have. As it morphs it slides onto its even neighbour (one step back
     // along each odd axis), taking that neighbour's height with it; fully
@@ -114,6 +117,7 @@ fn terrain_vertex(vertex_index: u32, this_patch: vec3<u32>) -> VertexOutput {
         sample -= odd * f32(step) * k;
         y = mix(height, height_at(vec2<u32>(neighbour)), k);
     }
+    // ANCHOR_END: slide
     let world = vec3<f32>(sample.x * globals.scale.x, y, sample.y * globals.scale.x);
 
     var out: VertexOutput;
@@ -127,7 +131,7 @@ fn terrain_vertex(vertex_index: u32, this_patch: vec3<u32>) -> VertexOutput {
 #endif
     return out;
 }
-// ANCHOR_END: morph
+// ANCHOR_END: terrain_vertex
 
 // ANCHOR: normal
 // The ground's normal under a point, from the normal map: filtered between
@@ -155,6 +159,7 @@ fn ground_colour(height: f32, normal: vec3<f32>) -> vec3<f32> {
 }
 // ANCHOR_END: colour
 
+// ANCHOR: lit
 // Lambert's cosine law for the sun, plus ambient light from the sky, both
 // fading as the sun sets (some ambient stays: starlight).
 fn lit(colour: vec3<f32>, normal: vec3<f32>) -> vec3<f32> {
@@ -162,6 +167,7 @@ fn lit(colour: vec3<f32>, normal: vec3<f32>) -> vec3<f32> {
     let ambient = 0.05 + 0.15 * strength;
     return colour * (ambient + 0.9 * strength * max(dot(normal, globals.sun.xyz), 0.0));
 }
+// ANCHOR_END: lit
 
 // Lines along the drawn cells and their diagonals, a pixel wide at any
 // distance, fading out where cells get smaller than 2.5 pixels (denser lines

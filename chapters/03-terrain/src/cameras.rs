@@ -1,6 +1,6 @@
 //! Where the chapter looks from, on any height field: the start camera
-//! that later chapters share, a close-up at the foot of the cliff, and the
-//! view from high overhead.
+//! that later chapters share, a close-up at the foot of the cliff (the one
+//! view that is a preset), and the view from high overhead.
 
 use common::Camera;
 use common::glam::Vec3;
@@ -42,6 +42,21 @@ pub fn overhead_camera(field: &HeightField, aspect: f32) -> Camera {
         aspect,
         near: 10.0,
         far: 6000.0,
+    }
+}
+
+/// The places a view can put the camera.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum CameraPreset {
+    /// At the foot of the cliff, where the wireframe's cells are large.
+    CloseUp,
+}
+
+impl CameraPreset {
+    pub fn camera(self, field: &HeightField, aspect: f32) -> Camera {
+        match self {
+            Self::CloseUp => close_up_camera(field, aspect),
+        }
     }
 }
 

@@ -30,6 +30,7 @@ impl Aabb {
     }
 }
 
+// ANCHOR: chunk_bounds
 /// The box around chunk (cx, cz) in world space: its 65 × 65 samples,
 /// border rows included.
 pub fn chunk_bounds(field: &HeightField, cx: u32, cz: u32) -> Aabb {
@@ -45,6 +46,7 @@ pub fn chunk_bounds(field: &HeightField, cx: u32, cz: u32) -> Aabb {
     let origin = Vec3::new(cx as f32 * size, low, cz as f32 * size);
     Aabb { min: origin, max: Vec3::new(origin.x + size, high, origin.z + size) }
 }
+// ANCHOR_END: chunk_bounds
 
 #[cfg(test)]
 mod tests {

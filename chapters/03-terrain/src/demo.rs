@@ -1,91 +1,22 @@
-//! The chapter itself: what each view decides, the views and their
-//! cameras, the overlay's controls, and `impl Chapter`, which draws the
-//! terrain from the flying camera, or from high above for `chunks`.
+//! The chapter itself, only its wiring: `impl Chapter`, which makes the
+//! terrain renderer and its pipeline, applies the views of `views.rs`,
+//! moves the camera over the ground, and draws the terrain from the flying
+//! camera (or, for `quadtree`, from high above); and the overlay's controls.
 
 use std::sync::Arc;
 
 use common::{
     Camera, Chapter, ChapterFlag, FlagValues, FlyController, Frame, Gpu, Input, Preparation, Reloadable, SceneTargets,
-    ShaderFile, Target, View, ViewRow, anyhow, egui, shader, views_of, wgpu,
+    ShaderFile, Target, View, anyhow, egui, shader, views_of, wgpu,
 };
 
-use crate::cameras::{close_up_camera, overhead_camera, start_camera};
+use crate::cameras::{overhead_camera, start_camera};
 use crate::ground::{self, Movement};
-use crate::heightfield::{HeightField, TerrainSettings};
+use crate::heightfield::TerrainSettings;
 use crate::lod::Detail;
 use crate::terrain_data::TerrainData;
-use crate::terrain_renderer::{KEEP_ALL, SKY, Shading, Sun, TerrainRenderer, Viewpoint, gpu_needs};
-
-/// What a view decides.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub struct Settings {
-    /// How the ground is coloured.
-    pub shading: Shading,
-    /// Levels of detail (true), or every chunk in view at full detail.
-    pub lod: bool,
-    /// Look from 4 km overhead at what the flying camera draws.
-    pub from_above: bool,
-}
-
-impl Settings {
-    pub const DEFAULT: Self = Self { shading: Shading::Shaded, lod: true, from_above: false };
-}
-
-/// The places a view can put the camera.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub enum CameraPreset {
-    /// At the foot of the cliff, where the wireframe's cells are large.
-    CloseUp,
-}
-
-impl CameraPreset {
-    pub fn camera(self, field: &HeightField, aspect: f32) -> Camera {
-        match self {
-            Self::CloseUp => close_up_camera(field, aspect),
-        }
-    }
-}
-
-// Every view but `close-up` is a mode: a way of drawing what the flying
-// camera sees. `quadtree` too: it shows that camera's patches from above.
-
-/// Every view, with the settings it applies and, for a preset, its camera.
-pub const VIEW_TABLE: [ViewRow<Settings, CameraPreset>; 8] = [
-    ViewRow::mode("default", "the terrain, coloured by height and slope, with its cliff", Settings::DEFAULT),
-    ViewRow::no_aa("default", Settings::DEFAULT),
-    ViewRow::mode(
-        "full-detail",
-        "the same picture with every chunk in view at full detail: many times the triangles",
-        Settings { lod: false, ..Settings::DEFAULT },
-    )
-    .same_picture_as("default"),
-    ViewRow::mode(
-        "lod-levels",
-        "a colour per level of detail, blending into the next where the mesh morphs",
-        Settings { shading: Shading::Levels, ..Settings::DEFAULT },
-    ),
-    ViewRow::mode(
-        "wireframe",
-        "the triangles drawn, wherever they are at least 4 pixels apart",
-        Settings { shading: Shading::Wireframe, ..Settings::DEFAULT },
-    ),
-    ViewRow::preset(
-        "close-up",
-        "the wireframe from the foot of the cliff, where the 1 m cells are large",
-        Settings { shading: Shading::Wireframe, ..Settings::DEFAULT },
-        CameraPreset::CloseUp,
-    ),
-    ViewRow::mode(
-        "normals",
-        "normals from the whole height field: the same at every level of detail",
-        Settings { shading: Shading::Normals, ..Settings::DEFAULT },
-    ),
-    ViewRow::mode(
-        "quadtree",
-        "from 4 km above: the patches your camera draws, a colour per level; nothing where it culls",
-        Settings { shading: Shading::Levels, from_above: true, ..Settings::DEFAULT },
-    ),
-];
+use crate::terrain_renderer::{KEEP_ALL, SKY, Sun, TerrainRenderer, Viewpoint, gpu_needs};
+use crate::views::{Settings, VIEW_TABLE};
 
 pub struct TerrainChapter {
     pub settings: Settings,

@@ -50,6 +50,7 @@ pub struct LodRanges {
 pub const LATEST_MORPH_START: f32 = 0.9;
 
 impl LodRanges {
+    // ANCHOR: first_range
     /// The ranges for a picture: a cell 2^L samples wide, seen at the end
     /// of its range r_L = 2^L · r_0, spans `cell_pixels` pixels when
     ///
@@ -72,6 +73,7 @@ impl LodRanges {
         };
         Self { first, morph_start: Self::morph_start(first, node_reach), top_level }
     }
+    // ANCHOR_END: first_range
 
     // ANCHOR: morph_start
     /// Where a level starts to morph, as a part of its range, so that no

@@ -1,7 +1,7 @@
 //! Chapter 03's integration tests, one binary: the terrain made in steps,
 //! the `--walk` switch, the level of detail (no holes, no pops, the ground
-//! walked on is the ground drawn), and the worked solutions to the page's
-//! exercises.
+//! walked on is the ground drawn), and the worked solutions to the
+//! lessons' exercises.
 //!
 //! One test binary per crate: each links wgpu, naga, egui and winit, so
 //! every extra file in `tests/` would be another link of all of them.
