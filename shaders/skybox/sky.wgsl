@@ -42,12 +42,14 @@ fn fs_sky(in: FullscreenOutput) -> @location(0) vec4<f32> {
     var day = textureSample(day_sky, sky_sampler, (sky.world_to_day * vec4<f32>(direction, 0.0)).xyz).rgb;
     let night = textureSample(night_sky, sky_sampler, (sky.world_to_stars * vec4<f32>(direction, 0.0)).xyz).rgb;
 
+    // ANCHOR: sun_disc
     // The sun: a small white disc in a wide blue halo. Martian dust scatters
     // blue light forward, around the sun: blue sunsets, the opposite of Earth.
     let towards_sun = max(dot(direction, sky.sun.xyz), 0.0);
     day = mix(day, vec3<f32>(0.30, 0.42, 0.62), 0.75 * pow(towards_sun, 40.0));
     let disc = smoothstep(cos(radians(0.9)), cos(radians(0.6)), towards_sun);
     day = mix(day, vec3<f32>(1.0, 0.96, 0.88), disc);
+    // ANCHOR_END: sun_disc
     return vec4<f32>(mix(night, day, sky.sun.w), 1.0);
 }
 // ANCHOR_END: fs_sky

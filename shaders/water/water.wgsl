@@ -80,12 +80,14 @@ fn linear_depth(depth: f32) -> f32 {
 // ANCHOR: fs_water
 @fragment
 fn fs_water(in: WaterOutput) -> @location(0) vec4<f32> {
+    // ANCHOR: projective
     // Projective texturing: where this fragment lands on screen is where to
     // read the refraction picture; the reflection picture was taken by a
     // camera below the water, upside down, so its v runs the other way.
     let ndc = in.clip.xy / in.clip.w;
     var refraction_uv = vec2<f32>(0.5 + 0.5 * ndc.x, 0.5 - 0.5 * ndc.y);
     var reflection_uv = vec2<f32>(0.5 + 0.5 * ndc.x, 0.5 + 0.5 * ndc.y);
+    // ANCHOR_END: projective
 
     // How deep the water is here: the refraction's depth buffer holds the
     // lake bed, the fragment's own depth the surface.

@@ -82,10 +82,12 @@ struct SkyUniform {
     sun: [f32; 4],
 }
 
+// ANCHOR: dust_drift
 /// The day atmosphere's slow drift about the vertical: a tenth of a turn a day.
 fn dust_drift(phase: f32) -> Quat {
     Quat::from_rotation_y(TAU * 0.1 * phase)
 }
+// ANCHOR_END: dust_drift
 
 fn sky_shader() -> ShaderFile {
     shader!("skybox/sky.wgsl", imports: ["common/fullscreen.wgsl"])
@@ -224,6 +226,7 @@ impl Sky {
     }
     // ANCHOR_END: fog_colour
 
+    // ANCHOR: aim
     /// Writes the sky's uniform for drawing it from `camera` at time of day `phase`.
     pub fn aim(&self, queue: &wgpu::Queue, viewpoint: &SkyViewpoint, camera: &Camera, phase: f32) {
         let turn_only = Mat4::look_to_rh(Vec3::ZERO, camera.forward(), Vec3::Y);
@@ -236,6 +239,7 @@ impl Sky {
         };
         queue.write_buffer(&viewpoint.uniform, 0, bytemuck::bytes_of(&uniform));
     }
+    // ANCHOR_END: aim
 
     /// Draws the sky wherever the depth buffer still holds 1: call it after
     /// everything else in the pass.

@@ -1,157 +1,29 @@
-//! The chapter itself: what each view decides, the views and their
-//! cameras, the overlay's controls (the water's style, each wave, fly or
-//! orbit camera), and `impl Chapter`, which composes chapter 05's plain,
-//! chapter 06's sky and the water: three pictures of the scene a frame,
-//! then the water reading two of them.
+//! The chapter itself: the overlay's controls (the water's style, each
+//! wave, fly or orbit camera), and `impl Chapter`, which composes chapter
+//! 05's plain, chapter 06's sky and the water: three pictures of the scene
+//! a frame, then the water reading two of them.
 
 use std::sync::Arc;
 
 use common::book_figures::thousands;
-use common::chapter::scene_pass;
-use common::glam::{Vec2, Vec3, Vec4};
+use common::glam::{Vec2, Vec4};
 use common::{
-    Camera, Chapter, ChapterFlag, Drawn, FlagValues, FlyController, Frame, Gpu, Input, Orbit, PassTimer, SceneTargets,
-    Target, View, ViewRow, anyhow, egui, views_of, wgpu,
+    Camera, Chapter, ChapterFlag, FlagValues, FlyController, Frame, Gpu, Input, SceneTargets, Target, View, anyhow,
+    egui, views_of,
 };
 use fog::FogSettings;
-use instancing::{MarsPlain, PlainViewpoint, RocksDrawn, Setup, plain_camera};
-use skybox::{Sky, SkyViewpoint, sun_at};
+use instancing::{MarsPlain, Setup, plain_camera};
+use skybox::Sky;
+use terrain::KEEP_ALL;
 use terrain::ground::{self, Movement};
-use terrain::heightfield::HeightField;
-use terrain::{KEEP_ALL, SKY};
 
-use crate::lake::{find_lake, lake_camera, mirrored, orbit_point};
-use crate::water_renderer::{Style, WaterRenderer, WaterSettings};
-use crate::waves::WaveSet;
-
-/// What reaches the screen.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub enum Display {
-    /// The lake, with everything around it.
-    Lake,
-    /// The reflection picture, full screen.
-    Reflection,
-    /// The refraction picture, full screen.
-    Refraction,
-}
-
-/// What a view decides.
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub struct Settings {
-    pub water: WaterSettings,
-    pub display: Display,
-    /// The plain in every picture as drawn before levels of detail
-    /// (`Setup::at_full_detail`).
-    pub full_detail: bool,
-}
-
-impl Settings {
-    pub const DEFAULT: Self = Self { water: WaterSettings::DEFAULT, display: Display::Lake, full_detail: false };
-}
-
-/// How high above the water the start camera stands, metres.
-const EYE_HEIGHT: f32 = 18.0;
-
-/// The places a view can put the camera.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub enum CameraPreset {
-    /// At the same shore, 6 m above the water, where the waves look large.
-    CloseToWater,
-}
-
-impl CameraPreset {
-    pub fn camera(self, field: &HeightField, centre: Vec2, size: f32, level: f32, aspect: f32) -> Camera {
-        match self {
-            Self::CloseToWater => lake_camera(field, centre, size, level, 6.0, aspect),
-        }
-    }
-}
-
-/// Every view, with the settings it applies and, for a preset, its camera.
-pub const VIEW_TABLE: [ViewRow<Settings, CameraPreset>; 8] = [
-    ViewRow::mode(
-        "default",
-        "the lake: reflection and refraction mixed by Fresnel, ripples and waves",
-        Settings::DEFAULT,
-    ),
-    ViewRow::no_aa("default", Settings::DEFAULT),
-    ViewRow::mode(
-        "reflection",
-        "the reflection picture, full screen: the scene above the water, from below it",
-        Settings { display: Display::Reflection, ..Settings::DEFAULT },
-    ),
-    ViewRow::mode(
-        "refraction",
-        "the refraction picture, full screen: the scene below the water",
-        Settings { display: Display::Refraction, ..Settings::DEFAULT },
-    ),
-    ViewRow::preset(
-        "waves",
-        "the geometric waves three times as strong, seen from 6 m above the water",
-        Settings { water: WaterSettings { wave_strength: 3.0, ..WaterSettings::DEFAULT }, ..Settings::DEFAULT },
-        CameraPreset::CloseToWater,
-    ),
-    ViewRow::mode(
-        "no-fresnel",
-        "reflection and refraction half and half at every angle",
-        Settings { water: WaterSettings { fresnel: false, ..WaterSettings::DEFAULT }, ..Settings::DEFAULT },
-    ),
-    ViewRow::preset(
-        "textured-waves",
-        "seed 003's style: a tiled water texture pushed aside by its own colours, on the waves three times as strong",
-        Settings {
-            water: WaterSettings { style: Style::Texture, wave_strength: 3.0, ..WaterSettings::DEFAULT },
-            ..Settings::DEFAULT
-        },
-        CameraPreset::CloseToWater,
-    ),
-    ViewRow::bench(
-        "full-detail",
-        "bench: the lake as drawn before levels of detail, terrain and rocks at full detail in all three pictures",
-        Settings { full_detail: true, ..Settings::DEFAULT },
-    ),
-];
-
-// ANCHOR: steering
-/// How the mouse moves the camera.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub enum Steering {
-    /// Chapter 02's fly camera: keys move, dragging looks round.
-    Fly,
-    /// `common::Orbit`: dragging turns round a point on the lake, the wheel zooms.
-    Orbit,
-}
-
-/// The orbit round the lake: from level with the water (never below it,
-/// nor lifting a camera that takes over low over the water) to nearly
-/// overhead, 3 m to 1.5 km from the point.
-const LAKE_ORBIT: Orbit = Orbit::new(0.0, 0.5, 50.0).within((0.0, 1.5), (3.0, 1500.0));
-
-/// The orbit while it steers the camera: the orbit, the point on the lake
-/// it turns round, and where it last put the camera (position, yaw, pitch).
-#[derive(Clone, Copy, Debug, PartialEq)]
-struct Orbiting {
-    orbit: Orbit,
-    point: Vec3,
-    placed: (Vec3, f32, f32),
-}
-// ANCHOR_END: steering
-
-/// The uniforms for drawing the plain and the sky from one camera. The
-/// frame draws three pictures, each from its own camera, so it keeps three
-/// of these, and all three pictures are recorded before one submit.
-struct Eye {
-    plain: PlainViewpoint,
-    sky: SkyViewpoint,
-    /// What the plain drew in this eye's last picture, where it was taken
-    /// in the last frame: counted on the CPU, or read back late from the GPU.
-    drawn: Option<Option<RocksDrawn>>,
-}
-
-/// Which of the frame's pictures an `Eye` draws.
-const REFLECTION: usize = 0;
-const REFRACTION: usize = 1;
-const MAIN: usize = 2;
+use crate::camera_presets::EYE_HEIGHT;
+use crate::lake::{find_lake, lake_camera, mirrored};
+use crate::scene_pictures::{DrawnInto, Eye, MAIN, REFLECTION, REFRACTION, rocks_per_picture};
+use crate::steering::{Orbiting, STEERING_KEYS, Steering, steer_orbit};
+use crate::views::{Display, Settings, VIEW_TABLE};
+use crate::water_renderer::{Style, WaterRenderer};
+use crate::waves::edit_waves;
 
 /// The time of day the lake is seen at (mid-morning, chapter 06's `day`).
 const START_PHASE: f32 = 0.40;
@@ -183,92 +55,6 @@ pub struct WaterChapter {
     scene: Arc<SceneTargets>,
     target: Target,
 }
-
-/// Where `take_picture` draws: one of the water's pictures (its colour
-/// and its depth, one sample a pixel: the water reads that depth), or the
-/// frame, through the scene's samples.
-enum DrawnInto<'a> {
-    Picture(&'a wgpu::TextureView, &'a wgpu::TextureView),
-    Frame(&'a SceneTargets, &'a wgpu::TextureView),
-}
-
-impl WaterChapter {
-    // ANCHOR: picture
-    /// Records the plain and the sky, seen from `camera` through eye `eye`,
-    /// into `into`, keeping only what `clip` keeps. Each
-    /// picture has its own eye, so its uniforms are not overwritten by the
-    /// next picture's before the one submit at the end of the frame.
-    #[allow(clippy::too_many_arguments)]
-    fn take_picture(
-        &mut self,
-        gpu: &Gpu,
-        encoder: &mut wgpu::CommandEncoder,
-        timer: &PassTimer,
-        (label, eye): (&'static str, usize),
-        into: DrawnInto<'_>,
-        camera: &Camera,
-        clip: Vec4,
-        phase: f32,
-    ) -> Drawn {
-        let Eye { plain, sky, drawn } = &mut self.eyes[eye];
-        // The picture's own height: the half-size reflection and refraction
-        // see each rock half as many pixels across, and grade it so.
-        let rocks = if self.settings.full_detail { self.rocks.at_full_detail() } else { self.rocks };
-        let height = match into {
-            DrawnInto::Picture(colour, _) | DrawnInto::Frame(_, colour) => colour.texture().height(),
-        };
-        let detail = rocks.detail(height);
-        self.plain.aim(gpu, plain, camera, detail, sun_at(phase), clip);
-        self.sky.aim(&gpu.queue, sky, camera, phase);
-        // The rocks' compute pass, with this picture's clip plane: rocks
-        // wholly on the cut side of the water are never drawn.
-        self.plain.cull(gpu, encoder, timer, plain, rocks);
-        let mut pass = match into {
-            DrawnInto::Picture(colour, depth) => scene_pass(encoder, timer, label, colour, SKY, depth),
-            DrawnInto::Frame(scene, frame) => scene.pass(encoder, timer, label, frame, Some(SKY)),
-        };
-        let calls = self.plain.draw(&mut pass, plain, rocks);
-        *drawn = Some(calls.rocks_drawn);
-        calls.drawn() + self.sky.draw(&mut pass, sky)
-    }
-    // ANCHOR_END: picture
-
-    // ANCHOR: orbit
-    /// The orbit camera's frame: it takes the camera over where it is,
-    /// turning round the point of the lake it looks at (and again whenever
-    /// something else moved it: a preset, "reset camera"), then the drag
-    /// turns it and the wheel zooms. The camera keeps its optics.
-    fn steer_orbit(&mut self, input: &Input) {
-        let camera = self.camera;
-        let here = (camera.position, camera.yaw, camera.pitch);
-        let mut orbiting = match self.orbiting {
-            Some(orbiting) if orbiting.placed == here => orbiting,
-            _ => {
-                let point = orbit_point(&camera, self.level, self.centre, self.size);
-                Orbiting { orbit: LAKE_ORBIT.through(camera.position, point), point, placed: here }
-            }
-        };
-        orbiting.orbit.steer(input.look, input.scroll);
-        let placed = orbiting.orbit.camera(orbiting.point, camera.aspect);
-        self.camera = Camera { position: placed.position, yaw: placed.yaw, pitch: placed.pitch, ..camera };
-        orbiting.placed = (placed.position, placed.yaw, placed.pitch);
-        self.orbiting = Some(orbiting);
-    }
-    // ANCHOR_END: orbit
-}
-
-/// The fly camera's keys (with walking), then the orbit camera's mouse.
-const STEERING_KEYS: [(&str, &str); 9] = [
-    ground::KEYS[0],
-    ground::KEYS[1],
-    ground::KEYS[2],
-    ground::KEYS[3],
-    ground::KEYS[4],
-    ground::KEYS[5],
-    ground::KEYS[6],
-    ("drag (orbit camera)", "turn round the point on the lake"),
-    ("scroll (orbit camera)", "nearer or further"),
-];
 
 impl Chapter for WaterChapter {
     const NAME: &'static str = env!("CARGO_PKG_NAME");
@@ -310,7 +96,7 @@ impl Chapter for WaterChapter {
         let water = WaterRenderer::new(gpu, &plain, centre, size, main, settings.water.resolution)?;
         let eyes = std::array::from_fn(|eye| {
             let samples = if eye == MAIN { scene.samples() } else { 1 };
-            Eye { plain: plain.viewpoint(device, samples), sky: sky.viewpoint(device, samples), drawn: None }
+            Eye::new(&plain, &sky, device, samples)
         });
         let camera = lake_camera(field, centre, size, level, EYE_HEIGHT, target.aspect());
         Ok(Self {
@@ -376,7 +162,10 @@ impl Chapter for WaterChapter {
                 let field = self.plain.terrain.field();
                 ground::step(&self.controller, &mut self.camera, &mut self.movement, field, input, dt);
             }
-            Steering::Orbit => self.steer_orbit(input),
+            Steering::Orbit => {
+                let lake = (self.level, self.centre, self.size);
+                steer_orbit(&mut self.orbiting, &mut self.camera, lake, input);
+            }
         }
     }
 
@@ -395,37 +184,26 @@ impl Chapter for WaterChapter {
         // Seed 003's style reads no pictures: then only a view of one draws it.
         let pictures = style == Style::Pictures || display != Display::Lake;
         let (reflection, refraction) = (self.water.reflection.clone(), self.water.refraction.clone());
+        // Each picture through its own eye, with the rocks as the view draws them.
+        let rocks = if self.settings.full_detail { self.rocks.at_full_detail() } else { self.rocks };
+        let (scene, eyes) = ((&self.plain, &self.sky), &mut self.eyes);
         // 1. The reflection: from below the water, keeping what is above it.
         if pictures && display != Display::Refraction {
             let above = Vec4::new(0.0, 1.0, 0.0, -self.level + bias);
-            let targets = DrawnInto::Picture(&reflection.colour, &reflection.depth);
+            let into = ("reflection", DrawnInto::Picture(&reflection.colour, &reflection.depth));
             let mirror = mirrored(&camera, self.level);
-            let picture = self.take_picture(
-                gpu,
-                frame.encoder,
-                frame.timer,
-                ("reflection", REFLECTION),
-                targets,
-                &mirror,
-                above,
-                phase,
-            );
+            let eye = &mut eyes[REFLECTION];
+            let picture =
+                eye.take_picture(gpu, frame.encoder, frame.timer, scene, into, (&mirror, above), phase, rocks);
             frame.drawn.add("reflection", picture);
         }
         // 2. The refraction: from the camera, keeping what is below the water.
         if pictures && display != Display::Reflection {
             let below = Vec4::new(0.0, -1.0, 0.0, self.level + bias);
-            let targets = DrawnInto::Picture(&refraction.colour, &refraction.depth);
-            let picture = self.take_picture(
-                gpu,
-                frame.encoder,
-                frame.timer,
-                ("refraction", REFRACTION),
-                targets,
-                &camera,
-                below,
-                phase,
-            );
+            let into = ("refraction", DrawnInto::Picture(&refraction.colour, &refraction.depth));
+            let eye = &mut eyes[REFRACTION];
+            let picture =
+                eye.take_picture(gpu, frame.encoder, frame.timer, scene, into, (&camera, below), phase, rocks);
             frame.drawn.add("refraction", picture);
         }
         match display {
@@ -435,25 +213,17 @@ impl Chapter for WaterChapter {
         }
 
         // 3. The scene itself, whole.
-        let scene = self.scene.clone();
-        let targets = DrawnInto::Frame(&scene, frame.target);
-        let picture = self.take_picture(
-            gpu,
-            frame.encoder,
-            frame.timer,
-            ("plain and sky", MAIN),
-            targets,
-            &camera,
-            KEEP_ALL,
-            phase,
-        );
+        let targets = self.scene.clone();
+        let into = ("plain and sky", DrawnInto::Frame(&targets, frame.target));
+        let eye = &mut eyes[MAIN];
+        let picture = eye.take_picture(gpu, frame.encoder, frame.timer, scene, into, (&camera, KEEP_ALL), phase, rocks);
         frame.drawn.add("plain and sky", picture);
 
         // 4. The water on top, reading both pictures (or, in seed 003's style, its texture).
         self.water.aim(&gpu.queue, self.level, frame.time, &camera, self.settings.water);
         // Drawn on the scene's samples and depth as the main pass left
         // them, and resolved into the frame again.
-        let mut pass = scene.pass(frame.encoder, frame.timer, "water surface", frame.target, None);
+        let mut pass = targets.pass(frame.encoder, frame.timer, "water surface", frame.target, None);
         frame.drawn.add("water surface", self.water.draw(&mut pass, &self.plain, &self.eyes[MAIN].plain, style));
     }
     // ANCHOR_END: render
@@ -514,57 +284,13 @@ impl Chapter for WaterChapter {
     }
 }
 
-/// "rocks drawn: reflection 1,200 (5,000 triangles), …", for each of the
-/// frame's pictures that was drawn and counted.
-fn rocks_per_picture(drawn: [Option<RocksDrawn>; 3]) -> String {
-    let names = [(REFLECTION, "reflection"), (REFRACTION, "refraction"), (MAIN, "plain and sky")];
-    let pictures: Vec<String> = (names.iter())
-        .filter_map(|&(eye, name)| {
-            let drawn = drawn[eye]?;
-            Some(format!("{name} {} ({} triangles)", thousands(drawn.rocks.into()), thousands(drawn.triangles as f64)))
-        })
-        .collect();
-    format!("rocks drawn: {}", if pictures.is_empty() { "counting…".to_string() } else { pictures.join(", ") })
-}
-
-// ANCHOR: edit_waves
-/// The overlay's controls for each of the eight waves, and a button that
-/// puts back the lake's own. An edit goes through [`WaveSet::set`], which
-/// refuses a wave the shader cannot draw (the sliders' ranges keep to
-/// what it can); the view chosen next puts the lake's waves back.
-fn edit_waves(ui: &mut egui::Ui, waves: &mut WaveSet) {
-    for (index, wave) in waves.waves().into_iter().enumerate() {
-        egui::CollapsingHeader::new(format!("wave {}", index + 1)).show(ui, |ui| {
-            let mut edited = wave;
-            let mut heading = wave.heading_degrees();
-            let mut changed =
-                ui.add(egui::Slider::new(&mut edited.amplitude, 0.0..=1.0).text("amplitude (m)")).changed();
-            changed |= ui
-                .add(egui::Slider::new(&mut edited.wavelength, 1.0..=100.0).logarithmic(true).text("wavelength (m)"))
-                .changed();
-            changed |= ui.add(egui::Slider::new(&mut edited.speed, 0.0..=12.0).text("speed (m/s)")).changed();
-            if ui.add(egui::Slider::new(&mut heading, -180.0..=180.0).text("heading (° from east to north)")).changed()
-            {
-                edited = edited.heading(heading);
-                changed = true;
-            }
-            if changed && let Err(reason) = waves.set(index, edited) {
-                ui.colored_label(egui::Color32::RED, reason);
-            }
-        });
-    }
-    if ui.add_enabled(*waves != WaveSet::Lake, egui::Button::new("reset the waves")).clicked() {
-        *waves = WaveSet::Lake;
-    }
-}
-// ANCHOR_END: edit_waves
-
 #[cfg(test)]
 mod tests {
     use common::chapter::view_index;
     use common::headless::{OFFSCREEN_FORMAT, capture};
 
     use super::*;
+    use crate::lake::orbit_point;
     use crate::waves::{Wave, lake_waves};
 
     /// The overlay's controls on one live chapter (making one takes

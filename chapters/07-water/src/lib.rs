@@ -6,22 +6,33 @@
 //! aside by its own colours. The Mars scene, complete, flown over or
 //! orbited.
 //!
-//! The modules below come in the order the book explains them; the
+//! The modules below come in the order the book's lessons teach them; the
 //! re-exports after them are the pieces other crates use.
 
 // Where the lake is, the camera at its shore, and the mirrored camera.
 pub mod lake;
-// Geometric waves: a sum of sine waves, with analytic normals, and the set the overlay edits.
-pub mod waves;
+// The scene (chapter 05's plain, chapter 06's sky) as pictures from any camera, clipped at the water.
+pub mod scene_pictures;
 // The water: reflection and refraction pictures, and the surface reading them.
 pub mod water_renderer;
-// The chapter itself: its settings, views, cameras and frame.
+// Geometric waves: a sum of sine waves, with analytic normals, and the set the overlay edits.
+pub mod waves;
+// Fly over the lake, or orbit a point on it.
+pub mod steering;
+// Where the views put the camera.
+pub mod camera_presets;
+// What each view decides: the water's settings, what reaches the screen.
+pub mod views;
+// The chapter itself: its overlay and its frame.
 pub mod demo;
-// Worked solutions to the page's exercises, built and checked by `cargo test`.
+// Worked solutions to the lessons' exercises, built and checked by `cargo test`.
 #[cfg(test)]
 mod solutions;
 
-pub use demo::{CameraPreset, Display, Settings, Steering, VIEW_TABLE, WaterChapter};
+pub use camera_presets::CameraPreset;
+pub use demo::WaterChapter;
 pub use lake::{find_lake, lake_camera, mirrored, orbit_point};
+pub use steering::Steering;
+pub use views::{Display, Settings, VIEW_TABLE};
 pub use water_renderer::{Picture, Style, WaterRenderer, WaterSettings};
 pub use waves::WaveSet;

@@ -1,6 +1,6 @@
-//! Worked solutions to the exercises on chapter 07's page. Each makes the
-//! change its exercise asks for and asserts the figure the page's solution
-//! states, so that the solutions are built and checked with the chapter.
+//! Worked solutions to the exercises of chapter 07's lessons. Each makes
+//! the change its exercise asks for and asserts the figure the lesson's
+//! solution states, so that the solutions are built and checked with the chapter.
 //! They live in the library's own test build (this chapter has no
 //! integration-test binary, and one more would be one more link of wgpu),
 //! and change shaders by text edits of the real files, composed and
@@ -10,11 +10,14 @@
 use std::f32::consts::TAU;
 
 use common::book_figures::median_ms;
-use common::glam::{Vec2, Vec3};
+use common::glam::{DVec2, Vec2, Vec3};
 use common::headless::{OFFSCREEN_FORMAT, capture};
+use common::image::RgbaImage;
+use common::texture::srgb_to_linear;
 use common::{Camera, Chapter, Gpu, ShaderFile, Target, shader};
 
 use crate::WaterChapter;
+use crate::water_renderer::{TEXTURE_TILE_METRES, WaterSettings};
 use crate::waves::{self, Wave};
 
 /// `file` with `edits` made to its own text, composed with its imports and
@@ -40,7 +43,7 @@ fn bench_median(view: &str, what: &str) -> f32 {
 }
 
 // ANCHOR: quarter
-/// Exercise 1: the bytes the reflection and refraction pictures take for
+/// Two pictures, exercise 1: the bytes the reflection and refraction pictures take for
 /// a `target` at `resolution` (the overlay's slider): each a colour
 /// texture of the target's format and a depth buffer, `resolution` of the
 /// target's width and height.
@@ -74,7 +77,7 @@ fn lake_at(gpu: &Gpu, chapter: &mut WaterChapter, resolution: f32) -> common::im
 // ANCHOR_END: quarter
 
 #[test]
-fn exercise_1_quarter_resolution_pictures_save_memory_and_a_seventh_of_the_frame() {
+fn pictures_exercise_1_quarter_resolution_pictures_save_memory_and_a_seventh_of_the_frame() {
     let target = Target { format: common::wgpu::TextureFormat::Bgra8UnormSrgb, width: 1280, height: 720, samples: 1 };
     let (half, quarter) = (picture_bytes(target, 0.5), picture_bytes(target, 0.25));
     let saved = pass_time_saved(0.25);
@@ -126,9 +129,9 @@ fn exercise_1_quarter_resolution_pictures_save_memory_and_a_seventh_of_the_frame
     measured::LARGEST_CHANGE.check("the largest change, of 255", worst);
 }
 
-/// Measured: what exercise 1's test got by drawing the lake at half and a
-/// quarter resolution, copied with page 07's solution, which says they are
-/// measured (`common::book_figures::Measured`: change detectors).
+/// Measured: what the pictures' exercise 1 got by drawing the lake at half
+/// and a quarter resolution, copied with the lesson's solution, which says
+/// they are measured (`common::book_figures::Measured`: change detectors).
 mod measured {
     use common::book_figures::Measured;
 
@@ -140,7 +143,7 @@ mod measured {
 }
 
 // ANCHOR: fresnel
-/// Exercise 2: the Mars project's mix in water.wgsl, the cosine itself…
+/// The surface, exercise 1: the Mars project's mix in water.wgsl, the cosine itself…
 const COSINE_MIX: (&str, &str) =
     ("fresnel = 0.02 + 0.98 * pow(1.0 - max(dot(to_eye, n), 0.0), 5.0);", "fresnel = 1.0 - max(dot(to_eye, n), 0.0);");
 
@@ -181,7 +184,7 @@ fn reflection_shares(mix: fn(f32) -> f32) -> (f32, f32) {
 // ANCHOR_END: fresnel
 
 #[test]
-fn exercise_2_the_cosine_mix_is_nearer_no_fresnel_than_schlick() {
+fn surface_exercise_1_the_cosine_mix_is_nearer_no_fresnel_than_schlick() {
     compiles_with(WATER, &[COSINE_MIX]);
     let (by_schlick, by_cosine, by_halves) =
         (reflection_shares(schlick), reflection_shares(cosine_mix), reflection_shares(no_fresnel));
@@ -200,7 +203,7 @@ const SCHLICK_MEAN: f32 = 0.247;
 const COSINE_MEAN: f32 = 0.688;
 
 // ANCHOR: gerstner
-/// Exercise 3: Gerstner waves. Each wave also moves the surface's points
+/// Waves, exercise 1: Gerstner waves. Each wave also moves the surface's points
 /// along its direction, by Qᵢ Aᵢ cos(phase), towards its crests (Fournier
 /// and Reeves 1986; Finch 2004). With Qᵢ Aᵢ kᵢ = `steepness` / 8 for the
 /// eight waves, the sum can never fold over while `steepness` ≤ 1.
@@ -260,7 +263,7 @@ fn crest_share_and_least_stretch(steepness: f32) -> (f32, f32) {
 // ANCHOR_END: gerstner
 
 #[test]
-fn exercise_3_gerstner_waves_have_narrower_crests() {
+fn waves_exercise_1_gerstner_waves_have_narrower_crests() {
     compiles_with(WATER, &GERSTNER);
     let (sine, _) = crest_share_and_least_stretch(0.0);
     let (sharp, stretch) = crest_share_and_least_stretch(1.0);
@@ -273,7 +276,7 @@ fn exercise_3_gerstner_waves_have_narrower_crests() {
 const GERSTNER_CREST_SHARE: f32 = 0.454;
 
 // ANCHOR: no_refraction
-/// Exercise 4: the water without the refraction picture: the reflection
+/// The surface, exercise 2: the water without the refraction picture: the reflection
 /// alone, laid over the scene (which has the lake bed in it) with Fresnel
 /// as its opacity. The depth under the surface came from the refraction
 /// pass, so the shallows' fade and the murk of deep water go with it.
@@ -284,8 +287,64 @@ const REFLECTION_ONLY: [(&str, &str); 2] = [
 // ANCHOR_END: no_refraction
 
 #[test]
-fn exercise_4_without_the_refraction_picture_the_water_loses_its_depth() {
+fn surface_exercise_2_without_the_refraction_picture_the_water_loses_its_depth() {
     compiles_with(WATER, &REFLECTION_ONLY);
     // The pass's share of the frame is on the page, from the bench table
     // by `{{#figure}}`.
+}
+
+// ANCHOR: texture_period
+/// Seed 003, exercise 1: `fs_texture` at lake point `uv` (in tiles of its
+/// first read) and time 0, its second read at `frequency` times the first's
+/// (the shader's 1.5, or the exercise's 1.25), each read taking the nearest
+/// texel and wrapping as the repeating sampler does.
+fn seed_003_colour(texture: &RgbaImage, uv: DVec2, push: f64, frequency: f64) -> [u8; 3] {
+    let texel = |p: DVec2| {
+        let (width, height) = (f64::from(texture.width()), f64::from(texture.height()));
+        let (x, y) = ((p.x * width).floor().rem_euclid(width), (p.y * height).floor().rem_euclid(height));
+        texture.get_pixel(x as u32, y as u32).0
+    };
+    // The first read pushes the second by its green and blue, in linear light.
+    let first = texel(uv);
+    let [green, blue] = [first[1], first[2]].map(|c| f64::from(srgb_to_linear(f32::from(c) / 255.0)));
+    let moved = uv + DVec2::new(-green, blue) * push;
+    let [r, g, b, _] = texel(moved * frequency);
+    [r, g, b]
+}
+
+/// The fewest whole tiles after which the water repeats (up to 8): the
+/// first read repeats every tile, the second every 1/`frequency` of one.
+fn repeats_after_tiles(texture: &RgbaImage, frequency: f64) -> Option<u32> {
+    let push = f64::from(WaterSettings::DEFAULT.texture_push);
+    let points: Vec<DVec2> =
+        (0..2000).map(|i| DVec2::new(0.013 + 0.0731 * f64::from(i), 0.291 + 0.0419 * f64::from(i))).collect();
+    (1..=8).find(|&tiles| {
+        let shift = DVec2::splat(f64::from(tiles));
+        let differ = (points.iter())
+            .filter(|&&p| {
+                seed_003_colour(texture, p, push, frequency) != seed_003_colour(texture, p + shift, push, frequency)
+            })
+            .count();
+        // A point on a texel's very edge may round the other way: a few in 2,000.
+        differ <= 10
+    })
+}
+// ANCHOR_END: texture_period
+
+/// The second read at 1.25 times the first's frequency, in water.wgsl.
+const SECOND_READ_AT_1_25: (&str, &str) = ("moved * 1.5).rgb", "moved * 1.25).rgb");
+
+#[test]
+fn seed_003_exercise_1_at_a_quarter_more_the_water_repeats_every_48_m() {
+    compiles_with(WATER, &[SECOND_READ_AT_1_25]);
+    let texture =
+        common::texture::decode_named("assets/water/texture.png", include_bytes!("../../../assets/water/texture.png"))
+            .unwrap();
+    // Worked by hand: whole tiles for the first read, and whole tiles of
+    // the second, n × 1.25: n = 4, 48 m; at the shader's 1.5, n = 2, 24 m.
+    let (now, edited) = (repeats_after_tiles(&texture, 1.5), repeats_after_tiles(&texture, 1.25));
+    println!("the water repeats after {now:?} tiles at 1.5, {edited:?} at 1.25 (a tile is {TEXTURE_TILE_METRES} m)");
+    assert_eq!(now, Some(2));
+    assert_eq!(edited, Some(4));
+    assert_eq!(4.0 * TEXTURE_TILE_METRES, 48.0);
 }

@@ -64,6 +64,7 @@ impl Default for WaterSettings {
     }
 }
 
+// ANCHOR: picture
 /// An offscreen picture of the scene, with its own depth buffer. (Cloning
 /// copies two reference-counted handles, not the textures.)
 #[derive(Clone)]
@@ -89,6 +90,7 @@ impl Picture {
         Self { colour, depth: depth_view(device, width, height) }
     }
 }
+// ANCHOR_END: picture
 
 /// `Water` in water.wgsl.
 #[repr(C)]
@@ -103,7 +105,7 @@ struct WaterUniform {
 
 /// Metres of lake one tile of the water texture covers (its first read;
 /// the second, at 1.5 times the frequency, two thirds of that).
-const TEXTURE_TILE_METRES: f32 = 12.0;
+pub(crate) const TEXTURE_TILE_METRES: f32 = 12.0;
 
 fn water_shader() -> ShaderFile {
     shader!("water/water.wgsl", imports: ["terrain/terrain.wgsl", "fog/fog.wgsl", "water/waves.wgsl"])

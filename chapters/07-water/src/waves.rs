@@ -1,10 +1,11 @@
 //! Geometric waves: a sum of directional sine waves, with normals worked
 //! out analytically, and the lake's eight as a set the overlay edits one by
-//! one. The vertex shader evaluates the same sums (water.wgsl); this CPU
-//! copy is what the tests check.
+//! one, with the overlay's controls for it. The vertex shader evaluates the
+//! same sums (water.wgsl); this CPU copy is what the tests check.
 
 use std::f32::consts::TAU;
 
+use common::egui;
 use common::glam::{Vec2, Vec3};
 
 /// Surface gravity on Mars, m/s². Waves there are slower than on Earth.
@@ -138,6 +139,38 @@ impl Wave {
     }
 }
 // ANCHOR_END: wave_set
+
+// ANCHOR: edit_waves
+/// The overlay's controls for each of the eight waves, and a button that
+/// puts back the lake's own. An edit goes through [`WaveSet::set`], which
+/// refuses a wave the shader cannot draw (the sliders' ranges keep to
+/// what it can); the view chosen next puts the lake's waves back.
+pub fn edit_waves(ui: &mut egui::Ui, waves: &mut WaveSet) {
+    for (index, wave) in waves.waves().into_iter().enumerate() {
+        egui::CollapsingHeader::new(format!("wave {}", index + 1)).show(ui, |ui| {
+            let mut edited = wave;
+            let mut heading = wave.heading_degrees();
+            let mut changed =
+                ui.add(egui::Slider::new(&mut edited.amplitude, 0.0..=1.0).text("amplitude (m)")).changed();
+            changed |= ui
+                .add(egui::Slider::new(&mut edited.wavelength, 1.0..=100.0).logarithmic(true).text("wavelength (m)"))
+                .changed();
+            changed |= ui.add(egui::Slider::new(&mut edited.speed, 0.0..=12.0).text("speed (m/s)")).changed();
+            if ui.add(egui::Slider::new(&mut heading, -180.0..=180.0).text("heading (° from east to north)")).changed()
+            {
+                edited = edited.heading(heading);
+                changed = true;
+            }
+            if changed && let Err(reason) = waves.set(index, edited) {
+                ui.colored_label(egui::Color32::RED, reason);
+            }
+        });
+    }
+    if ui.add_enabled(*waves != WaveSet::Lake, egui::Button::new("reset the waves")).clicked() {
+        *waves = WaveSet::Lake;
+    }
+}
+// ANCHOR_END: edit_waves
 
 #[cfg(test)]
 mod tests {

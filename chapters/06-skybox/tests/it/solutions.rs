@@ -1,6 +1,9 @@
-//! Worked solutions to the exercises of book page 06, compiled and checked
-//! with the chapter's other tests: the page includes them by anchor, and
-//! each test asserts the figure its solution states.
+//! Worked solutions to the exercises of chapter 06's lessons, compiled and
+//! checked with the chapter's other tests: the pages include them by
+//! anchor, and each test asserts the figure its solution states. A test's
+//! name says which lesson's exercise it checks: `sky_box_…` for "A box at
+//! infinity" (sky-box.md), `time_of_day_…` for "A sky that turns, a sun
+//! that lights" (time-of-day.md).
 
 use std::f32::consts::TAU;
 
@@ -12,7 +15,7 @@ use skybox::{DAY, NIGHT, Sky, SkyboxChapter, celestial_turn, day_blend, sun_at};
 use terrain::noise::perlin3;
 
 #[test]
-fn exercise_1_at_midnight_the_sun_is_73_degrees_below_the_southern_horizon() {
+fn time_of_day_exercise_1_at_midnight_the_sun_is_73_degrees_below_the_southern_horizon() {
     // A 20 s day, starting mid-morning (phase 0.4): midnight comes 12 s in.
     let gpu = crate::plain_gpu();
     let target = Target { format: OFFSCREEN_FORMAT, width: 64, height: 36, samples: 1 };
@@ -66,12 +69,12 @@ fn skies(name: &str, original: &str, edit: &str) -> (Gpu, Sky, Sky) {
     (gpu, as_it_is, edited)
 }
 
-/// The last line of `fs_sky`, which exercises 2 and 3 extend.
+/// The last line of `fs_sky`, which the time of day's exercises 2 and 3 extend.
 const SKY_RETURN: &str = "    return vec4<f32>(mix(night, day, sky.sun.w), 1.0);";
 
-/// Exercise 2: Phobos, in `fs_sky`. `world_to_stars` turns a direction
-/// back by the sky's turn; applied twice to a fixed direction, it carries
-/// that direction the other way round, twice a day.
+/// Time of day, exercise 2: Phobos, in `fs_sky`. `world_to_stars` turns a
+/// direction back by the sky's turn; applied twice to a fixed direction, it
+/// carries that direction the other way round, twice a day.
 const PHOBOS: &str = "
 // ANCHOR: phobos_wgsl
     // Phobos circles Mars faster than Mars turns: it rises in the west
@@ -86,8 +89,8 @@ const PHOBOS: &str = "
 ";
 
 // ANCHOR: phobos_path
-/// Exercise 2: where the shader draws Phobos at time of day `phase`: the
-/// western horizon turned back by the sky's turn twice.
+/// Time of day, exercise 2: where the shader draws Phobos at time of day
+/// `phase`: the western horizon turned back by the sky's turn twice.
 fn phobos_at(phase: f32) -> Vec3 {
     let back = celestial_turn(phase).inverse();
     back * (back * Vec3::NEG_X)
@@ -95,7 +98,7 @@ fn phobos_at(phase: f32) -> Vec3 {
 // ANCHOR_END: phobos_path
 
 #[test]
-fn exercise_2_phobos_rises_in_the_west_twice_a_day() {
+fn time_of_day_exercise_2_phobos_rises_in_the_west_twice_a_day() {
     // It rises in the west: on the western horizon at sunrise, climbing.
     assert!(phobos_at(0.25).distance(Vec3::NEG_X) < 1e-5);
     assert!(phobos_at(0.26).y > 0.0 && phobos_at(0.24).y < 0.0);
@@ -133,9 +136,9 @@ fn exercise_2_phobos_rises_in_the_west_twice_a_day() {
     assert!((5..=8).contains(&width) && disc.len().abs_diff(32) <= 4, "{} pixels, {width} across", disc.len());
 }
 
-/// Exercise 3: a glow along the night horizon, in `fs_sky`. It is computed
-/// from `direction`, which is in the world's frame, not the stars', so it
-/// stays level however the stars turn.
+/// Time of day, exercise 3: a glow along the night horizon, in `fs_sky`. It
+/// is computed from `direction`, which is in the world's frame, not the
+/// stars', so it stays level however the stars turn.
 const NIGHT_GLOW: &str = "
 // ANCHOR: glow_wgsl
     // Dust lit from below the horizon: brightest at it, gone 15° up.
@@ -148,9 +151,9 @@ const NIGHT_GLOW: &str = "
 /// The glow at the horizon (direction.y = 0), linear RGB: `NIGHT_GLOW`'s.
 const GLOW_AT_HORIZON: [f32; 3] = [0.030, 0.016, 0.010];
 
-/// Exercise 3: the fog colour with the glow: the horizon the fog fades to
-/// is brighter by the glow, as much as the night sky shows. `render` passes
-/// it to `set_air` in place of `self.sky.fog_colour(self.phase)`.
+/// Time of day, exercise 3: the fog colour with the glow: the horizon the
+/// fog fades to is brighter by the glow, as much as the night sky shows.
+/// `render` passes it to `set_air` in place of `self.sky.fog_colour(self.phase)`.
 fn fog_colour_with_glow(sky: &Sky, phase: f32) -> [f32; 3] {
     let (fog, night) = (sky.fog_colour(phase), 1.0 - day_blend(sun_at(phase)));
     [0, 1, 2].map(|c| fog[c] + GLOW_AT_HORIZON[c] * night)
@@ -177,7 +180,7 @@ fn row_colour(picture: &image::RgbaImage, y: u32) -> [f32; 3] {
 }
 
 #[test]
-fn exercise_3_the_night_horizon_glows_level_and_the_fog_glows_with_it() {
+fn time_of_day_exercise_3_the_night_horizon_glows_level_and_the_fog_glows_with_it() {
     let (gpu, as_it_is, glowing) = skies("sky-glow", SKY_RETURN, NIGHT_GLOW);
     let target = Target { format: OFFSCREEN_FORMAT, width: 320, height: 180, samples: 1 };
     // Looking level, west and east, at two times of the night: the horizon
@@ -200,9 +203,11 @@ fn exercise_3_the_night_horizon_glows_level_and_the_fog_glows_with_it() {
     }
 }
 
-// ANCHOR: cloud_faces
-/// Exercise 4: the direction through texel (u, v) of cube face `face`
-/// (WebGPU's order: +x, −x, +y, −y, +z, −z; u and v from −1 to 1, v down).
+// ANCHOR: texel_size
+/// The direction through the point (u, v) of cube face `face` (WebGPU's
+/// order: +x, −x, +y, −y, +z, −z; u and v from −1 to 1, v down): where the
+/// sky box's exercise 1 measures texels, and where the time of day's
+/// exercise 4 paints its clouds.
 fn cube_direction(face: usize, u: f32, v: f32) -> Vec3 {
     match face {
         0 => Vec3::new(1.0, -v, -u),
@@ -215,9 +220,65 @@ fn cube_direction(face: usize, u: f32, v: f32) -> Vec3 {
     .normalize()
 }
 
-/// Exercise 4: a cube map of clouds. Like the skies, every texel is a
-/// function of its direction alone (here five octaves of 3D noise there),
-/// so the faces meet without seams. Red is the cover: 0 clear, 1 cloud.
+/// The angle between `a` and `b`, in degrees (through the sine and the
+/// cosine together: `acos` alone loses small angles in `f32`).
+fn degrees_between(a: Vec3, b: Vec3) -> f32 {
+    a.cross(b).length().atan2(a.dot(b)).to_degrees()
+}
+
+/// Sky box, exercise 1: the angle between the centres of two texels
+/// (column, row) of cube face `face`, `size` texels a side.
+fn texel_degrees(face: usize, size: u32, a: (u32, u32), b: (u32, u32)) -> f32 {
+    let centre = |(x, y): (u32, u32)| [x, y].map(|t| 2.0 * (t as f32 + 0.5) / size as f32 - 1.0);
+    let ([ua, va], [ub, vb]) = (centre(a), centre(b));
+    degrees_between(cube_direction(face, ua, va), cube_direction(face, ub, vb))
+}
+
+/// Sky box, exercise 1: the angle between the directions through two
+/// neighbouring pixels in the middle of a picture `height` pixels tall seen
+/// by `camera`, turned back into directions as the sky shader does: through
+/// the inverse of its projection times its turn alone.
+fn pixel_degrees(camera: &Camera, height: u32) -> f32 {
+    let turn_only = Mat4::look_to_rh(Vec3::ZERO, camera.forward(), Vec3::Y);
+    let clip_to_world = (camera.projection() * turn_only).inverse();
+    let through_row = |row: f32| clip_to_world.project_point3(Vec3::new(0.0, 1.0 - 2.0 * row / height as f32, 1.0));
+    let middle = height as f32 / 2.0;
+    degrees_between(through_row(middle - 0.5), through_row(middle + 0.5))
+}
+// ANCHOR_END: texel_size
+
+#[test]
+fn sky_box_exercise_1_a_texel_covers_five_pixels_in_the_middle_of_a_face_and_two_in_a_corner() {
+    let size = decode_faces(&DAY).unwrap()[0].width();
+    assert_eq!(size, 256);
+    // Worked by hand: 2 atan(1/256) in the middle of a face, √2/3 of it in
+    // a corner; a pixel in the middle of the picture, 2 tan(30°)/720 radians.
+    let middle_by_hand = 2.0 * (1.0f32 / 256.0).atan().to_degrees();
+    let corner_by_hand = middle_by_hand * 2f32.sqrt() / 3.0;
+    let pixel_by_hand = (2.0 * 30f32.to_radians().tan() / 720.0).to_degrees();
+    // Measured: neighbouring texel centres along a row of the −z face, in
+    // its middle and in its corner; and the chapter's camera, 1280 × 720.
+    let middle = texel_degrees(5, size, (127, 128), (128, 128));
+    let corner = texel_degrees(5, size, (254, 255), (255, 255));
+    let target = Target { format: OFFSCREEN_FORMAT, width: 64, height: 36, samples: 1 };
+    let chapter: SkyboxChapter = common::chapter::create(crate::plain_gpu(), target, &Default::default()).unwrap();
+    let camera = Camera { aspect: 1280.0 / 720.0, ..chapter.camera };
+    let pixel = pixel_degrees(&camera, 720);
+    let (middle_pixels, corner_pixels) = (middle / pixel, corner / pixel);
+    eprintln!(
+        "a texel is {middle:.4}° in the middle of a face, {corner:.4}° in a corner; a pixel {pixel:.4}°: \
+         {middle_pixels:.2} and {corner_pixels:.2} pixels"
+    );
+    assert!((middle - middle_by_hand).abs() < 1e-4 && (middle - 0.448).abs() < 0.001, "{middle}");
+    assert!((corner - corner_by_hand).abs() < 0.002 && (corner - 0.21).abs() < 0.005, "{corner}");
+    assert!((pixel - pixel_by_hand).abs() < 1e-4 && (pixel - 0.092).abs() < 0.001, "{pixel}");
+    assert!((middle_pixels - 4.9).abs() < 0.05 && (corner_pixels - 2.3).abs() < 0.05);
+}
+
+// ANCHOR: cloud_faces
+/// Time of day, exercise 4: a cube map of clouds. Like the skies, every
+/// texel is a function of its direction alone (here five octaves of 3D noise
+/// there), so the faces meet without seams. Red is the cover: 0 clear, 1 cloud.
 fn cloud_faces(size: u32) -> [image::RgbaImage; 6] {
     let cover = |d: Vec3| {
         let (mut sum, mut amplitude, mut frequency) = (0.0, 1.0, 2.5);
@@ -248,7 +309,8 @@ const UNIFORM_END: &str = "    sun: vec4<f32>,\n};";
 const SAMPLER: &str = "@group(0) @binding(3) var sky_sampler: sampler;";
 const SUN_DISC: &str = "    day = mix(day, vec3<f32>(1.0, 0.96, 0.88), disc);";
 // ANCHOR: clouds_wgsl
-/// Exercise 4, in `sky.wgsl`: the end of the uniform `Sky`, with the clouds' turn…
+/// Time of day, exercise 4, in `sky.wgsl`: the end of the uniform `Sky`,
+/// with the clouds' turn…
 const CLOUDS_UNIFORM: &str = "    sun: vec4<f32>,
     // World directions into the cloud map: turning about the vertical.
     world_to_clouds: mat4x4<f32>,
@@ -367,8 +429,8 @@ impl CloudySky {
     }
 
     // ANCHOR: clouds_aim
-    /// Exercise 4: `Sky::aim` with the clouds: the day sky no longer
-    /// drifts (`world_to_day` is the identity), and the clouds turn
+    /// Time of day, exercise 4: `Sky::aim` with the clouds: the day sky no
+    /// longer drifts (`world_to_day` is the identity), and the clouds turn
     /// `CLOUD_TURNS_PER_DAY` times a day about the vertical.
     fn aim(&self, queue: &wgpu::Queue, camera: &Camera, phase: f32) {
         let turn_only = Mat4::look_to_rh(Vec3::ZERO, camera.forward(), Vec3::Y);
@@ -401,7 +463,7 @@ impl CloudySky {
 }
 
 #[test]
-fn exercise_4_clouds_turn_three_times_a_day_over_a_still_sky() {
+fn time_of_day_exercise_4_clouds_turn_three_times_a_day_over_a_still_sky() {
     let faces = cloud_faces(64);
     let texels = faces.iter().flat_map(|f| f.pixels());
     let cover = texels.map(|p| f32::from(p[0]) / 255.0).sum::<f32>() / (6 * 64 * 64) as f32;
