@@ -361,10 +361,7 @@ pub trait Chapter: Sized + 'static {
     /// the fingerprint of the view's frame ([`crate::fingerprint`]), so a
     /// bench row timed before the view's settings changed is known to be
     /// older than its frame.
-    fn view_settings(view: usize) -> String {
-        let _ = view;
-        String::new()
-    }
+    fn view_settings(view: usize) -> String;
 
     /// The learner (or `--view`, or a test) picked `view`: its settings,
     /// and for a preset, its camera. The one way to switch views; chapters

@@ -31,6 +31,10 @@ impl Chapter for Triangle {
     const TITLE: &'static str = "01 · The first triangle";
     const VIEWS: &'static [View] = &views_of(&VIEW_TABLE);
 
+    fn view_settings(view: usize) -> String {
+        common::ViewRow::settings_of(&VIEW_TABLE, view)
+    }
+
     /// Nothing takes long enough to prepare in steps.
     type Prepared = ();
 

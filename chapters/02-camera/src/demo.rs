@@ -38,6 +38,10 @@ impl Chapter for CameraChapter {
     const NAME: &'static str = env!("CARGO_PKG_NAME");
     const TITLE: &'static str = "02 · Camera, transforms and depth";
     const VIEWS: &'static [View] = &views_of(&VIEW_TABLE);
+
+    fn view_settings(view: usize) -> String {
+        common::ViewRow::settings_of(&VIEW_TABLE, view)
+    }
     const SNAPSHOT_TIME: f32 = 2.0;
     const KEYS: &'static [(&'static str, &'static str)] = FlyController::KEYS;
 

@@ -44,6 +44,10 @@ impl Chapter for TerrainChapter {
     const PREPARES_IN_STEPS: bool = true;
     const TITLE: &'static str = "03 · Terrain from noise";
     const VIEWS: &'static [View] = &views_of(&VIEW_TABLE);
+
+    fn view_settings(view: usize) -> String {
+        common::ViewRow::settings_of(&VIEW_TABLE, view)
+    }
     const KEYS: &'static [(&'static str, &'static str)] = ground::KEYS;
     const FLAGS: &'static [ChapterFlag] = &[ground::WALK_FLAG];
     const BENCH_FRAMES: u32 = 10;

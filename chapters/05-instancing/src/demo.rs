@@ -74,6 +74,10 @@ impl Chapter for InstancingChapter {
     const PREPARES_IN_STEPS: bool = true;
     const TITLE: &'static str = "05 · Instancing";
     const VIEWS: &'static [View] = &views_of(&VIEW_TABLE);
+
+    fn view_settings(view: usize) -> String {
+        common::ViewRow::settings_of(&VIEW_TABLE, view)
+    }
     const KEYS: &'static [(&'static str, &'static str)] = ground::KEYS;
     const FLAGS: &'static [ChapterFlag] = &[ground::WALK_FLAG];
     const BENCH_FRAMES: u32 = 10;

@@ -206,8 +206,13 @@ impl DrawCalls {
     /// The calls and triangles, for the pass's count: the rocks' as far as
     /// they are known (read back late where the GPU culls).
     pub fn drawn(&self) -> Drawn {
-        let rocks = self.rocks_drawn.map_or(0, |drawn| drawn.triangles);
-        Drawn::counted(self.total(), self.terrain_triangles + rocks)
+        let terrain = Drawn::counted(self.total(), self.terrain_triangles);
+        match self.rocks_drawn {
+            // Graded by the GPU: its counts, read back from an earlier frame.
+            Some(rocks) if rocks.levels.is_some() => terrain.and_read_back(rocks.triangles),
+            Some(rocks) => Drawn::counted(self.total(), self.terrain_triangles + rocks.triangles),
+            None => terrain,
+        }
     }
 }
 

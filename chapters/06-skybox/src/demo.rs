@@ -112,6 +112,10 @@ impl Chapter for SkyboxChapter {
     const PREPARES_IN_STEPS: bool = true;
     const TITLE: &'static str = "06 · Sky box";
     const VIEWS: &'static [View] = &views_of(&VIEW_TABLE);
+
+    fn view_settings(view: usize) -> String {
+        common::ViewRow::settings_of(&VIEW_TABLE, view)
+    }
     const SNAPSHOT_TIME: f32 = 0.0;
     const KEYS: &'static [(&'static str, &'static str)] = ground::KEYS;
     const FLAGS: &'static [ChapterFlag] = &[ground::WALK_FLAG];

@@ -66,6 +66,10 @@ impl Chapter for LightingChapter {
     const BROWSER_TOLERANCE: common::Tolerance = common::Tolerance { mean: 0.013, outliers: 0.002, patch: 0.2 };
     const TITLE: &'static str = "08 · Lighting";
     const VIEWS: &'static [View] = &views_of(&VIEW_TABLE);
+
+    fn view_settings(view: usize) -> String {
+        common::ViewRow::settings_of(&VIEW_TABLE, view)
+    }
     const POST_ANTIALIASING: bool = true;
     const SNAPSHOT_TIME: f32 = 6.0;
     const BENCH_FRAMES: u32 = 5;

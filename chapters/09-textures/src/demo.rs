@@ -71,6 +71,10 @@ impl Chapter for TexturesChapter {
     const BROWSER_TOLERANCE: common::Tolerance = common::Tolerance { mean: 0.04, outliers: 0.002, patch: 0.36 };
     const TITLE: &'static str = "09 · Textures";
     const VIEWS: &'static [View] = &views_of(&VIEW_TABLE);
+
+    fn view_settings(view: usize) -> String {
+        common::ViewRow::settings_of(&VIEW_TABLE, view)
+    }
     const POST_ANTIALIASING: bool = true;
     const SNAPSHOT_TIME: f32 = 6.0;
     const BENCH_FRAMES: u32 = 5;

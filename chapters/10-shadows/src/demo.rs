@@ -78,6 +78,10 @@ impl Chapter for ShadowsChapter {
     const BROWSER_TOLERANCE: common::Tolerance = common::Tolerance { mean: 0.028, outliers: 0.002, patch: 0.2 };
     const TITLE: &'static str = "10 · Shadows";
     const VIEWS: &'static [View] = &views_of(&VIEW_TABLE);
+
+    fn view_settings(view: usize) -> String {
+        common::ViewRow::settings_of(&VIEW_TABLE, view)
+    }
     const POST_ANTIALIASING: bool = true;
     /// Mid-jump: the player is in the air over the first wall.
     const SNAPSHOT_TIME: f32 = 5.7;

@@ -73,6 +73,10 @@ impl Chapter for VoronoiWaterChapter {
     const BROWSER_TOLERANCE: common::Tolerance = common::Tolerance { mean: 0.042, outliers: 0.002, patch: 0.25 };
     const TITLE: &'static str = "11 · Voronoi water";
     const VIEWS: &'static [View] = &views_of(&VIEW_TABLE);
+
+    fn view_settings(view: usize) -> String {
+        common::ViewRow::settings_of(&VIEW_TABLE, view)
+    }
     const POST_ANTIALIASING: bool = true;
     const SNAPSHOT_TIME: f32 = SNAPSHOT_TIME;
     const BENCH_FRAMES: u32 = 10;
