@@ -44,26 +44,3 @@ pub fn orbit_of(preset: Option<CameraPreset>) -> Orbit {
         Some(CameraPreset::Sunset) | None => SUNSET_ORBIT,
     }
 }
-
-#[cfg(test)]
-mod tests {
-    use common::glam::Vec2;
-
-    use super::*;
-    use crate::views::SNAPSHOT_TIME;
-    use crate::{boat, sail};
-
-    #[test]
-    fn the_sail_view_looks_at_the_side_the_sail_fills_towards() {
-        let heading = boat::on_course(SNAPSHOT_TIME).heading;
-        let across = sail::wind_across(heading, sail::wind());
-        assert!(across.abs() > 0.5, "at the snapshot the wind is only {across} across the sail");
-        let ahead = boat::forward(heading);
-        let filled_side = Vec2::new(-ahead.y, ahead.x) * across.signum();
-        let back = SAIL_ORBIT.back();
-        let eye = Vec2::new(back.x, back.z).normalize();
-        // Within 45° of that side: the belly faces the eye.
-        let off = eye.angle_to(filled_side).abs().to_degrees();
-        assert!(off < 45.0, "the eye is {off}° off the side the sail fills to");
-    }
-}
