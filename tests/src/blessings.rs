@@ -143,15 +143,18 @@ impl Log {
 
     /// The last entry that wrote a file with `hash`: the blessing a
     /// reference with those bytes came from.
-    pub fn blessing_of(&self, hash: &str) -> Option<&Entry> {
-        self.entries.iter().rev().find(|e| e.new == hash)
+    /// The latest entry that blessed these bytes as `view`'s picture
+    /// (`chapter/view`): a picture blessed for another view (a copy of
+    /// `flat.png` over `default.png`) is no blessing of this one.
+    pub fn blessing_of(&self, view: &str, hash: &str) -> Option<&Entry> {
+        self.entries.iter().rev().find(|e| e.view == view && e.new == hash)
     }
 
     /// The adapter the reference at `reference` was made on, by the log;
     /// `None` when no entry names its bytes (or it cannot be read).
-    pub fn adapter_of(&self, reference: &Path) -> Option<&str> {
+    pub fn adapter_of(&self, view: &str, reference: &Path) -> Option<&str> {
         let hash = hash_file(reference).ok()?;
-        self.blessing_of(&hash).map(|e| e.adapter.as_str())
+        self.blessing_of(view, &hash).map(|e| e.adapter.as_str())
     }
 
     /// Appends `entries` to the log's file, making it (with its heading)
@@ -187,10 +190,10 @@ pub fn unlogged_references(log: &Log) -> anyhow::Result<Vec<String>> {
         for view in record.views.iter().filter(|v| v.snapshot) {
             let reference = crate::reference_path(record.name, view.name);
             let Ok(hash) = hash_file(&reference) else { continue }; // a missing reference fails its view
-            if log.blessing_of(&hash).is_none() {
+            if log.blessing_of(&format!("{}/{}", record.name, view.name), &hash).is_none() {
                 let (chapter, view) = (record.name, view.name);
                 problems.push(format!(
-                    "tests/snapshots/{chapter}/{view}.png (sha256 {hash}…) matches no entry of tests/snapshots/{FILE}: \
+                    "tests/snapshots/{chapter}/{view}.png (sha256 {hash}…) matches no entry of its view in tests/snapshots/{FILE}: \
                      a reference changes only through `cargo xtask snapshot --bless {chapter}/{view} --reason \"...\"`"
                 ));
             }

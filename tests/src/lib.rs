@@ -253,7 +253,9 @@ impl Snapshots for Record {
             if let (Some(old), Some(old_hash)) = (same_size, &old_hash)
                 && snapshot::beyond_rounding(old, &picture).0 == 0
             {
-                let known = log.blessing_of(old_hash).is_some_and(|e| e.adapter != blessings::UNKNOWN_ADAPTER);
+                let view_name = format!("{}/{}", self.name, view.name);
+                let known =
+                    log.blessing_of(&view_name, old_hash).is_some_and(|e| e.adapter != blessings::UNKNOWN_ADAPTER);
                 let outcome = if known {
                     Blessing::Unchanged
                 } else {
@@ -538,13 +540,19 @@ pub struct Rules {
 
 impl Rules {
     pub fn new(gpu: &Gpu) -> anyhow::Result<Self> {
-        Ok(Self { log: Log::read()?, adapter: blessings::adapter(gpu) })
+        Ok(Self::from_parts(Log::read()?, blessings::adapter(gpu)))
+    }
+
+    /// The rules a `log` gives on `adapter` (as [`blessings::adapter`]
+    /// writes it).
+    pub fn from_parts(log: Log, adapter: String) -> Self {
+        Self { log, adapter }
     }
 
     /// Exact when the log says `reference` was made on this adapter, by
     /// FLIP with `tolerance` otherwise.
-    pub fn for_reference(&self, reference: &Path, tolerance: Tolerance) -> Rule {
-        match self.log.adapter_of(reference) {
+    pub fn for_reference(&self, view: &str, reference: &Path, tolerance: Tolerance) -> Rule {
+        match self.log.adapter_of(view, reference) {
             Some(adapter) if adapter == self.adapter => Rule::Exact,
             _ => Rule::Perceptual(tolerance),
         }
@@ -560,7 +568,7 @@ fn compare(
     rules: &Rules,
 ) -> Result<(Rule, Comparison), String> {
     let reference = reference_path(record.name, record.views[view].name);
-    let rule = rules.for_reference(&reference, Tolerance::DEFAULT);
+    let rule = rules.for_reference(&format!("{}/{}", record.name, record.views[view].name), &reference, Tolerance::DEFAULT);
     snapshot::check(image, &reference, rule).map(|c| (rule, c)).map_err(|e| e.to_string())
 }
 

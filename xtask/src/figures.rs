@@ -296,19 +296,33 @@ impl Figures {
 /// writes it (xtask does not link `common`; its test below reads one).
 pub const FRAMES_HEADING: &str = "Frames timed, each as its fingerprint describes it";
 
-/// The rows of a bench table's frames section: view, frame, samples, passes.
+/// The frames a bench table timed, as (row, frame, samples, passes): from
+/// its frames section (a chapter's table), or else from a `frame` column
+/// (the sizes table, a row per chapter; samples and passes unknown there).
+/// `None` for a table from before frames were fingerprinted.
 fn frames_of(table: &str) -> Option<Vec<[String; 4]>> {
-    let section = &table[table.find(FRAMES_HEADING)?..];
-    Some(
-        section
-            .lines()
-            .filter_map(|line| {
-                let cells: Vec<&str> = line.split('|').map(str::trim).collect();
-                let row = cells.len() == 6 && cells[1] != "view" && !cells[1].starts_with("---");
-                row.then(|| [cells[1], cells[2], cells[3], cells[4]].map(str::to_string))
-            })
-            .collect(),
-    )
+    let cells = |line: &str| -> Vec<String> { line.split('|').map(|c| c.trim().to_string()).collect() };
+    if let Some(at) = table.find(FRAMES_HEADING) {
+        return Some(
+            table[at..]
+                .lines()
+                .map(cells)
+                .filter(|c| c.len() == 6 && c[1] != "view" && !c[1].starts_with("---"))
+                .map(|c| [c[1].clone(), c[2].clone(), c[3].clone(), c[4].clone()])
+                .collect(),
+        );
+    }
+    let lines: Vec<&str> = table.lines().collect();
+    let heading = lines.iter().position(|l| l.starts_with('|') && cells(l).iter().any(|c| c == "frame"))?;
+    let column = cells(lines[heading]).iter().position(|c| c == "frame")?;
+    let rows: Vec<[String; 4]> = lines[heading + 2..]
+        .iter()
+        .take_while(|l| l.starts_with('|'))
+        .map(|l| cells(l))
+        .filter(|c| c.len() > column && c[column].chars().all(|ch| ch.is_ascii_hexdigit()) && !c[column].is_empty())
+        .map(|c| [c[1].clone(), c[column].clone(), String::new(), String::new()])
+        .collect();
+    (!rows.is_empty()).then_some(rows)
 }
 
 /// What a reader of `table` (measured elsewhere) must know of its frames
@@ -335,7 +349,9 @@ fn older_frames_note(table: &str, current: &str) -> String {
                 if now_passes != passes {
                     what.push(format!("it drew {passes} then; {now_passes} now"));
                 }
-                if what.is_empty() {
+                if what.is_empty() && samples.is_empty() {
+                    what.push(format!("frame {id} then, {now_id} now"));
+                } else if what.is_empty() {
                     what.push("its settings changed".to_string());
                 }
                 changed.push(format!("`{view}`: {}", what.join("; ")))
