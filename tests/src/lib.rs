@@ -568,7 +568,8 @@ fn compare(
     rules: &Rules,
 ) -> Result<(Rule, Comparison), String> {
     let reference = reference_path(record.name, record.views[view].name);
-    let rule = rules.for_reference(&format!("{}/{}", record.name, record.views[view].name), &reference, Tolerance::DEFAULT);
+    let rule =
+        rules.for_reference(&format!("{}/{}", record.name, record.views[view].name), &reference, Tolerance::DEFAULT);
     snapshot::check(image, &reference, rule).map(|c| (rule, c)).map_err(|e| e.to_string())
 }
 

@@ -313,7 +313,9 @@ fn frames_of(table: &str) -> Option<Vec<[String; 4]>> {
         );
     }
     let lines: Vec<&str> = table.lines().collect();
-    let heading = lines.iter().position(|l| l.starts_with('|') && cells(l).iter().any(|c| c == "frame"))?;
+    // A table's heading: the line above its `|---` line.
+    let heading = (0..lines.len().saturating_sub(1))
+        .find(|&i| lines[i + 1].starts_with("|-") && cells(lines[i]).iter().any(|c| c == "frame"))?;
     let column = cells(lines[heading]).iter().position(|c| c == "frame")?;
     let rows: Vec<[String; 4]> = lines[heading + 2..]
         .iter()

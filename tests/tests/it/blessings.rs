@@ -59,6 +59,9 @@ fn a_reference_is_exact_only_on_its_own_adapter_and_for_its_own_view() {
     let copied = here.for_reference("lighting/night", &reference, Tolerance::DEFAULT);
     assert_eq!(copied, Rule::Perceptual(Tolerance::DEFAULT), "another view's picture is no blessing of this one");
     let elsewhere = snapshots::Rules::from_parts(log(), "NVIDIA H200 · Vulkan · 570.0".into());
-    assert_eq!(elsewhere.for_reference("lighting/day", &reference, Tolerance::DEFAULT), Rule::Perceptual(Tolerance::DEFAULT));
+    assert_eq!(
+        elsewhere.for_reference("lighting/day", &reference, Tolerance::DEFAULT),
+        Rule::Perceptual(Tolerance::DEFAULT)
+    );
     std::fs::remove_dir_all(&folder).unwrap();
 }
