@@ -409,10 +409,12 @@ fn same_frames(frames: &[FrameTag]) -> anyhow::Result<()> {
             if a.table == b.table && a.file != b.file && a.row == b.row && (a.id.is_none() || a.id != b.id) {
                 let frame = |t: &FrameTag| t.id.clone().map_or("no recorded frame".into(), |id| format!("frame {id}"));
                 bail!(
-                    "combines `{}` timed on {} with `{}` timed on {}: measure again, or compare rows of one frame",
-                    format!("{} | {}", a.file, a.row),
+                    "combines `{} | {}` timed on {} with `{} | {}` timed on {}: measure again, or compare rows of one frame",
+                    a.file,
+                    a.row,
                     frame(a),
-                    format!("{} | {}", b.file, b.row),
+                    b.file,
+                    b.row,
                     frame(b)
                 );
             }
