@@ -25,7 +25,7 @@ pub struct Gpu {
 
 /// What a chapter needs beyond the WebGPU baseline. Optional features are
 /// enabled when the adapter has them; required ones make setup fail clearly.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+#[derive(Clone, Debug, PartialEq, Eq)]
 pub struct GpuNeeds {
     pub required: wgpu::Features,
     pub optional: wgpu::Features,
@@ -34,6 +34,13 @@ pub struct GpuNeeds {
     /// vertex shaders, indirect draws. Setup on an adapter without them
     /// fails with one line naming what is missing.
     pub downlevel: wgpu::DownlevelFlags,
+    /// The least the chapter can draw with: an adapter below any of these
+    /// is refused in one line naming each. Every device is opened with
+    /// WebGPU's default limits (or the adapter's, where it has less), raised
+    /// only to these, so that a pipeline that asks for more than a learner's
+    /// adapter must give fails here too. The default is WebGL2's, the least
+    /// any adapter the course runs on has.
+    pub limits: wgpu::Limits,
 }
 
 /// Nothing beyond WebGPU's baseline, and nothing WebGL2 lacks.
@@ -43,33 +50,100 @@ impl Default for GpuNeeds {
             required: wgpu::Features::empty(),
             optional: wgpu::Features::empty(),
             downlevel: wgpu::DownlevelFlags::empty(),
+            limits: wgpu::Limits::downlevel_webgl2_defaults(),
         }
     }
+}
+
+impl GpuNeeds {
+    /// What an adapter with `features`, `downlevel` and `limits` lacks of
+    /// these needs, one phrase each (empty: it has everything).
+    pub fn missing_on(
+        &self,
+        features: wgpu::Features,
+        downlevel: wgpu::DownlevelFlags,
+        limits: &wgpu::Limits,
+    ) -> Vec<String> {
+        let mut missing = Vec::new();
+        let features = self.required - features;
+        if !features.is_empty() {
+            missing
+                .push(format!("the features {}", features.iter_names().map(|(n, _)| n).collect::<Vec<_>>().join(", ")));
+        }
+        if !(self.downlevel - downlevel).is_empty() {
+            missing.push(names(self.downlevel - downlevel));
+        }
+        self.limits.check_limits_with_fail_fn(limits, false, |name, needed, has| {
+            missing.push(format!("{name} of {needed} (it has {has})"));
+        });
+        missing
+    }
+
+    /// The limits a device is opened with on an adapter that has
+    /// `adapter`: WebGPU's defaults raised to what the chapter needs, and
+    /// lowered to what the adapter has.
+    pub fn device_limits(&self, adapter: &wgpu::Limits) -> wgpu::Limits {
+        wgpu::Limits::default().or_better_values_from(&self.limits).or_worse_values_from(adapter)
+    }
+}
+
+/// Instance flags for `backends`: without wgpu's validation of indirect
+/// draws where OpenGL may be chosen. That validation runs a compute shader
+/// that an OpenGL 3.3 driver (seed 001's Intel HD 4000) cannot build, and
+/// the device is lost before the first frame (wgpu issue #8799); the
+/// course's indirect arguments are written by its own compute pass, whose
+/// counts chapter 05's tests check.
+pub fn instance_flags(flags: wgpu::InstanceFlags, backends: wgpu::Backends) -> wgpu::InstanceFlags {
+    if backends.contains(wgpu::Backends::GL) { flags - wgpu::InstanceFlags::VALIDATION_INDIRECT_CALL } else { flags }
 }
 
 /// Setup failed in a way a learner can fix: the message says how.
 #[derive(Debug)]
 pub struct NoAdapter {
     pub reason: String,
+    /// An adapter was found but lacks what the chapter needs (`reason`
+    /// names each); otherwise there was none, or no device could be opened.
+    pub lacking: bool,
+}
+
+impl NoAdapter {
+    /// No adapter, or none that opened a device, for `reason`.
+    pub fn none(reason: impl Into<String>) -> Self {
+        Self { reason: reason.into(), lacking: false }
+    }
+}
+
+/// Where to get a working driver on the system this runs on.
+fn driver_advice() -> &'static str {
+    if cfg!(target_os = "macos") {
+        "Metal comes with macOS 10.13 and later: update macOS, or run on a Mac with a Metal GPU"
+    } else if cfg!(target_os = "windows") {
+        "install your GPU maker's current driver (DirectX 12 or Vulkan)"
+    } else {
+        "install a driver; with no GPU, the software Vulkan driver works: \
+         `sudo apt-get install mesa-vulkan-drivers` on Debian/Ubuntu"
+    }
 }
 
 impl fmt::Display for NoAdapter {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        if cfg!(target_arch = "wasm32") {
-            return write!(
+        match (cfg!(target_arch = "wasm32"), self.lacking) {
+            (true, false) => write!(
                 f,
                 "this browser gives the page neither WebGPU nor WebGL2 ({}). Open it in a browser with \
                  WebGPU turned on, or turn on hardware acceleration (WebGL2), or run the chapter on the \
                  desktop: `cargo run -p <chapter>`",
                 self.reason
-            );
+            ),
+            (true, true) => write!(
+                f,
+                "this browser's adapter cannot draw this chapter: {}. Open it in a browser with WebGPU \
+                 turned on, or run the chapter on the desktop: `cargo run -p <chapter>`",
+                self.reason
+            ),
+            (false, false) => write!(f, "no usable graphics adapter ({}). {}", self.reason, driver_advice()),
+            (false, true) => write!(f, "{}", self.reason),
         }
-        write!(
-            f,
-            "no usable graphics adapter ({}). Install a driver; with no GPU, the software \
-             Vulkan driver works: `sudo apt-get install mesa-vulkan-drivers` on Debian/Ubuntu",
-            self.reason
-        )
     }
 }
 
@@ -93,7 +167,8 @@ pub fn quiet_driver_warnings() {
 /// WebGL2 where the browser has no working WebGPU adapter; `Instance::new`
 /// alone would pick WebGPU whenever `navigator.gpu` exists, even with no
 /// adapter behind it.
-pub async fn window_instance(desc: wgpu::InstanceDescriptor) -> wgpu::Instance {
+pub async fn window_instance(mut desc: wgpu::InstanceDescriptor) -> wgpu::Instance {
+    desc.flags = instance_flags(desc.flags, desc.backends);
     #[cfg(target_arch = "wasm32")]
     {
         wgpu::util::new_instance_with_webgpu_detection(desc).await
@@ -117,7 +192,8 @@ impl Gpu {
         if let Some(backends) = wgpu::Backends::from_env() {
             return Self::headless_on(backends, needs);
         }
-        Self::headless_on(wgpu::Backends::PRIMARY, needs).or_else(|_| Self::headless_on(wgpu::Backends::GL, needs))
+        Self::headless_on(wgpu::Backends::PRIMARY, needs.clone())
+            .or_else(|_| Self::headless_on(wgpu::Backends::GL, needs))
     }
 
     /// [`Gpu::headless`] on `backends` only: the snapshot test draws every
@@ -125,6 +201,7 @@ impl Gpu {
     pub fn headless_on(backends: wgpu::Backends, needs: GpuNeeds) -> Result<Self, NoAdapter> {
         let mut desc = wgpu::InstanceDescriptor::new_without_display_handle_from_env();
         desc.backends = backends;
+        desc.flags = instance_flags(desc.flags, backends);
         pollster::block_on(Self::open(wgpu::Instance::new(desc), None, needs))
     }
 
@@ -142,22 +219,20 @@ impl Gpu {
                 ..Default::default()
             })
             .await
-            .map_err(|e| NoAdapter { reason: e.to_string() })?;
+            .map_err(|e| NoAdapter::none(e.to_string()))?;
 
-        let missing = needs.required - adapter.features();
+        let has = adapter.limits();
+        let missing = needs.missing_on(adapter.features(), adapter.get_downlevel_capabilities().flags, &has);
         if !missing.is_empty() {
-            return Err(NoAdapter { reason: format!("{} lacks the features {missing:?}", adapter.get_info().name) });
-        }
-        let lacking = needs.downlevel - adapter.get_downlevel_capabilities().flags;
-        if !lacking.is_empty() {
             let info = adapter.get_info();
             return Err(NoAdapter {
                 reason: format!(
                     "{} on {:?} cannot do what this chapter needs: {}",
                     info.name,
                     info.backend,
-                    names(lacking)
+                    missing.join("; ")
                 ),
+                lacking: true,
             });
         }
         let features = needs.required | (needs.optional & adapter.features());
@@ -165,13 +240,11 @@ impl Gpu {
             .request_device(&wgpu::DeviceDescriptor {
                 label: Some("chapter device"),
                 required_features: features,
-                // Ask for what the adapter has: software adapters allow
-                // large textures, and limits only ever grow from defaults.
-                required_limits: adapter.limits(),
+                required_limits: needs.device_limits(&has),
                 ..Default::default()
             })
             .await
-            .map_err(|e| NoAdapter { reason: format!("request_device failed: {e}") })?;
+            .map_err(|e| NoAdapter::none(format!("request_device failed: {e}")))?;
 
         Ok(Self { instance, adapter, device, queue, cache: Mutex::default(), shaders: Default::default() })
     }

@@ -312,7 +312,7 @@ impl Opening {
         let surface = instance.create_surface(window.clone());
         // In a browser, a canvas no backend can draw into means no WebGPU and no WebGL2.
         #[cfg(target_arch = "wasm32")]
-        let surface = surface.map_err(|e| crate::NoAdapter { reason: e.to_string() })?;
+        let surface = surface.map_err(|e| crate::NoAdapter::none(e.to_string()))?;
         #[cfg(not(target_arch = "wasm32"))]
         let surface = surface.context("cannot create a surface for the window")?;
         let gpu = Gpu::open(instance, Some(&surface), C::gpu_needs()).await?;

@@ -133,7 +133,8 @@ pub struct Record {
     pub prepares_in_steps: bool,
     /// Whether it finishes its frames with chapter 08's post chain.
     pub post_chain: bool,
-    pub needs: GpuNeeds,
+    /// What it needs of an adapter (`Chapter::gpu_needs`).
+    pub needs: fn() -> GpuNeeds,
     /// The settings each view applies, as the chapter writes them (part of
     /// a frame's fingerprint, `common::fingerprint`).
     pub view_settings: fn(usize) -> String,
@@ -156,7 +157,7 @@ fn record<C: Chapter>(part: &'static Part, figure: &'static str, techniques: &'s
         browser_tolerance: C::BROWSER_TOLERANCE,
         prepares_in_steps: C::PREPARES_IN_STEPS,
         post_chain: C::POST_ANTIALIASING,
-        needs: C::gpu_needs(),
+        needs: C::gpu_needs,
         view_settings: C::view_settings,
         run: common::run::<C>,
         open: |gpu, target| {

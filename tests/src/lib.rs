@@ -107,7 +107,7 @@ impl std::ops::Deref for Lease {
 impl Drop for Lease {
     fn drop(&mut self) {
         if let Some(gpu) = self.gpu.take() {
-            IDLE_DEVICES.lock().unwrap_or_else(|e| e.into_inner()).push((self.key, gpu));
+            IDLE_DEVICES.lock().unwrap_or_else(|e| e.into_inner()).push((self.key.clone(), gpu));
         }
     }
 }
@@ -119,7 +119,7 @@ pub fn lease(needs: GpuNeeds) -> anyhow::Result<Lease> {
 
 /// [`lease`] on `backends` (empty: as `Gpu::headless` chooses).
 pub fn lease_on(needs: GpuNeeds, backends: wgpu::Backends) -> anyhow::Result<Lease> {
-    let key = (needs, backends);
+    let key = (needs.clone(), backends);
     let idle = {
         let mut devices = IDLE_DEVICES.lock().unwrap_or_else(|e| e.into_inner());
         devices.iter().position(|(k, _)| *k == key).map(|i| devices.swap_remove(i).1)
@@ -175,7 +175,7 @@ pub trait Snapshots {
 
 impl Snapshots for Record {
     fn gpu(&self) -> anyhow::Result<Lease> {
-        lease(self.needs)
+        lease((self.needs)())
     }
 
     // ANCHOR: check
@@ -497,7 +497,7 @@ pub enum OnGl {
 /// draws its first view, or takes its refusal. A panic (a shader the GL
 /// backend cannot translate, a feature it lacks) fails the caller's test.
 pub fn draw_on_gl(record: &Record) -> anyhow::Result<OnGl> {
-    let gpu = match lease_on(record.needs, wgpu::Backends::GL) {
+    let gpu = match lease_on((record.needs)(), wgpu::Backends::GL) {
         Ok(gpu) => gpu,
         Err(error) => {
             let Some(refusal) = error.downcast_ref::<NoAdapter>() else { return Err(error) };

@@ -23,12 +23,15 @@ fn main() {
             })
         })
         .collect();
-    // Every chapter once on OpenGL: drawn, or refused in one line.
+    // Every chapter once on OpenGL: drawn, or refused in one line (left
+    // out where `cargo xtask test` found no EGL: macOS, Windows).
+    let no_opengl = std::env::var_os("SNAPSHOTS_SKIP_OPENGL").is_some();
     trials.extend(snapshots::chapters().into_iter().map(|entry| {
         Trial::test(format!("opengl::{}", entry.name), move || match snapshots::draw_on_gl(&entry) {
             Ok(_) => Ok(()),
             Err(e) => Err(format!("{e:#}").into()),
         })
+        .with_ignored_flag(no_opengl)
     }));
     trials.push(Trial::test("every_chapter_crate_is_registered", every_chapter_crate_is_registered));
     trials.push(Trial::test("no_stale_references", no_stale_references));

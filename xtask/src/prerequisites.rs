@@ -49,17 +49,18 @@ pub fn clippy_driver() -> anyhow::Result<&'static str> {
     Ok(driver)
 }
 
-/// [`ensure_adapter`], and Mesa's OpenGL for the snapshot test's GL run.
-pub fn ensure_adapters() -> anyhow::Result<()> {
+/// [`ensure_adapter`], and Mesa's OpenGL for the snapshot test's GL run
+/// where the plan runs it.
+pub fn ensure_adapters(plan: &crate::plan::Plan) -> anyhow::Result<()> {
     ensure_adapter()?;
-    if cfg!(target_os = "linux") && !opengl_present() {
+    if plan.opengl == crate::plan::Decision::Install {
         apt_install("the snapshot test draws every chapter on OpenGL too", &OPENGL)?;
     }
     Ok(())
 }
 
 /// EGL and Mesa's drivers for it are installed.
-fn opengl_present() -> bool {
+pub fn opengl_present() -> bool {
     ["/usr/lib/x86_64-linux-gnu", "/usr/lib/aarch64-linux-gnu", "/usr/lib64", "/usr/lib"].iter().any(|dir| {
         let dir = Path::new(dir);
         dir.join("libEGL.so.1").exists()
@@ -81,7 +82,7 @@ pub fn ensure_window_tools() -> anyhow::Result<bool> {
     Ok(has_window_tools())
 }
 
-fn has_window_tools() -> bool {
+pub fn has_window_tools() -> bool {
     let command = "command -v Xvfb && command -v openbox && command -v xdotool && command -v xwd";
     Command::new("sh").args(["-c", command]).output().is_ok_and(|o| o.status.success())
 }

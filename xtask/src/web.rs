@@ -315,15 +315,20 @@ pub fn serve(args: &[String]) -> anyhow::Result<()> {
     }
 }
 
-/// Debian's Chromium, installed as the Vulkan driver is, or the command to run.
+/// The Chromium the browser test drives: `CHROMIUM`, or Debian's.
+pub fn chromium() -> Option<PathBuf> {
+    let given = std::env::var_os("CHROMIUM").map(PathBuf::from);
+    given.into_iter().chain(["/usr/bin/chromium", "/usr/bin/chromium-browser"].map(PathBuf::from)).find(|p| p.exists())
+}
+
+/// [`chromium`], or Debian's installed as the Vulkan driver is, or the
+/// command to run.
 pub fn ensure_chromium() -> anyhow::Result<PathBuf> {
-    let found =
-        || ["/usr/bin/chromium", "/usr/bin/chromium-browser"].map(PathBuf::from).into_iter().find(|p| p.exists());
-    if let Some(path) = found() {
+    if let Some(path) = chromium() {
         return Ok(path);
     }
     crate::prerequisites::apt_install("the browser test needs Chromium", &["chromium"])?;
-    found().context("installed chromium but /usr/bin/chromium is missing")
+    chromium().context("installed chromium but /usr/bin/chromium is missing")
 }
 
 /// Bytes of `path`, and of it compressed by gzip at the level static hosts use.

@@ -43,7 +43,7 @@ impl Default for TerrainSettings {
 
 impl TerrainSettings {
     /// Samples along one side.
-    pub fn samples(&self) -> u32 {
+    pub const fn samples(&self) -> u32 {
         self.chunks_per_side * CHUNK_QUADS + 1
     }
 

@@ -42,7 +42,14 @@ struct Globals {
 /// chapters 03 to 07 on one kind of device, so a process that opens several
 /// of them can share the terrain made on it (`Gpu::cached`).
 pub fn gpu_needs() -> common::GpuNeeds {
-    common::GpuNeeds { optional: wgpu::Features::CLIP_DISTANCES, ..Default::default() }
+    let base = common::GpuNeeds::default();
+    common::GpuNeeds {
+        optional: wgpu::Features::CLIP_DISTANCES,
+        // The height and normal maps are one texture each, a sample a texel:
+        // 4097 a side by default, more than WebGL2's guaranteed 2048.
+        limits: wgpu::Limits { max_texture_dimension_2d: TerrainSettings::default().samples(), ..base.limits },
+        ..base
+    }
 }
 
 /// A clip plane (n, d): fragments with n · p + d < 0 are discarded. `KEEP_ALL`

@@ -88,6 +88,7 @@ impl Chapter for LightingChapter {
             required: wgpu::Features::empty(),
             optional: PostChain::OPTIONAL_FEATURES,
             downlevel: crate::scene_lights::DOWNLEVEL,
+            limits: crate::scene_lights::LIMITS,
         }
     }
 

@@ -67,9 +67,18 @@ pub struct LoopOptions {
 /// What the lit chapters (08-11) need of an adapter that is less than a
 /// full WebGPU one: storage buffers read by vertex and fragment shaders,
 /// where the lights, their cluster lists and the values shaders branch on
-/// live (`common::pipeline::storage_entry` says why). WebGL2 has none.
-pub const DOWNLEVEL: wgpu::DownlevelFlags =
-    wgpu::DownlevelFlags::VERTEX_STORAGE.union(wgpu::DownlevelFlags::FRAGMENT_STORAGE);
+/// live (`common::pipeline::storage_entry` says why), and compute shaders,
+/// which make the split-sum table, the sky's irradiance and the
+/// prefiltered sky. WebGL2 has none of them.
+pub const DOWNLEVEL: wgpu::DownlevelFlags = wgpu::DownlevelFlags::VERTEX_STORAGE
+    .union(wgpu::DownlevelFlags::FRAGMENT_STORAGE)
+    .union(wgpu::DownlevelFlags::COMPUTE_SHADERS);
+
+/// The least the lit chapters draw with: a WebGPU adapter's defaults
+/// (chapter 10's lantern reads all 8 storage buffers a fragment stage may
+/// have; chapters 10 and 11 use all 4 bind groups). An OpenGL adapter
+/// with less is refused in one line that names each limit it lacks.
+pub const LIMITS: wgpu::Limits = wgpu::Limits::defaults();
 
 // ANCHOR: scene_lights
 /// The lights of a frame on the GPU: group 0 of `lights.wgsl`, with the

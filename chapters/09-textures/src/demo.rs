@@ -98,6 +98,7 @@ impl Chapter for TexturesChapter {
             required: wgpu::Features::empty(),
             optional: PostChain::OPTIONAL_FEATURES,
             downlevel: lighting::scene_lights::DOWNLEVEL,
+            limits: lighting::scene_lights::LIMITS,
         }
     }
 

@@ -100,6 +100,7 @@ impl Chapter for ShadowsChapter {
             required: wgpu::Features::empty(),
             optional: PostChain::OPTIONAL_FEATURES,
             downlevel: lighting::scene_lights::DOWNLEVEL,
+            limits: lighting::scene_lights::LIMITS,
         }
     }
 

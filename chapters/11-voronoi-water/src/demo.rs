@@ -95,6 +95,7 @@ impl Chapter for VoronoiWaterChapter {
             required: wgpu::Features::empty(),
             optional: PostChain::OPTIONAL_FEATURES,
             downlevel: lighting::scene_lights::DOWNLEVEL,
+            limits: lighting::scene_lights::LIMITS,
         }
     }
 

@@ -1,7 +1,7 @@
 //! Workspace-level tests, one binary: the snapshot comparison and the
 //! bless log, the bench tables' check, real references painted out, and
 //! what needs more than one chapter's pieces (clip distances, the shader
-//! panel, hot reload, light culling, chapter flags headless, the rocks'
+//! panel, hot reload, light culling, the limits each chapter declares, chapter flags headless, the rocks'
 //! levels of detail, chapter 04's fog), and that no chapter's modules lean on
 //! each other in a circle. (The snapshot test of every view
 //! is its own harness, `tests/snapshots.rs`.)
@@ -19,6 +19,7 @@ mod editor;
 mod fog;
 mod hot_reload;
 mod light_culling;
+mod limits;
 mod lod_same_picture;
 mod module_circles;
 mod references;
