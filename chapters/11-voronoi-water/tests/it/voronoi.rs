@@ -12,6 +12,10 @@ use voronoi_water::{VIEW_TABLE, VoronoiWaterChapter};
 
 const WIDTH: u32 = 400;
 const HEIGHT: u32 = 240;
+/// How close, in tile units, a pixel's two nearest sites may be for either
+/// to count as its nearest: 10⁻⁶. The picture is one tile, `WIDTH` pixels
+/// across, so that is 1/2,500 of a pixel across (1/4,167 of one down).
+const TIE: f32 = 0.000001;
 
 fn chapter(gpu: &Gpu, view: &str) -> VoronoiWaterChapter {
     let target = Target { format: OFFSCREEN_FORMAT, width: WIDTH, height: HEIGHT, samples: 1 };
@@ -44,10 +48,10 @@ fn every_pixel_of_the_cells_view_holds_its_nearest_site() {
         // The exact cones' depth is the distance in f32 (a depth of 0..1,
         // steps near 10⁻⁷ of the cone's radius; the interpolated offset
         // from the site is as close): a rasteriser may pick the other site
-        // only where two are equidistant to within rounding. Within 10⁻⁶
-        // tile units (a 4,000th of a pixel, ten times that rounding) either
-        // answer is fair; everywhere else the pixel must hold its nearest.
-        let tie = 1e-6;
+        // only where two are equidistant to within rounding. Within `TIE`
+        // (ten times that rounding) either answer is fair; everywhere else
+        // the pixel must hold its nearest.
+        let tie = TIE;
         let (mut near_ties, mut off, mut wrong) = (0, 0, Vec::new());
         for (i, id) in ids_of(&picture).into_iter().enumerate() {
             let (x, y) = (i as u32 % WIDTH, i as u32 / WIDTH);
