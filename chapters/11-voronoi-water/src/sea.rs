@@ -39,13 +39,23 @@ pub fn periodic_wave(angle: f32, wavelength: f32, amplitude: f32) -> Wave {
 /// runs with it, and the sail fills with it.
 pub const WIND_ANGLE: f32 = 0.7;
 
-/// The sea's eight waves: wind from the south-west, wavelengths from 72 m
-/// to 17 m (four grid cells at least, so the grid can draw them), each
-/// as steep as the others: amplitude 1/90 of the wavelength.
+/// The sea's longest wave, metres: it runs with the wind …
+pub const LONGEST_WAVE_METRES: f32 = 72.0;
+/// … and its shortest, four grid cells, so that the grid can draw it.
+pub const SHORTEST_WAVE_METRES: f32 = 17.0;
+/// Every wave is as steep as the others: its wavelength is this many times
+/// its amplitude.
+pub const WAVELENGTHS_PER_AMPLITUDE: f32 = 90.0;
+
+/// The sea's eight waves: wind from the south-west, wavelengths from
+/// [`LONGEST_WAVE_METRES`] to [`SHORTEST_WAVE_METRES`], spread about the
+/// wind, amplitude 1/[`WAVELENGTHS_PER_AMPLITUDE`] of the wavelength.
 pub fn sea_waves() -> [Wave; 8] {
-    let wavelengths = [72.0, 52.0, 40.0, 31.0, 25.0, 21.0, 18.5, 17.0];
+    let wavelengths = [LONGEST_WAVE_METRES, 52.0, 40.0, 31.0, 25.0, 21.0, 18.5, SHORTEST_WAVE_METRES];
     let spread = [0.0, 0.45, -0.4, 0.8, -0.75, 0.25, -0.2, 0.6];
-    std::array::from_fn(|i| periodic_wave(WIND_ANGLE + spread[i], wavelengths[i], wavelengths[i] / 90.0))
+    std::array::from_fn(|i| {
+        periodic_wave(WIND_ANGLE + spread[i], wavelengths[i], wavelengths[i] / WAVELENGTHS_PER_AMPLITUDE)
+    })
 }
 
 /// Scene time as the waves see it: reduced modulo their period, which
