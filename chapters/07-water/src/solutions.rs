@@ -200,7 +200,7 @@ fn reflection_shares(mix: fn(f32) -> f32) -> (f32, f32) {
         let y = 1.0 - (row as f32 + 0.5) / 720.0 * 2.0;
         let near = inverse.project_point3(Vec3::new(0.0, y, 0.0));
         let d = (inverse.project_point3(Vec3::new(0.0, y, 1.0)) - near).normalize();
-        if d.y >= 0.0 || -(near + d * (-near.y / d.y)).z > 520.0 - 41.6 {
+        if d.y >= 0.0 || -(near + d * (-near.y / d.y)).z > crate::lake::LAKE_SIZE_METRES - 41.6 {
             break;
         }
         shares.push(mix(-d.y));
