@@ -146,6 +146,9 @@ fn fs_water(in: WaterOutput) -> @location(0) vec4<f32> {
 // along stiffly as one picture. (The texture is sRGB, so the push reads
 // its colours in linear light: darker than its bytes, a smaller push.)
 const TEXTURE_DRIFT: vec2<f32> = vec2<f32>(-0.006, 0.024); // tiles per second
+// The second read's frequency, in times the first's: its tile is two thirds
+// of the first's, so the two line up again every 2 tiles of the first.
+const SECOND_READ_FREQUENCY: f32 = 1.5;
 
 @fragment
 fn fs_texture(in: WaterOutput) -> @location(0) vec4<f32> {
@@ -153,7 +156,7 @@ fn fs_texture(in: WaterOutput) -> @location(0) vec4<f32> {
     let push = textureSample(water_texture, water_texture_sampler, uv).gb;
     var moved = uv + TEXTURE_DRIFT * water.level_time.y;
     moved += vec2<f32>(-push.x, push.y) * water.texture.x;
-    let albedo = textureSample(water_texture, water_texture_sampler, moved * 1.5).rgb;
+    let albedo = textureSample(water_texture, water_texture_sampler, moved * SECOND_READ_FREQUENCY).rgb;
 
     // Seed 003 showed the texture as it was. Lit by the sun through the
     // waves' normal, with a highlight like the pictures' style's, the

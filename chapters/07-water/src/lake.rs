@@ -7,13 +7,22 @@ use common::glam::{Vec2, Vec3};
 use terrain::heightfield::HeightField;
 
 // ANCHOR: lake
-/// Where the lake is: a square 520 m across, 260 m ahead of `camera`, its
-/// level at the 30th percentile of the ground's heights in that square, so
-/// that the lowest third of it is under water.
+/// The lake's side, metres …
+pub const LAKE_SIZE_METRES: f32 = 520.0;
+/// … how far its centre is ahead of the plain's camera …
+pub const LAKE_AHEAD_METRES: f32 = 260.0;
+/// … and the percentile of the ground's heights in it that its level is
+/// at: this share of the square, the lowest, is under water.
+pub const LAKE_LEVEL_PERCENTILE: usize = 30;
+
+/// Where the lake is: a square [`LAKE_SIZE_METRES`] across,
+/// [`LAKE_AHEAD_METRES`] ahead of `camera`, its level at the
+/// [`LAKE_LEVEL_PERCENTILE`]th percentile of the ground's heights in that
+/// square.
 pub fn find_lake(field: &HeightField, camera: &Camera) -> (Vec2, f32, f32) {
     let forward = Vec2::new(camera.forward().x, camera.forward().z).normalize();
-    let centre = Vec2::new(camera.position.x, camera.position.z) + forward * 260.0;
-    let size = 520.0;
+    let centre = Vec2::new(camera.position.x, camera.position.z) + forward * LAKE_AHEAD_METRES;
+    let size = LAKE_SIZE_METRES;
     let mut heights: Vec<f32> = (0..64 * 64)
         .map(|i| {
             let p = centre + (Vec2::new((i % 64) as f32, (i / 64) as f32) / 63.0 - 0.5) * size;
@@ -21,7 +30,7 @@ pub fn find_lake(field: &HeightField, camera: &Camera) -> (Vec2, f32, f32) {
         })
         .collect();
     heights.sort_by(f32::total_cmp);
-    (centre, size, heights[heights.len() * 3 / 10])
+    (centre, size, heights[heights.len() * LAKE_LEVEL_PERCENTILE / 100])
 }
 
 /// Standing at the lake's southern shore, `height` metres above the water,

@@ -42,6 +42,15 @@ fn bench_median(view: &str, what: &str) -> f32 {
     median_ms(table, view, &format!("{what} |")).expect("a row of the water bench table") as f32
 }
 
+/// The triangles a pass drew in a view, from the bench table's triangles
+/// table (`| view | pass | draws | triangles |`).
+fn bench_triangles(view: &str, pass: &str) -> f32 {
+    let table = include_str!("../../../book/src/bench/water.md");
+    let below = &table[table.find("Triangles drawn").expect("the water bench's triangles table")..];
+    let row = below.lines().find(|line| line.starts_with(&format!("| {view} | {pass} |"))).expect("a triangles row");
+    row.split('|').nth(4).unwrap().trim().replace(',', "").parse().unwrap()
+}
+
 // ANCHOR: quarter
 /// Two pictures, exercise 1: the bytes the reflection and refraction pictures take for
 /// a `target` at `resolution` (the overlay's slider): each a colour
@@ -54,16 +63,25 @@ fn picture_bytes(target: Target, resolution: f32) -> u64 {
     2 * width * height * (colour + depth)
 }
 
-/// What the pictures' passes would save at `resolution` instead of 0.5,
-/// in milliseconds, estimated from the bench: a scene pass costs its
-/// vertices plus its pixels, and the main pass (1280 × 720) and the
-/// reflection pass (a quarter of those pixels, the same scene) tell the two
-/// apart, in the `no-aa` view, where both draw one sample a pixel.
-fn pass_time_saved(resolution: f32) -> f32 {
+/// What a screenful of pixels costs a scene pass, in milliseconds,
+/// estimated from the bench's `no-aa` view (one sample a pixel in every
+/// pass): a pass costs so much a pixel and so much a triangle, and the main
+/// pass (1280 × 720) and the reflection pass (a quarter of those pixels, and
+/// its own triangles: the scene from below the water, clipped, at its own
+/// levels of detail) are two equations for the two.
+fn screenful_of_pixels_ms() -> f32 {
     let (main, reflection) =
         (bench_median("no-aa", "GPU: plain and sky pass"), bench_median("no-aa", "GPU: reflection pass"));
-    let per_screen_of_pixels = (main - reflection) / (1.0 - 0.25);
-    2.0 * per_screen_of_pixels * (0.25 - resolution * resolution)
+    let (main_triangles, reflection_triangles) =
+        (bench_triangles("no-aa", "plain and sky"), bench_triangles("no-aa", "reflection"));
+    let per_triangle = (reflection - main / 4.0) / (reflection_triangles - main_triangles / 4.0);
+    main - per_triangle * main_triangles
+}
+
+/// What the pictures' passes would save at `resolution` instead of 0.5,
+/// in milliseconds: their pixels' share of [`screenful_of_pixels_ms`].
+fn pass_time_saved(resolution: f32) -> f32 {
+    2.0 * screenful_of_pixels_ms() * (0.25 - resolution * resolution)
 }
 
 /// What the water looks like with the pictures at `resolution`: the
@@ -77,7 +95,7 @@ fn lake_at(gpu: &Gpu, chapter: &mut WaterChapter, resolution: f32) -> common::im
 // ANCHOR_END: quarter
 
 #[test]
-fn pictures_exercise_1_quarter_resolution_pictures_save_memory_and_a_seventh_of_the_frame() {
+fn pictures_exercise_1_quarter_resolution_pictures_save_memory_and_frame_time() {
     let target = Target { format: common::wgpu::TextureFormat::Bgra8UnormSrgb, width: 1280, height: 720, samples: 1 };
     let (half, quarter) = (picture_bytes(target, 0.5), picture_bytes(target, 0.25));
     let saved = pass_time_saved(0.25);
@@ -90,7 +108,15 @@ fn pictures_exercise_1_quarter_resolution_pictures_save_memory_and_a_seventh_of_
     // of 1280 × 720, 640 × 360 of them; at a quarter, 320 × 180.
     assert_eq!((half, quarter), (2 * 640 * 360 * (4 + 4), 2 * 320 * 180 * (4 + 4)));
     // The page computes its figures from the same rows with `{{#figure}}`
-    // when the book is built; here the estimate must at least be a saving.
+    // when the book is built; here the estimate must at least be a saving,
+    // and the split between pixels and triangles must hold together: the
+    // reflection, with a quarter of the pixels, takes more than a quarter of
+    // the main pass (it draws more than a quarter of the triangles), and
+    // the main pass's pixels cost more than its triangles, as the page says.
+    let main = bench_median("no-aa", "GPU: plain and sky pass");
+    let pixels = screenful_of_pixels_ms();
+    assert!(bench_median("no-aa", "GPU: reflection pass") > main / 4.0);
+    assert!(pixels < main && pixels > 2.0 * (main - pixels), "{pixels} ms of pixels in a {main} ms pass");
     assert!(saved > 0.0 && saved < frame, "{saved} ms of a {frame} ms frame");
     // What it costs: the pixels that change, and by how much (of 255).
     let gpu = Gpu::headless(WaterChapter::gpu_needs()).unwrap();
@@ -174,7 +200,7 @@ fn reflection_shares(mix: fn(f32) -> f32) -> (f32, f32) {
         let y = 1.0 - (row as f32 + 0.5) / 720.0 * 2.0;
         let near = inverse.project_point3(Vec3::new(0.0, y, 0.0));
         let d = (inverse.project_point3(Vec3::new(0.0, y, 1.0)) - near).normalize();
-        if d.y >= 0.0 || -(near + d * (-near.y / d.y)).z > 520.0 - 41.6 {
+        if d.y >= 0.0 || -(near + d * (-near.y / d.y)).z > crate::lake::LAKE_SIZE_METRES - 41.6 {
             break;
         }
         shares.push(mix(-d.y));
@@ -192,11 +218,16 @@ fn surface_exercise_1_the_cosine_mix_is_nearer_no_fresnel_than_schlick() {
         "reflection at the bottom row and on average: Schlick {by_schlick:.3?}, cosine {by_cosine:.3?}, \
          none {by_halves:.3?}"
     );
-    assert!((by_schlick.0 - 0.039).abs() < 0.002 && (by_cosine.0 - 0.452).abs() < 0.002);
+    assert!((by_schlick.0 - SCHLICK_AT_BOTTOM).abs() < 0.002 && (by_cosine.0 - COSINE_AT_BOTTOM).abs() < 0.002);
     assert!((by_schlick.1 - SCHLICK_MEAN).abs() < 0.005 && (by_cosine.1 - COSINE_MEAN).abs() < 0.005);
     // At 60° from the normal, the page's figure.
     assert!((cosine_mix(0.5) - 0.5).abs() < 1e-6 && (schlick(0.5) - 0.0506).abs() < 1e-3);
 }
+
+/// The share of the reflection at the bottom row of the picture, 57° from
+/// the normal, by Schlick and by the cosine.
+const SCHLICK_AT_BOTTOM: f32 = 0.039;
+const COSINE_AT_BOTTOM: f32 = 0.452;
 
 /// The mean share of the reflection over the lake's rows, by Schlick and by the cosine.
 const SCHLICK_MEAN: f32 = 0.247;
@@ -268,11 +299,13 @@ fn waves_exercise_1_gerstner_waves_have_narrower_crests() {
     let (sine, _) = crest_share_and_least_stretch(0.0);
     let (sharp, stretch) = crest_share_and_least_stretch(1.0);
     println!("share of the line above the mean: sines {sine:.3}, Gerstner {sharp:.3}; least stretch {stretch:.3}");
-    assert!((sine - 0.528).abs() < 0.005 && (sharp - GERSTNER_CREST_SHARE).abs() < 0.005);
+    assert!((sine - SINE_CREST_SHARE).abs() < 0.005 && (sharp - GERSTNER_CREST_SHARE).abs() < 0.005);
     assert!((stretch - 0.496).abs() < 0.01, "squeezed to {stretch} at the crests, never folded");
 }
 
-/// The share of a line across the lake above the mean level, with Gerstner's steepness 1.
+/// The share of a line across the lake above the mean level, with sines
+/// (Gerstner's steepness 0) and with Gerstner's steepness 1.
+const SINE_CREST_SHARE: f32 = 0.528;
 const GERSTNER_CREST_SHARE: f32 = 0.454;
 
 // ANCHOR: no_refraction
@@ -332,7 +365,8 @@ fn repeats_after_tiles(texture: &RgbaImage, frequency: f64) -> Option<u32> {
 // ANCHOR_END: texture_period
 
 /// The second read at 1.25 times the first's frequency, in water.wgsl.
-const SECOND_READ_AT_1_25: (&str, &str) = ("moved * 1.5).rgb", "moved * 1.25).rgb");
+const SECOND_READ_AT_1_25: (&str, &str) =
+    ("const SECOND_READ_FREQUENCY: f32 = 1.5;", "const SECOND_READ_FREQUENCY: f32 = 1.25;");
 
 #[test]
 fn seed_003_exercise_1_at_a_quarter_more_the_water_repeats_every_48_m() {

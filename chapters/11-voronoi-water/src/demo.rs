@@ -207,7 +207,7 @@ impl Chapter for VoronoiWaterChapter {
         frame.drawn.extend([self.voronoi.render(gpu, frame.encoder, frame.timer, &sites, (size, size), &s.voronoi)]);
         frame.drawn.extend(self.water.render(gpu, frame.encoder, frame.timer, self.voronoi.ids(), size, &s.processing));
         if let Show::Picture(picture) = s.show {
-            self.show.picture(gpu, frame, &self.water, picture, self.target.aspect(), 1.5);
+            self.show.picture(gpu, frame, &self.water, picture, self.target.aspect(), water_texture::TILES_SHOWN_DOWN);
             return;
         }
 

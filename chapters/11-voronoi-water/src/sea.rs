@@ -39,13 +39,23 @@ pub fn periodic_wave(angle: f32, wavelength: f32, amplitude: f32) -> Wave {
 /// runs with it, and the sail fills with it.
 pub const WIND_ANGLE: f32 = 0.7;
 
-/// The sea's eight waves: wind from the south-west, wavelengths from 72 m
-/// to 17 m (four grid cells at least, so the grid can draw them), each
-/// as steep as the others: amplitude 1/90 of the wavelength.
+/// The sea's longest wave, metres: it runs with the wind …
+pub const LONGEST_WAVE_METRES: f32 = 72.0;
+/// … and its shortest, four grid cells, so that the grid can draw it.
+pub const SHORTEST_WAVE_METRES: f32 = 17.0;
+/// Every wave is as steep as the others: its wavelength is this many times
+/// its amplitude.
+pub const WAVELENGTHS_PER_AMPLITUDE: f32 = 90.0;
+
+/// The sea's eight waves: wind from the south-west, wavelengths from
+/// [`LONGEST_WAVE_METRES`] to [`SHORTEST_WAVE_METRES`], spread about the
+/// wind, amplitude 1/[`WAVELENGTHS_PER_AMPLITUDE`] of the wavelength.
 pub fn sea_waves() -> [Wave; 8] {
-    let wavelengths = [72.0, 52.0, 40.0, 31.0, 25.0, 21.0, 18.5, 17.0];
+    let wavelengths = [LONGEST_WAVE_METRES, 52.0, 40.0, 31.0, 25.0, 21.0, 18.5, SHORTEST_WAVE_METRES];
     let spread = [0.0, 0.45, -0.4, 0.8, -0.75, 0.25, -0.2, 0.6];
-    std::array::from_fn(|i| periodic_wave(WIND_ANGLE + spread[i], wavelengths[i], wavelengths[i] / 90.0))
+    std::array::from_fn(|i| {
+        periodic_wave(WIND_ANGLE + spread[i], wavelengths[i], wavelengths[i] / WAVELENGTHS_PER_AMPLITUDE)
+    })
 }
 
 /// Scene time as the waves see it: reduced modulo their period, which
@@ -423,12 +433,21 @@ mod tests {
         }
     }
 
+    /// The most that rounding ω to whole turns a period may move a wave's
+    /// speed from deep water's, as a share of it.
+    const MOST_SPEED_MOVED: f32 = 0.02;
+
     #[test]
     fn nudged_waves_keep_their_shape() {
         for w in sea_waves() {
             // Deep water: c = √(g λ / 2π), within what rounding ω allows.
             let ideal = (GRAVITY * w.wavelength / std::f32::consts::TAU).sqrt();
-            assert!((w.speed - ideal).abs() / ideal < 0.02, "{} m: {} m/s, not {ideal}", w.wavelength, w.speed);
+            assert!(
+                (w.speed - ideal).abs() / ideal < MOST_SPEED_MOVED,
+                "{} m: {} m/s, not {ideal}",
+                w.wavelength,
+                w.speed
+            );
             assert!(w.wavelength >= 4.0 * CELL, "a {} m wave is too short for {CELL} m cells", w.wavelength);
         }
     }

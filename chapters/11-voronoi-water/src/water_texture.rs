@@ -11,6 +11,12 @@ use textures::mipmaps::{Averaging, MipMaker, level_count};
 /// read back as linear colour.
 pub const PICTURE_FORMAT: wgpu::TextureFormat = wgpu::TextureFormat::Rgba8UnormSrgb;
 
+/// How many times a picture of the texture is tiled down the screen when
+/// shown full screen: more than once, so that the tile's edges show (they
+/// should not), and not a whole number, so that they are not at the
+/// screen's own edges.
+pub const TILES_SHOWN_DOWN: f32 = 1.5;
+
 /// Which steps run.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Processing {
@@ -370,7 +376,7 @@ impl Show {
     }
 
     /// Draws `picture` over `target`, tiled at square texels, `tiles` down
-    /// the target (1.5 shows where the tile meets itself).
+    /// the target ([`TILES_SHOWN_DOWN`] shows where the tile meets itself).
     pub fn picture(
         &self,
         gpu: &Gpu,

@@ -61,6 +61,9 @@ fn cone_errors(ids: &[u32], exact: &[usize], sites: &[Vec2], size: (u32, u32)) -
     }
     (wrong, worst)
 }
+
+/// The scene time whose sites the diagrams are drawn for.
+const CONES_SECONDS: f32 = 3.0;
 // ANCHOR_END: segments
 
 #[test]
@@ -68,7 +71,7 @@ fn cones_exercise_1_few_segments_make_wavy_edges_and_64_still_miss_the_exact_dia
     let gpu = Gpu::headless(VoronoiWaterChapter::gpu_needs()).unwrap();
     // The `cells` view's size and its test's time.
     let size = (400, 240);
-    let sites = sites::positions(3.0);
+    let sites = sites::positions(CONES_SECONDS);
     let exact: Vec<usize> =
         (0..(size.0 * size.1) as usize).map(|i| nearest(&sites, centre(i, size)).unwrap()).collect();
     let mut found = Vec::new();
@@ -401,6 +404,11 @@ fn wake_sites(time: f32, count: u32, spacing: f32) -> Vec<Vec2> {
     }
     sites
 }
+
+/// The wake's sites: where the boat was every this many seconds…
+const WAKE_SPACING_SECONDS: f32 = 0.2;
+/// …this many times back.
+const WAKE_STEPS: u32 = 16;
 // ANCHOR_END: wake
 
 #[test]
@@ -409,7 +417,7 @@ fn boat_exercise_1_a_wake_of_small_cells_behind_the_boat() {
     let time = voronoi_water::SNAPSHOT_TIME;
     let mut all = sites::positions(time);
     let wandering = all.len();
-    all.extend(wake_sites(time, 16, 0.2));
+    all.extend(wake_sites(time, WAKE_STEPS, WAKE_SPACING_SECONDS));
     let size = 256;
     let ids = diagram(&gpu, &all, (size, size), &VoronoiSettings::default());
     let mut area = vec![0usize; all.len()];
