@@ -127,6 +127,11 @@ fn lamp_cluster_entries(count: usize, range: f32) -> usize {
 }
 // ANCHOR_END: city_falloff
 
+/// Light casters, exercise 1: the city project's falloff at a lamp's 18 m of range, as a
+/// share of what it gives the road 6.6 m straight below, worked by hand:
+/// 1/(1 + 1.62 + 10.368) = 0.0770 over 1/(1 + 0.594 + 1.394) = 0.3347.
+const UNDER_THE_LAMP_AT_18_M_PERCENT: f32 = 23.0;
+
 #[test]
 fn light_casters_exercise_1_the_city_projects_falloff_has_no_end_and_culling_pays_for_it() {
     compiles_with(CITY, "lighting/lights.wgsl", &[CITY_PROJECT_FALLOFF]);
@@ -139,7 +144,7 @@ fn light_casters_exercise_1_the_city_projects_falloff_has_no_end_and_culling_pay
          below 1/255 of that at {fades} m; 16 lamps in {near} cluster lists at 18 m, {far} at {fades} m",
         100.0 * at_range / below
     );
-    assert!((at_range - 0.077).abs() < 0.001 && (100.0 * at_range / below - 23.0).abs() < 0.5);
+    assert!((at_range - 0.077).abs() < 0.001 && (100.0 * at_range / below - UNDER_THE_LAMP_AT_18_M_PERCENT).abs() < 0.5);
     assert_eq!(fades, 153.0);
     measured::LAMP_ENTRIES_AT_18_M.check("the 16 lamps' cluster entries at 18 m", near as f64);
     measured::LAMP_ENTRIES_AT_153_M.check("the 16 lamps' cluster entries at 153 m", far as f64);
@@ -533,19 +538,30 @@ fn exercise_path() -> SegmentedPath {
     SegmentedPath { start: Vec2::ZERO, height: 0.0, heading: 0.0, segments, speed: 10.0 }
 }
 
-/// …and its clock, paused at 10 s of scene time and resumed at 14 s.
+/// …and its clock, paused at `PAUSED_AT` seconds of scene time and resumed at `RESUMED_AT`.
 fn paused_clock() -> PausableClock {
     let mut clock = PausableClock::default();
-    clock.set_paused(true, 10.0);
-    clock.set_paused(false, 14.0);
+    clock.set_paused(true, PAUSED_AT);
+    clock.set_paused(false, RESUMED_AT);
     clock
 }
+
+/// The exercise's times (seconds), which the page writes from here: the car's pose is asked
+/// after `LAP_POSE_AFTER`, its clock paused and resumed, then read at `READ_AT`.
+const LAP_POSE_AFTER: f32 = 5.0;
+const PAUSED_AT: f32 = 10.0;
+const RESUMED_AT: f32 = 14.0;
+const READ_AT: f32 = 19.0;
 // ANCHOR_END: lap
+
+/// What the page's solution states: a lap of 182.83 m at 10 m/s, and the clock's reading.
+const LAP_SECONDS: f32 = 18.28;
+const CLOCK_READS: f32 = 15.0;
 
 #[test]
 fn moving_lights_exercise_1_a_lap_a_pose_and_a_pause() {
     let path = exercise_path();
-    let pose = path.at(5.0);
+    let pose = path.at(LAP_POSE_AFTER);
     println!(
         "a lap of {} m in {} s; after 5 s at {} facing {} rad",
         path.length(),
@@ -555,13 +571,15 @@ fn moving_lights_exercise_1_a_lap_a_pose_and_a_pause() {
     );
     // By hand: straights of 40, 20, 40 and 20 m and four quarter turns of 10 m.
     assert!((path.length() - (120.0 + 4.0 * 10.0 * std::f32::consts::FRAC_PI_2)).abs() < 1e-3);
-    assert!((path.length() - 182.83).abs() < 0.005 && (path.period() - 18.28).abs() < 0.005);
+    assert!((path.length() - 182.83).abs() < 0.005 && (path.period() - LAP_SECONDS).abs() < 0.005);
     // 40 m to (0, −40), then 10 m, one radian, round the turn's centre at (−10, −40).
     let by_hand = Vec3::new(-10.0 + 10.0 * 1f32.cos(), 0.0, -40.0 - 10.0 * 1f32.sin());
     assert!(pose.position.distance(by_hand) < 1e-3, "{} against {by_hand}", pose.position);
     assert!(pose.position.distance(Vec3::new(-4.60, 0.0, -48.41)) < 0.01);
     assert!((pose.heading - 1.0).abs() < 1e-4);
-    assert_eq!(paused_clock().time(19.0), 15.0);
+    // By hand: paused for 4 s, the clock reads 4 s behind scene time.
+    assert_eq!(paused_clock().time(READ_AT), READ_AT - (RESUMED_AT - PAUSED_AT));
+    assert_eq!(paused_clock().time(READ_AT), CLOCK_READS);
 }
 
 // ANCHOR: fxaa_edges
