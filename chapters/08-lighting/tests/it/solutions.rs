@@ -111,8 +111,11 @@ const CITY_PROJECT_FALLOFF: (&str, &str) = (
 fn range_where_it_fades(falloff: impl Fn(f32) -> f32, reference: f32) -> f32 {
     (0..).map(|i| i as f32 * 0.5).find(|d| falloff(*d) < falloff(reference) / 255.0).unwrap()
 }
+// ANCHOR_END: city_falloff
 
-/// How many cluster lists of the aerial view the first `count` street
+// ANCHOR: lamp_entries
+
+/// Clustered culling, exercise 3: how many cluster lists of the aerial view the first `count` street
 /// lamps are in when each reaches `range` metres.
 fn lamp_cluster_entries(count: usize, range: f32) -> usize {
     let city = City::new();
@@ -125,7 +128,7 @@ fn lamp_cluster_entries(count: usize, range: f32) -> usize {
         .collect();
     clusters::cull(&aerial_camera(16.0 / 9.0), &lamps).indices.len()
 }
-// ANCHOR_END: city_falloff
+// ANCHOR_END: lamp_entries
 
 /// Light casters, exercise 1: the city project's falloff at a lamp's 18 m of range, as a
 /// share of what it gives the road 6.6 m straight below, worked by hand:
@@ -133,19 +136,25 @@ fn lamp_cluster_entries(count: usize, range: f32) -> usize {
 const UNDER_THE_LAMP_AT_18_M_PERCENT: f32 = 23.0;
 
 #[test]
-fn light_casters_exercise_1_the_city_projects_falloff_has_no_end_and_culling_pays_for_it() {
+fn light_casters_exercise_1_the_city_projects_falloff_has_no_end() {
     compiles_with(CITY, "lighting/lights.wgsl", &[CITY_PROJECT_FALLOFF]);
     // A street lamp hangs 6.6 m above the road and reaches 18 m.
     let (below, at_range) = (city_project_falloff(6.6), city_project_falloff(18.0));
     let fades = range_where_it_fades(city_project_falloff, 6.6);
-    let (near, far) = (lamp_cluster_entries(16, 18.0), lamp_cluster_entries(16, fades));
     println!(
         "the city project's falloff at 18 m: {at_range:.3} ({:.0} % of the light under the lamp); \
-         below 1/255 of that at {fades} m; 16 lamps in {near} cluster lists at 18 m, {far} at {fades} m",
+         below 1/255 of that at {fades} m",
         100.0 * at_range / below
     );
     assert!((at_range - 0.077).abs() < 0.001 && (100.0 * at_range / below - UNDER_THE_LAMP_AT_18_M_PERCENT).abs() < 0.5);
     assert_eq!(fades, 153.0);
+}
+
+#[test]
+fn culling_exercise_3_the_city_projects_range_puts_the_lamps_in_many_more_lists() {
+    let fades = range_where_it_fades(city_project_falloff, 6.6);
+    let (near, far) = (lamp_cluster_entries(16, 18.0), lamp_cluster_entries(16, fades));
+    println!("16 lamps in {near} cluster lists at 18 m, {far} at {fades} m");
     measured::LAMP_ENTRIES_AT_18_M.check("the 16 lamps' cluster entries at 18 m", near as f64);
     measured::LAMP_ENTRIES_AT_153_M.check("the 16 lamps' cluster entries at 153 m", far as f64);
     measured::LAMP_LIST_GROWTH.check("how many times as many entries", far as f64 / near as f64);
@@ -423,7 +432,7 @@ fn culling_exercises_1_and_2_and_hdr_exercise_1_on_the_night_city() {
 mod measured {
     use common::book_figures::Measured;
 
-    /// Light casters, exercise 1: the first 16 street lamps' entries in the aerial
+    /// Clustered culling, exercise 3: the first 16 street lamps' entries in the aerial
     /// view's cluster lists, at 18 m and at 153 m of range, and the ratio.
     pub const LAMP_ENTRIES_AT_18_M: Measured = Measured::new(475.0, 5.0);
     pub const LAMP_ENTRIES_AT_153_M: Measured = Measured::new(35_891.0, 360.0);
