@@ -701,3 +701,23 @@ fn prefiltered_sky_exercise_1_the_levels_a_sphere_reads() {
     assert!(level == 3.0 && below == 3 && share == 0.0);
     assert_eq!((PrefilteredSky::SIZE >> below, PrefilteredSky::roughness_of(below)), (8, 1.0));
 }
+
+// ANCHOR: bright_by_hand
+/// Bloom, exercise 1: what blooms of two lamps, worked by hand from the knee's formula
+/// (threshold 1, knee 0.5): above 1.5 the excess over 1, inside the knee (b − 0.5)² / 2,
+/// the whole colour scaled alike.
+const BRIGHT_LAMP: ([f32; 3], [f32; 3]) = ([3.0, 1.5, 0.6], [2.0, 1.0, 0.4]);
+const KNEE_LAMP: ([f32; 3], [f32; 3]) = ([1.2, 0.6, 0.24], [0.245, 0.1225, 0.049]);
+// ANCHOR_END: bright_by_hand
+
+#[test]
+fn bloom_exercise_1_what_blooms_of_two_lamps() {
+    let settings = lighting::bloom::BloomSettings::DEFAULT;
+    assert_eq!((settings.threshold, settings.knee), (1.0, 0.5), "the exercise states these settings");
+    for (lamp, by_hand) in [BRIGHT_LAMP, KNEE_LAMP] {
+        let blooms = settings.bright_part(lamp);
+        println!("{lamp:?} blooms {blooms:?}, by hand {by_hand:?}");
+        // 1e-4: the formula's 1e-5 guards against dividing by zero.
+        assert!((0..3).all(|c| (blooms[c] - by_hand[c]).abs() < 1e-4), "{lamp:?}: {blooms:?} against {by_hand:?}");
+    }
+}
