@@ -468,3 +468,14 @@ fn the_shaders_irradiance_is_the_one_written_out_here() {
         assert!((got - want).abs().max_element() < 1e-4 * want.max_element().max(1.0), "at {n}: {got}, not {want}");
     }
 }
+
+/// GGX's width is the roughness squared (Burley 2012), worked by hand at
+/// roughness 0.5: α = 0.25; and GGX's D facing the normal, n·h = 1, is
+/// α² / (π ((α² − 1) + 1)²) = 1 / (π α²) = 16/π.
+#[test]
+fn ggx_width_is_the_roughness_squared() {
+    let alpha = pbr::ggx_alpha(0.5);
+    assert!((alpha - 0.25).abs() < 1e-7, "roughness 0.5 gives α = {alpha}, not 0.25");
+    let peak = pbr::ggx_distribution(1.0, alpha);
+    assert!((peak - 16.0 / PI).abs() < 1e-5 * 16.0 / PI, "D at n·h = 1 is {peak}, not 16/π = {}", 16.0 / PI);
+}
