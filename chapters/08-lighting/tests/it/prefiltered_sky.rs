@@ -135,7 +135,11 @@ const LEVEL_ROUGHNESS: [f32; 4] = [0.0, 1.0 / 3.0, 2.0 / 3.0, 1.0];
 
 #[test]
 fn each_rougher_level_is_the_sky_blurred_by_ggx_as_the_integral_says() {
-    assert_eq!(PrefilteredSky::LEVELS as usize, LEVEL_ROUGHNESS.len(), "the hand-worked roughnesses are for four levels");
+    assert_eq!(
+        PrefilteredSky::LEVELS as usize,
+        LEVEL_ROUGHNESS.len(),
+        "the hand-worked roughnesses are for four levels"
+    );
     // At texel centres, where a look-up at a whole level returns that
     // texel alone: on the +x face's upper and lower halves, straight up,
     // straight down, and towards +z just above the horizon.

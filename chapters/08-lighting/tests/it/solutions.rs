@@ -146,7 +146,9 @@ fn light_casters_exercise_1_the_city_projects_falloff_has_no_end() {
          below 1/255 of that at {fades} m",
         100.0 * at_range / below
     );
-    assert!((at_range - 0.077).abs() < 0.001 && (100.0 * at_range / below - UNDER_THE_LAMP_AT_18_M_PERCENT).abs() < 0.5);
+    assert!(
+        (at_range - 0.077).abs() < 0.001 && (100.0 * at_range / below - UNDER_THE_LAMP_AT_18_M_PERCENT).abs() < 0.5
+    );
     assert_eq!(fades, 153.0);
 }
 
