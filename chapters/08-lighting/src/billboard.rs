@@ -67,6 +67,7 @@ impl Billboard {
                 material: Material::CarPaint,
             });
         }
+        // ANCHOR: billboard_spots
         // Three spots 14 m in front, a metre over the ground, each aimed at
         // the middle of its third of the panel, whose corners are up to 25°
         // off its axis: full light out to 26°, fading to nothing at 34°.
@@ -87,6 +88,7 @@ impl Billboard {
                 }
             })
             .to_vec();
+        // ANCHOR_END: billboard_spots
         Self { centre, facing, across, pieces, spots }
     }
 

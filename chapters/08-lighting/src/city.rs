@@ -17,6 +17,10 @@ use crate::pbr::Physical;
 pub const HALF: f32 = 180.0;
 pub const BLOCK: f32 = 60.0;
 pub const ROAD_WIDTH: f32 = 12.0;
+/// How far a drone bobs up and down about its place, metres, and the
+/// seconds one bob takes.
+pub const DRONE_BOB_HEIGHT: f32 = 1.2;
+pub const DRONE_BOB_PERIOD: f32 = 3.3;
 
 /// The meshes the city is built from: `common`'s primitives and the ground.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
@@ -527,7 +531,7 @@ impl City {
         for drone in &self.drones {
             // ANCHOR: drone_bob
             let t = drone_time + drone.phase;
-            let centre = drone.position + Vec3::Y * 1.2 * (TAU * t / 3.3).sin();
+            let centre = drone.position + Vec3::Y * DRONE_BOB_HEIGHT * (TAU * t / DRONE_BOB_PERIOD).sin();
             // ANCHOR_END: drone_bob
             let place = Mat4::from_rotation_translation(Quat::from_rotation_y(0.1 * t), centre);
             let part = |shape, offset: Vec3, rotation: Quat, scale: Vec3, material| Piece {

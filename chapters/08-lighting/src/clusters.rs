@@ -51,6 +51,7 @@ pub struct ClusterLists {
     pub indices: Vec<u32>,
 }
 
+// ANCHOR: cull_lists
 /// Builds every cluster's list. Each light is tested against the clusters
 /// inside the box its sphere of influence projects to (the depth slices its
 /// sphere spans, and the tiles its bounding box covers, cut off at the near
@@ -118,6 +119,7 @@ fn reaches(centre: Vec3, range: f32, facing: Option<Vec3>, (low, high): &(Vec3, 
         axis.dot(corner - centre) > 0.0
     })
 }
+// ANCHOR_END: cull_lists
 
 /// The clusters (x, y and z ranges) a light's sphere of influence may
 /// touch, or `None` if it is outside the view altogether.

@@ -213,6 +213,7 @@ impl SceneLights {
         if !gpu_lights.is_empty() {
             gpu.queue.write_buffer(&self.lights, 0, bytemuck::cast_slice(&gpu_lights));
         }
+        // ANCHOR: write_lists
         if options.culling {
             let needed = (lists.indices.len().max(1) * 4) as u64;
             if needed > self.indices.size() {
@@ -232,6 +233,7 @@ impl SceneLights {
                 gpu.queue.write_buffer(&self.indices, 0, bytemuck::cast_slice(&lists.indices));
             }
         }
+        // ANCHOR_END: write_lists
     }
 }
 // ANCHOR_END: scene_lights

@@ -13,6 +13,18 @@ use lighting::lights::{TimeOfDay, daylight};
 
 const SIZE: (u32, u32) = (480, 270);
 
+/// Measured: what the light-arriving lesson quotes of the three terms'
+/// test, copied from a run (`common::book_figures::Measured`: change
+/// detectors); the page says they are measured.
+mod measured {
+    use common::book_figures::Measured;
+
+    /// The pixels of the phong view that show the city and its countryside.
+    pub const CITY_PIXELS: Measured = Measured::new(99676.0, 200.0);
+    /// Those of them that are the sum of the three terms.
+    pub const SUM_OF_TERMS: Measured = Measured::new(98736.0, 200.0);
+}
+
 /// Renders `view` looking at the sphere from the sun's side, with or
 /// without highlights, at `exposure`, without bloom (which would spread a
 /// highlight into its surroundings).
@@ -131,4 +143,6 @@ fn the_ambient_diffuse_and_specular_views_add_up_to_the_picture() {
     let share = equal as f32 / city as f32;
     eprintln!("{city} pixels of city: {equal} are the sum of the three terms ({share:.4}), {brighter} brighter (glow)");
     assert!(share > 0.9, "only {share} of the city's pixels are the sum of their terms");
+    measured::CITY_PIXELS.check("the pixels of city in the phong view", city);
+    measured::SUM_OF_TERMS.check("the pixels of city that are the sum of their three terms", equal);
 }

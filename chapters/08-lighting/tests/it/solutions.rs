@@ -111,8 +111,11 @@ const CITY_PROJECT_FALLOFF: (&str, &str) = (
 fn range_where_it_fades(falloff: impl Fn(f32) -> f32, reference: f32) -> f32 {
     (0..).map(|i| i as f32 * 0.5).find(|d| falloff(*d) < falloff(reference) / 255.0).unwrap()
 }
+// ANCHOR_END: city_falloff
 
-/// How many cluster lists of the aerial view the first `count` street
+// ANCHOR: lamp_entries
+
+/// Clustered culling, exercise 3: how many cluster lists of the aerial view the first `count` street
 /// lamps are in when each reaches `range` metres.
 fn lamp_cluster_entries(count: usize, range: f32) -> usize {
     let city = City::new();
@@ -125,22 +128,35 @@ fn lamp_cluster_entries(count: usize, range: f32) -> usize {
         .collect();
     clusters::cull(&aerial_camera(16.0 / 9.0), &lamps).indices.len()
 }
-// ANCHOR_END: city_falloff
+// ANCHOR_END: lamp_entries
+
+/// Light casters, exercise 1: the city project's falloff at a lamp's 18 m of range, as a
+/// share of what it gives the road 6.6 m straight below, worked by hand:
+/// 1/(1 + 1.62 + 10.368) = 0.0770 over 1/(1 + 0.594 + 1.394) = 0.3347.
+const UNDER_THE_LAMP_AT_18_M_PERCENT: f32 = 23.0;
 
 #[test]
-fn light_casters_exercise_1_the_city_projects_falloff_has_no_end_and_culling_pays_for_it() {
+fn light_casters_exercise_1_the_city_projects_falloff_has_no_end() {
     compiles_with(CITY, "lighting/lights.wgsl", &[CITY_PROJECT_FALLOFF]);
     // A street lamp hangs 6.6 m above the road and reaches 18 m.
     let (below, at_range) = (city_project_falloff(6.6), city_project_falloff(18.0));
     let fades = range_where_it_fades(city_project_falloff, 6.6);
-    let (near, far) = (lamp_cluster_entries(16, 18.0), lamp_cluster_entries(16, fades));
     println!(
         "the city project's falloff at 18 m: {at_range:.3} ({:.0} % of the light under the lamp); \
-         below 1/255 of that at {fades} m; 16 lamps in {near} cluster lists at 18 m, {far} at {fades} m",
+         below 1/255 of that at {fades} m",
         100.0 * at_range / below
     );
-    assert!((at_range - 0.077).abs() < 0.001 && (100.0 * at_range / below - 23.0).abs() < 0.5);
+    assert!(
+        (at_range - 0.077).abs() < 0.001 && (100.0 * at_range / below - UNDER_THE_LAMP_AT_18_M_PERCENT).abs() < 0.5
+    );
     assert_eq!(fades, 153.0);
+}
+
+#[test]
+fn culling_exercise_3_the_city_projects_range_puts_the_lamps_in_many_more_lists() {
+    let fades = range_where_it_fades(city_project_falloff, 6.6);
+    let (near, far) = (lamp_cluster_entries(16, 18.0), lamp_cluster_entries(16, fades));
+    println!("16 lamps in {near} cluster lists at 18 m, {far} at {fades} m");
     measured::LAMP_ENTRIES_AT_18_M.check("the 16 lamps' cluster entries at 18 m", near as f64);
     measured::LAMP_ENTRIES_AT_153_M.check("the 16 lamps' cluster entries at 153 m", far as f64);
     measured::LAMP_LIST_GROWTH.check("how many times as many entries", far as f64 / near as f64);
@@ -418,7 +434,7 @@ fn culling_exercises_1_and_2_and_hdr_exercise_1_on_the_night_city() {
 mod measured {
     use common::book_figures::Measured;
 
-    /// Light casters, exercise 1: the first 16 street lamps' entries in the aerial
+    /// Clustered culling, exercise 3: the first 16 street lamps' entries in the aerial
     /// view's cluster lists, at 18 m and at 153 m of range, and the ratio.
     pub const LAMP_ENTRIES_AT_18_M: Measured = Measured::new(475.0, 5.0);
     pub const LAMP_ENTRIES_AT_153_M: Measured = Measured::new(35_891.0, 360.0);
@@ -533,19 +549,30 @@ fn exercise_path() -> SegmentedPath {
     SegmentedPath { start: Vec2::ZERO, height: 0.0, heading: 0.0, segments, speed: 10.0 }
 }
 
-/// …and its clock, paused at 10 s of scene time and resumed at 14 s.
+/// …and its clock, paused at `PAUSED_AT` seconds of scene time and resumed at `RESUMED_AT`.
 fn paused_clock() -> PausableClock {
     let mut clock = PausableClock::default();
-    clock.set_paused(true, 10.0);
-    clock.set_paused(false, 14.0);
+    clock.set_paused(true, PAUSED_AT);
+    clock.set_paused(false, RESUMED_AT);
     clock
 }
+
+/// The exercise's times (seconds), which the page writes from here: the car's pose is asked
+/// after `LAP_POSE_AFTER`, its clock paused and resumed, then read at `READ_AT`.
+const LAP_POSE_AFTER: f32 = 5.0;
+const PAUSED_AT: f32 = 10.0;
+const RESUMED_AT: f32 = 14.0;
+const READ_AT: f32 = 19.0;
 // ANCHOR_END: lap
+
+/// What the page's solution states: a lap of 182.83 m at 10 m/s, and the clock's reading.
+const LAP_SECONDS: f32 = 18.28;
+const CLOCK_READS: f32 = 15.0;
 
 #[test]
 fn moving_lights_exercise_1_a_lap_a_pose_and_a_pause() {
     let path = exercise_path();
-    let pose = path.at(5.0);
+    let pose = path.at(LAP_POSE_AFTER);
     println!(
         "a lap of {} m in {} s; after 5 s at {} facing {} rad",
         path.length(),
@@ -555,13 +582,15 @@ fn moving_lights_exercise_1_a_lap_a_pose_and_a_pause() {
     );
     // By hand: straights of 40, 20, 40 and 20 m and four quarter turns of 10 m.
     assert!((path.length() - (120.0 + 4.0 * 10.0 * std::f32::consts::FRAC_PI_2)).abs() < 1e-3);
-    assert!((path.length() - 182.83).abs() < 0.005 && (path.period() - 18.28).abs() < 0.005);
+    assert!((path.length() - 182.83).abs() < 0.005 && (path.period() - LAP_SECONDS).abs() < 0.005);
     // 40 m to (0, −40), then 10 m, one radian, round the turn's centre at (−10, −40).
     let by_hand = Vec3::new(-10.0 + 10.0 * 1f32.cos(), 0.0, -40.0 - 10.0 * 1f32.sin());
     assert!(pose.position.distance(by_hand) < 1e-3, "{} against {by_hand}", pose.position);
     assert!(pose.position.distance(Vec3::new(-4.60, 0.0, -48.41)) < 0.01);
     assert!((pose.heading - 1.0).abs() < 1e-4);
-    assert_eq!(paused_clock().time(19.0), 15.0);
+    // By hand: paused for 4 s, the clock reads 4 s behind scene time.
+    assert_eq!(paused_clock().time(READ_AT), READ_AT - (RESUMED_AT - PAUSED_AT));
+    assert_eq!(paused_clock().time(READ_AT), CLOCK_READS);
 }
 
 // ANCHOR: fxaa_edges
@@ -673,4 +702,24 @@ fn prefiltered_sky_exercise_1_the_levels_a_sphere_reads() {
     let (level, below, _, share) = cube_levels(material_spheres::ROUGHNESS[5]);
     assert!(level == 3.0 && below == 3 && share == 0.0);
     assert_eq!((PrefilteredSky::SIZE >> below, PrefilteredSky::roughness_of(below)), (8, 1.0));
+}
+
+// ANCHOR: bright_by_hand
+/// Bloom, exercise 1: what blooms of two lamps, worked by hand from the knee's formula
+/// (threshold 1, knee 0.5): above 1.5 the excess over 1, inside the knee (b − 0.5)² / 2,
+/// the whole colour scaled alike.
+const BRIGHT_LAMP: ([f32; 3], [f32; 3]) = ([3.0, 1.5, 0.6], [2.0, 1.0, 0.4]);
+const KNEE_LAMP: ([f32; 3], [f32; 3]) = ([1.2, 0.6, 0.24], [0.245, 0.1225, 0.049]);
+// ANCHOR_END: bright_by_hand
+
+#[test]
+fn bloom_exercise_1_what_blooms_of_two_lamps() {
+    let settings = lighting::bloom::BloomSettings::DEFAULT;
+    assert_eq!((settings.threshold, settings.knee), (1.0, 0.5), "the exercise states these settings");
+    for (lamp, by_hand) in [BRIGHT_LAMP, KNEE_LAMP] {
+        let blooms = settings.bright_part(lamp);
+        println!("{lamp:?} blooms {blooms:?}, by hand {by_hand:?}");
+        // 1e-4: the formula's 1e-5 guards against dividing by zero.
+        assert!((0..3).all(|c| (blooms[c] - by_hand[c]).abs() < 1e-4), "{lamp:?}: {blooms:?} against {by_hand:?}");
+    }
 }
