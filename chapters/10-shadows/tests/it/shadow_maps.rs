@@ -354,6 +354,13 @@ mod sun_box {
     /// Seconds into the demo when the box first grows deeper than in the
     /// default picture (to the 60th of a second the test steps by).
     pub const DEEPENS_FROM_S: f32 = 19.43;
+    /// The box's sides: the farthest of the eight visible points from their
+    /// bounding box's middle, metres, and the square's width around the
+    /// sphere of that radius rounded up to half a metre.
+    pub const REACH_M: f32 = 22.11;
+    pub const WIDTH_M: f32 = 45.0;
+    /// The map's column both points of the shadow test's section land in.
+    pub const SECTION_COLUMN: u32 = 901;
     /// The shadow test's section (`diagrams/src/shadows.rs` draws it):
     /// B on the ground at x = 25.6 m, A 5 m from it towards the sun. A's
     /// depth in the map (its texel holds the same), what B's texel holds
@@ -411,6 +418,15 @@ fn the_sun_boxs_figures_on_the_pages_are_the_boxs_of_the_default_picture_and_the
         assert!((value - expected).abs() <= within, "{what} is {value}, where the pages have {expected}");
     };
     let (light, face, depth) = fitted_at(ShadowsChapter::SNAPSHOT_TIME);
+    // The sides: a sphere around the visible points, a square around it.
+    let player = game::demo_at(&level, &level.solids(), ShadowsChapter::SNAPSHOT_TIME).player.aabb.centre();
+    let focus = visible_part(&side_camera(player, CAMERA_DISTANCE, 16.0 / 9.0), bounds.1.z);
+    let (lowest, highest) = focus.iter().fold((Vec3::MAX, Vec3::MIN), |(lo, hi), p| (lo.min(*p), hi.max(*p)));
+    let reach = focus.iter().map(|p| p.distance((lowest + highest) / 2.0)).fold(0.0, f32::max);
+    near(reach, sun_box::REACH_M, 0.005, "the farthest visible point from the middle, m");
+    let width = light.texel * shadow_map::DEFAULT_SIZE as f32;
+    assert_eq!(width, 2.0 * (reach * 2.0).ceil() / 2.0, "the square is not the rounded sphere's");
+    near(width, sun_box::WIDTH_M, 1e-4, "the box's width, m");
     assert!((light.depth - depth).abs() < 1e-3, "fit_light's box is {} m deep, by hand {depth} m", light.depth);
     near(depth, sun_box::DEFAULT_DEPTH_M, 0.005, "the default picture's box depth, m");
     // There both its ends come from the level's corners, not the view's.
@@ -451,6 +467,12 @@ fn the_sun_boxs_figures_on_the_pages_are_the_boxs_of_the_default_picture_and_the
         p + towards_sun * t
     };
     assert_eq!(first_surface(lit), lit, "A's ray meets a block");
+    let column = |p: Vec3| ((light.view_proj.project_point3(p).x * 0.5 + 0.5) * shadow_map::DEFAULT_SIZE as f32) as u32;
+    assert_eq!(
+        (column(lit), column(shadowed)),
+        (sun_box::SECTION_COLUMN, sun_box::SECTION_COLUMN),
+        "the section's column"
+    );
     let blocker = first_surface(shadowed);
     near(blocker.distance(shadowed), 3.45, 0.005, "B's distance behind its blocker, m");
     for (point, expected, what) in [
@@ -468,7 +490,6 @@ fn the_sun_boxs_figures_on_the_pages_are_the_boxs_of_the_default_picture_and_the
     }
     // The rock beside the player, in the range [0.25, 0.5) where a step of
     // a 32-bit float is 2⁻²⁵, as the acne lesson says.
-    let player = game::demo_at(&level, &level.solids(), ShadowsChapter::SNAPSHOT_TIME).player.aabb.centre();
     let rock = level
         .props
         .iter()
