@@ -38,6 +38,10 @@ impl SamplerMode {
     pub const ALL: [SamplerMode; 4] =
         [SamplerMode::Nearest, SamplerMode::Linear, SamplerMode::Mipmaps, SamplerMode::Anisotropic];
 
+    /// The most samples anisotropic filtering takes along a footprint: 16,
+    /// the most wgpu allows.
+    pub const MAX_ANISOTROPY: u16 = 16;
+
     /// The sampler. `anisotropy` is false where the adapter cannot filter
     /// anisotropically: `Anisotropic` is then plain trilinear.
     pub fn descriptor(self, anisotropy: bool) -> wgpu::SamplerDescriptor<'static> {
@@ -59,7 +63,7 @@ impl SamplerMode {
                 mag_filter: Linear,
                 min_filter: Linear,
                 mipmap_filter: wgpu::MipmapFilterMode::Linear,
-                anisotropy_clamp: if self == SamplerMode::Anisotropic && anisotropy { 16 } else { 1 },
+                anisotropy_clamp: if self == SamplerMode::Anisotropic && anisotropy { Self::MAX_ANISOTROPY } else { 1 },
                 ..base
             },
         }

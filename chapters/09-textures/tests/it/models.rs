@@ -665,22 +665,34 @@ fn a_model_with_pr_or_pm_is_shaded_by_cook_torrance() {
     assert!(differ > 100, "Cook-Torrance and Blinn-Phong draw the same gold pyramid ({differ} pixels differ)");
 }
 
+/// Where a cell of `ROUGHNESS_CELLS` is white: a 4 × 4 pattern that no
+/// mirror (of u, of v, or both) or quarter turn maps onto itself, so that a
+/// map read at the wrong texel shows the wrong value somewhere.
+const ROUGHNESS_CELLS: [[bool; 4]; 4] =
+    [[true, false, false, false], [true, true, false, false], [false, true, false, true], [false, false, true, true]];
+
 /// A roughness or metalness map shades each texel as the same material with
-/// that texel's value as Pr or Pm does: a panel whose map is black on its
-/// left half and white on its right draws, pixel for pixel, either the
-/// panel with the low value throughout or the one with the high value,
-/// and plenty of each (only the seam between the halves, where the
-/// sampler blends them, may be neither). Made to fail by reading the
-/// roughness from the metalness map (white where the material has none),
-/// and by leaving the maps out of `physical_at`: every pixel then drew as
-/// the high value.
+/// that texel's value as Pr or Pm does, at that texel. The map is
+/// `ROUGHNESS_CELLS`, black and white cells of 16 texels; the same picture
+/// as an albedo map, drawn beside a white and a black panel, says which
+/// texel each screen pixel shows (the pixels that draw as the white panel
+/// show a white texel, those that draw as the black one a black texel;
+/// the seams, where the sampler blends two cells, are left out). Then,
+/// pixel for pixel, the panel with the map must draw as the panel with the
+/// low value where its texel is black and as the one with the high value
+/// where it is white. Made to fail by reading the maps at the mirrored
+/// texel (1 − u in `physical_at`: 8,273 of the 9,781 pixels where Pr 0 and
+/// Pr 1 differ drew the other value), by reading the roughness from the
+/// metalness map (white where the material has none), and by leaving the
+/// maps out of `physical_at` (every pixel then draws the high value).
 #[test]
 fn roughness_and_metalness_maps_shade_each_texel_as_its_value_would() {
-    let halves = common::image::RgbaImage::from_fn(64, 64, |x, _| {
-        common::image::Rgba(if x < 32 { [0, 0, 0, 255] } else { [255, 255, 255, 255] })
+    let cells = common::image::RgbaImage::from_fn(64, 64, |x, y| {
+        let white = ROUGHNESS_CELLS[(y / 16) as usize][(x / 16) as usize];
+        common::image::Rgba(if white { [255, 255, 255, 255] } else { [0, 0, 0, 255] })
     });
     let mut png = std::io::Cursor::new(Vec::new());
-    common::image::DynamicImage::ImageRgba8(halves).write_to(&mut png, common::image::ImageFormat::Png).unwrap();
+    common::image::DynamicImage::ImageRgba8(cells).write_to(&mut png, common::image::ImageFormat::Png).unwrap();
     let png = png.into_inner();
     // A panel facing the stage's camera, its texture across it.
     let obj = b"mtllib panel.mtl\nv 1 0 0\nv -1 0 0\nv -1 2 0\nv 1 2 0\nvt 0 0\nvt 1 0\nvt 1 1\nvt 0 1\nvn 0 0 -1\n\
@@ -689,7 +701,7 @@ fn roughness_and_metalness_maps_shade_each_texel_as_its_value_would() {
     let view = common::chapter::view_index::<TexturesChapter>("car").unwrap();
     let target = Target { format: OFFSCREEN_FORMAT, width: 320, height: 180, samples: 1 };
     let draw = |case: &str, mtl: String| {
-        let dir = folder_of_bytes(case, &[("panel.obj", obj), ("panel.mtl", mtl.as_bytes()), ("halves.png", &png)]);
+        let dir = folder_of_bytes(case, &[("panel.obj", obj), ("panel.mtl", mtl.as_bytes()), ("cells.png", &png)]);
         let mut chapter = chapter_with_model(&gpu, &dir.join("panel.obj"), (320, 180));
         assert!(chapter.warnings.is_empty(), "{case}: {:?}", chapter.warnings);
         assert!(chapter.featured.physical, "{case} is shaded by Cook-Torrance");
@@ -699,29 +711,52 @@ fn roughness_and_metalness_maps_shade_each_texel_as_its_value_would() {
         chapter.settings.bloom = false;
         capture(&gpu, &mut chapter, target, (TexturesChapter::SNAPSHOT_TIME, view), Default::default()).unwrap()
     };
+    let close = |a: &[u8], b: &[u8]| a.iter().zip(b).all(|(x, y)| x.abs_diff(*y) <= 1);
+    // Which texel each pixel shows: the cells as albedo, against all white and all black.
+    let rough = "Pr 0.6\nPm 0\n";
+    let as_albedo = draw("cells-albedo", format!("newmtl m\nKd 1 1 1\n{rough}map_Kd cells.png\n"));
+    let white = draw("cells-white", format!("newmtl m\nKd 1 1 1\n{rough}"));
+    let black = draw("cells-black", format!("newmtl m\nKd 0 0 0\n{rough}"));
+    let texels: Vec<Option<bool>> = as_albedo
+        .pixels()
+        .zip(white.pixels())
+        .zip(black.pixels())
+        .map(|((a, w), b)| match (close(&w.0, &b.0), close(&a.0, &w.0), close(&a.0, &b.0)) {
+            (true, _, _) => None, // the background: no texel
+            (_, true, false) => Some(true),
+            (_, false, true) => Some(false),
+            _ => None, // a seam between cells
+        })
+        .collect();
+    let (white_texels, black_texels) =
+        (texels.iter().filter(|t| **t == Some(true)).count(), texels.iter().filter(|t| **t == Some(false)).count());
+    assert!(white_texels > 2000 && black_texels > 2000, "{white_texels} pixels show white cells, {black_texels} black");
+
     let gold = "newmtl m\nKd 1.0 0.77 0.34\n";
     for (key, other) in [("Pr", "Pm 1"), ("Pm", "Pr 0.3")] {
-        let mapped = draw(&format!("{key}-map"), format!("{gold}{other}\nmap_{key} halves.png\n"));
+        let mapped = draw(&format!("{key}-map"), format!("{gold}{other}\nmap_{key} cells.png\n"));
         let low = draw(&format!("{key}-0"), format!("{gold}{other}\n{key} 0\n"));
         let high = draw(&format!("{key}-1"), format!("{gold}{other}\n{key} 1\n"));
-        let close = |a: &[u8], b: &[u8]| a.iter().zip(b).all(|(x, y)| x.abs_diff(*y) <= 1);
-        let (mut as_low, mut as_high, mut neither, mut differ) = (0, 0, 0, 0);
-        for ((m, l), h) in mapped.pixels().zip(low.pixels()).zip(high.pixels()) {
+        let (mut right, mut wrong, mut neither, mut differ) = (0, 0, 0, 0);
+        for (((m, l), h), texel) in mapped.pixels().zip(low.pixels()).zip(high.pixels()).zip(&texels) {
+            let Some(white) = texel else { continue };
             if close(&l.0, &h.0) {
-                continue; // the background, and wherever the value makes no difference
+                continue; // wherever the value makes no difference
             }
             differ += 1;
-            match (close(&m.0, &l.0), close(&m.0, &h.0)) {
-                (true, _) => as_low += 1,
-                (_, true) => as_high += 1,
+            let (expected, other) = if *white { (h, l) } else { (l, h) };
+            match (close(&m.0, &expected.0), close(&m.0, &other.0)) {
+                (true, _) => right += 1,
+                (_, true) => wrong += 1,
                 _ => neither += 1,
             }
         }
-        eprintln!("map_{key}: {as_low} pixels as {key} 0, {as_high} as {key} 1, {neither} neither, of {differ}");
-        assert!(differ > 500, "{key} 0 and {key} 1 look alike ({differ} pixels differ)");
-        assert!(
-            as_low > differ / 4 && as_high > differ / 4 && neither < differ / 8,
-            "map_{key}: {as_low} pixels as {key} 0, {as_high} as {key} 1, {neither} neither, of {differ}"
+        let says = format!(
+            "map_{key}: of {differ} pixels where {key} 0 and {key} 1 differ, {right} draw their texel's value, \
+             {wrong} the other value, {neither} neither"
         );
+        eprintln!("{says}");
+        assert!(differ > 2000, "{says}");
+        assert!(wrong == 0 && neither < differ / 50, "{says}");
     }
 }

@@ -149,8 +149,13 @@ fn sampling_exercise_1_bricks_every_3_m_are_huge_in_the_street_and_nearly_flat_f
     );
     assert!((street_1.0 - 4.11).abs() < 0.01 && (street_3.0 - 1.37).abs() < 0.01);
     assert!((air - AIR_TO_BRICK).abs() < 1.0);
-    assert!((contrast_1 - 0.031).abs() < 0.003 && (contrast_3 - 0.091).abs() < 0.003);
+    assert!((contrast_1 - CONTRAST_KEPT_AT_1_M).abs() < 0.003 && (contrast_3 - CONTRAST_KEPT_AT_3_M).abs() < 0.003);
 }
+
+/// The share of the brick's pattern (its texels' standard deviation) that
+/// the levels read from the air keep, at 1 m and 3 m a repeat.
+const CONTRAST_KEPT_AT_1_M: f32 = 0.031;
+const CONTRAST_KEPT_AT_3_M: f32 = 0.091;
 
 /// Metres from the aerial camera to the middle one of the city's brick buildings.
 const AIR_TO_BRICK: f32 = 321.0;
@@ -559,6 +564,29 @@ fn tangent_frames_exercise_1_a_directx_map_is_lit_from_below_until_the_checkbox_
     let mean = |values: &[f32]| upper.iter().map(|&i| values[i]).sum::<f32>() / upper.len() as f32;
     println!("the upper edges' light: {:.2} read right, {:.2} read the wrong way up", mean(&right), mean(&wrong));
     assert!((mean(&right) - UPPER_EDGES_RIGHT).abs() < 0.02 && (mean(&wrong) - UPPER_EDGES_WRONG).abs() < 0.02);
+}
+
+/// The normal-maps lesson: the share of the brick's normal map that is flat,
+/// within `FLAT_WITHIN` of (128, 128, 255) in every channel, per cent.
+const FLAT_BRICK_PERCENT: f32 = 41.0;
+const FLAT_WITHIN: u8 = 4;
+
+#[test]
+fn the_brick_normal_maps_flat_texels_are_the_share_the_lesson_says() {
+    let brick = picture("textures/brick/normal.png");
+    let flat = brick
+        .pixels()
+        .filter(|t| t[0].abs_diff(128) <= FLAT_WITHIN && t[1].abs_diff(128) <= FLAT_WITHIN && t[2] >= 255 - FLAT_WITHIN)
+        .count();
+    let percent = 100.0 * flat as f32 / (brick.width() * brick.height()) as f32;
+    println!("{flat} flat texels: {percent:.2} %");
+    assert!((percent - FLAT_BRICK_PERCENT).abs() < 0.5, "{percent} % of the brick's texels are flat");
+    // And every one of them reads back as a direction within 3° of +z.
+    for t in brick.pixels().filter(|t| t[0].abs_diff(128) <= FLAT_WITHIN && t[1].abs_diff(128) <= FLAT_WITHIN) {
+        if t[2] >= 255 - FLAT_WITHIN {
+            assert!(direction(t).normalize().z > 3f32.to_radians().cos(), "{t:?}");
+        }
+    }
 }
 
 /// Lambert's light on the brick's upper edges, from 45° above: read right, and the wrong way up.

@@ -338,3 +338,164 @@ fn sliding_the_view_moves_the_box_by_whole_texels_and_keeps_its_size() {
     }
 }
 // ANCHOR_END: snapping_test
+
+/// The sun's box in the chapter's default picture (the demo at
+/// `ShadowsChapter::SNAPSHOT_TIME`, the game's camera at 16:9, the default
+/// sun, a 2048² map) and over the demo: the figures the lessons on the two
+/// passes, the sun's box and acne write from these constants. The test
+/// below works each out a second way, from distances along the sun's
+/// direction (dot products, not `fit_light`'s matrices), checks that
+/// `fit_light`'s box agrees, and that the constant is what it found.
+mod sun_box {
+    /// Metres from the box's near face to its far face, in the default
+    /// picture, and the most over the demo (the player stopped at its end).
+    pub const DEFAULT_DEPTH_M: f32 = 112.74;
+    pub const DEEPEST_M: f32 = 119.81;
+    /// Seconds into the demo when the box first grows deeper than in the
+    /// default picture (to the 60th of a second the test steps by).
+    pub const DEEPENS_FROM_S: f32 = 19.43;
+    /// The box's sides: the farthest of the eight visible points from their
+    /// bounding box's middle, metres, and the square's width around the
+    /// sphere of that radius rounded up to half a metre.
+    pub const REACH_M: f32 = 22.11;
+    pub const WIDTH_M: f32 = 45.0;
+    /// The map's column both points of the shadow test's section land in.
+    pub const SECTION_COLUMN: u32 = 901;
+    /// The shadow test's section (`diagrams/src/shadows.rs` draws it):
+    /// B on the ground at x = 25.6 m, A 5 m from it towards the sun. A's
+    /// depth in the map (its texel holds the same), what B's texel holds
+    /// (the third platform's top), and B's own depth.
+    pub const SECTION_AT: f32 = 25.6;
+    pub const LIT_AT: f32 = 5.0;
+    pub const LIT_DEPTH: f32 = 0.2407;
+    pub const BLOCKER_DEPTH: f32 = 0.2462;
+    pub const SHADOWED_DEPTH: f32 = 0.2768;
+    /// The depth in the map of the rock beside the player (the foot of the
+    /// one at x = 28 m; the player stands at 31 m).
+    pub const ROCK_DEPTH: f32 = 0.296;
+}
+
+/// Where the line `p + t·d` runs inside the box, as (t in, t out), if it does.
+fn through_box(p: Vec3, d: Vec3, (low, high): (Vec3, Vec3)) -> Option<(f32, f32)> {
+    let (mut enter, mut exit) = (f32::MIN, f32::MAX);
+    for axis in 0..3 {
+        if d[axis].abs() < 1e-9 {
+            if p[axis] < low[axis] || p[axis] > high[axis] {
+                return None;
+            }
+            continue;
+        }
+        let (a, b) = ((low[axis] - p[axis]) / d[axis], (high[axis] - p[axis]) / d[axis]);
+        enter = enter.max(a.min(b));
+        exit = exit.min(a.max(b));
+    }
+    (enter <= exit).then_some((enter, exit))
+}
+
+#[test]
+fn the_sun_boxs_figures_on_the_pages_are_the_boxs_of_the_default_picture_and_the_demo() {
+    use shadows::{CAMERA_DISTANCE, Settings, side_camera, visible_part};
+    let level = game::level();
+    let bounds = scene::level_bounds(&level);
+    let towards_sun = scene::sun_at(Settings::DEFAULT.phase).direction;
+    let (low, high) = bounds;
+    let corners: Vec<Vec3> = (0..8)
+        .map(|i| Vec3::new([low.x, high.x][i & 1], [low.y, high.y][(i >> 1) & 1], [low.z, high.z][i >> 2]))
+        .collect();
+    // Each picture's box, and its depth and near face worked out by hand: a
+    // metre beyond the farthest of the level's corners and the visible
+    // points along the sun's direction, at either end.
+    let fitted_at = |time: f32| {
+        let player = game::demo_at(&level, &level.solids(), time).player.aabb.centre();
+        let focus = visible_part(&side_camera(player, CAMERA_DISTANCE, 16.0 / 9.0), bounds.1.z);
+        let along: Vec<f32> = corners.iter().chain(&focus).map(|p| p.dot(towards_sun)).collect();
+        let nearest_the_sun = along.iter().copied().fold(f32::MIN, f32::max) + 1.0;
+        let farthest = along.iter().copied().fold(f32::MAX, f32::min) - 1.0;
+        let light = fit_light(towards_sun, &focus, bounds, shadow_map::DEFAULT_SIZE);
+        (light, nearest_the_sun, nearest_the_sun - farthest)
+    };
+    let near = |value: f32, expected: f32, within: f32, what: &str| {
+        assert!((value - expected).abs() <= within, "{what} is {value}, where the pages have {expected}");
+    };
+    let (light, face, depth) = fitted_at(ShadowsChapter::SNAPSHOT_TIME);
+    // The sides: a sphere around the visible points, a square around it.
+    let player = game::demo_at(&level, &level.solids(), ShadowsChapter::SNAPSHOT_TIME).player.aabb.centre();
+    let focus = visible_part(&side_camera(player, CAMERA_DISTANCE, 16.0 / 9.0), bounds.1.z);
+    let (lowest, highest) = focus.iter().fold((Vec3::MAX, Vec3::MIN), |(lo, hi), p| (lo.min(*p), hi.max(*p)));
+    let reach = focus.iter().map(|p| p.distance((lowest + highest) / 2.0)).fold(0.0, f32::max);
+    near(reach, sun_box::REACH_M, 0.005, "the farthest visible point from the middle, m");
+    let width = light.texel * shadow_map::DEFAULT_SIZE as f32;
+    assert_eq!(width, 2.0 * (reach * 2.0).ceil() / 2.0, "the square is not the rounded sphere's");
+    near(width, sun_box::WIDTH_M, 1e-4, "the box's width, m");
+    assert!((light.depth - depth).abs() < 1e-3, "fit_light's box is {} m deep, by hand {depth} m", light.depth);
+    near(depth, sun_box::DEFAULT_DEPTH_M, 0.005, "the default picture's box depth, m");
+    // There both its ends come from the level's corners, not the view's.
+    let along_corners = corners.iter().map(|p| p.dot(towards_sun));
+    let spread = along_corners.clone().fold(f32::MIN, f32::max) - along_corners.fold(f32::MAX, f32::min);
+    assert!((spread + 2.0 - depth).abs() < 1e-3, "the view reaches beyond the level's corners");
+    // A point's depth in the map: its distance from the near face over the
+    // box's depth, by hand and through fit_light's box.
+    let by_hand = |p: Vec3| (face - p.dot(towards_sun)) / depth;
+    let in_map = |p: Vec3| light.view_proj.project_point3(p).z;
+
+    // Over the demo, frame by frame at 60 Hz, until the player has stopped.
+    let mut deepest = depth;
+    let mut deepens_from = None;
+    for frame in 0..=22 * 60 {
+        let time = frame as f32 / 60.0;
+        let (_, _, d) = fitted_at(time);
+        deepest = deepest.max(d);
+        if deepens_from.is_none() && d > depth + 1e-3 {
+            deepens_from = Some(time);
+        }
+    }
+    near(deepest, sun_box::DEEPEST_M, 0.005, "the deepest box over the demo, m");
+    near(deepens_from.expect("the box deepens"), sun_box::DEEPENS_FROM_S, 0.5 / 60.0, "when it deepens, s");
+
+    // The shadow test's section: A's ray meets no block before A; B's
+    // meets the platform's top, 3.45 m nearer the sun.
+    let along_ground = Vec3::new(towards_sun.x, 0.0, towards_sun.z).normalize();
+    let shadowed = Vec3::new(sun_box::SECTION_AT, 0.0, 0.0);
+    let lit = shadowed + along_ground * sun_box::LIT_AT;
+    let first_surface = |p: Vec3| {
+        let t = level
+            .blocks
+            .iter()
+            .filter_map(|b| through_box(p, towards_sun, (b.aabb.min.extend(-b.depth), b.aabb.max.extend(b.depth))))
+            .map(|(_, out)| out)
+            .fold(0.0, f32::max);
+        p + towards_sun * t
+    };
+    assert_eq!(first_surface(lit), lit, "A's ray meets a block");
+    let column = |p: Vec3| ((light.view_proj.project_point3(p).x * 0.5 + 0.5) * shadow_map::DEFAULT_SIZE as f32) as u32;
+    assert_eq!(
+        (column(lit), column(shadowed)),
+        (sun_box::SECTION_COLUMN, sun_box::SECTION_COLUMN),
+        "the section's column"
+    );
+    let blocker = first_surface(shadowed);
+    near(blocker.distance(shadowed), 3.45, 0.005, "B's distance behind its blocker, m");
+    for (point, expected, what) in [
+        (lit, sun_box::LIT_DEPTH, "A's depth"),
+        (blocker, sun_box::BLOCKER_DEPTH, "the depth B's texel holds"),
+        (shadowed, sun_box::SHADOWED_DEPTH, "B's depth"),
+    ] {
+        assert!(
+            (in_map(point) - by_hand(point)).abs() < 1e-5,
+            "{what}: {} in the map, {} by hand",
+            in_map(point),
+            by_hand(point)
+        );
+        near(by_hand(point), expected, 0.00005, what);
+    }
+    // The rock beside the player, in the range [0.25, 0.5) where a step of
+    // a 32-bit float is 2⁻²⁵, as the acne lesson says.
+    let rock = level
+        .props
+        .iter()
+        .filter(|p| p.kind == game::PropKind::Rock)
+        .min_by(|a, b| (a.base.x - player.x).abs().total_cmp(&(b.base.x - player.x).abs()))
+        .expect("the level has rocks");
+    near(by_hand(rock.base), sun_box::ROCK_DEPTH, 0.0005, "the rock's depth");
+    assert!((0.25..0.5).contains(&in_map(rock.base)), "the rock's depth left [0.25, 0.5)");
+}

@@ -48,10 +48,16 @@ fn sunlit(gpu: &Gpu, chapter: &mut ShadowsChapter, settings: Settings, time: f32
 }
 
 // ANCHOR: bias_search
+/// Acne, exercise 1: the acne is gone when no more sun-facing pixels are
+/// in shadow than with the default bias, give or take this share of them
+/// (per cent); then each bias found is raised this many times over.
+const SAME_WITHIN_PERCENT: usize = 1;
+const RAISED_BY: f32 = 64.0;
+
 /// Acne, exercise 1: the smallest bias of one kind that removes the acne, the
 /// other kind at zero. `bias(x)` makes the bias for a value `x`; the acne
 /// is gone when no more sun-facing pixels are in shadow than with the
-/// chapter's default bias, give or take 1 % of them.
+/// chapter's default bias, give or take `SAME_WITHIN_PERCENT` of them.
 fn smallest_bias_without_acne(
     gpu: &Gpu,
     chapter: &mut ShadowsChapter,
@@ -64,7 +70,7 @@ fn smallest_bias_without_acne(
     for &value in values {
         let shadowed = sunlit(gpu, chapter, Settings::hard_with(bias(value)), time).facing_shadowed;
         counts.push((value, shadowed));
-        if shadowed <= reference.facing_shadowed + reference.facing / 100 {
+        if shadowed <= reference.facing_shadowed + reference.facing * SAME_WITHIN_PERCENT / 100 {
             return (value, counts);
         }
     }
@@ -95,17 +101,17 @@ fn acne_exercises_1_2_and_3_biases_culling_and_the_evening_sun() {
         |v| Bias { constant: 0, slope_scale: v, normal_offset: 0.0 },
         &values,
     );
-    // Then each raised to 64 times that: how much of the real shadow goes.
+    // Then each raised to `RAISED_BY` times that: how much of the real shadow goes.
     let default = sunlit(&gpu, &mut chapter, Settings::hard_with(Bias::DEFAULT), time).facing_shadowed;
     let lost = |bias: Bias, chapter: &mut ShadowsChapter| {
         let left = sunlit(&gpu, chapter, Settings::hard_with(bias), time).facing_shadowed;
         1.0 - left as f64 / default as f64
     };
-    let offset_lost = lost(Bias { constant: 0, slope_scale: 0.0, normal_offset: 64.0 * offset }, &mut chapter);
-    let slope_lost = lost(Bias { constant: 0, slope_scale: 64.0 * slope, normal_offset: 0.0 }, &mut chapter);
+    let offset_lost = lost(Bias { constant: 0, slope_scale: 0.0, normal_offset: RAISED_BY * offset }, &mut chapter);
+    let slope_lost = lost(Bias { constant: 0, slope_scale: RAISED_BY * slope, normal_offset: 0.0 }, &mut chapter);
     println!(
         "default bias: {default} sun-facing pixels in shadow; normal offset alone: acne gone at {offset} texels \
-         {offsets:?}; slope scale alone: at {slope} {slopes:?}; at 64 times those, {:.1} % and {:.1} % of the real \
+         {offsets:?}; slope scale alone: at {slope} {slopes:?}; at {RAISED_BY} times those, {:.1} % and {:.1} % of the real \
          shadow is lost",
         offset_lost * 100.0,
         slope_lost * 100.0
@@ -381,6 +387,10 @@ impl DoubleJump {
     }
 }
 
+/// Collisions, exercise 1: the second press comes at the top of the first
+/// jump, v / g after take-off, to the hundredth of a second.
+const SECOND_PRESS_AT: f32 = 0.42;
+
 /// The first test to write: pressing jump three times in one flight lifts
 /// the player twice as high as one jump (2 × v² / 2g), and no higher.
 #[test]
@@ -389,8 +399,9 @@ fn collisions_exercise_1_a_second_jump_in_the_air_lifts_the_player_once() {
     let solids = level.solids();
     let mut player = DoubleJump::new(&level);
     let ground = player.game.player.aabb.min.y;
-    // Presses of 0.1 s at 0, 0.42 s (the top of the first jump) and 0.84 s.
-    let pressed = |t: f32| [0.0f32, 0.42, 0.84].iter().any(|&at| t >= at && t < at + 0.1);
+    // Presses of 0.1 s at 0, at the top of the first jump and twice that.
+    assert!((SECOND_PRESS_AT - JUMP_SPEED / game::GRAVITY).abs() < 0.005, "the first jump's top moved");
+    let pressed = |t: f32| [0.0f32, SECOND_PRESS_AT, 2.0 * SECOND_PRESS_AT].iter().any(|&at| t >= at && t < at + 0.1);
     let mut highest = 0.0f32;
     for _ in 0..(2.0 / STEP) as u32 {
         let time = player.game.time();
