@@ -11,7 +11,7 @@ use terrain::ground::EYE_HEIGHT;
 use terrain::heightfield::HeightField;
 use terrain::{Detail, Quadtree, TerrainRenderer};
 
-use crate::{default_terrain, draw_terrain, edited_terrain_shader};
+use crate::{default_terrain, draw_terrain, edited_terrain_shader, terrain_shader_with};
 
 /// A clear colour no ground has: every ground colour has some red.
 const NO_GROUND: wgpu::Color = wgpu::Color { r: 0.0, g: 0.0, b: 1.0, a: 1.0 };
@@ -129,6 +129,121 @@ fn walking_across_a_boundary_changes_no_pixel_much() {
     // room for a rounding or two.
     assert!(smooth <= 4, "{smooth}");
     assert!(popping > 10 * smooth.max(1), "{popping}");
+}
+
+/// A control for the pop test below: the slide of `terrain.wgsl` with its
+/// morph factor snapped to 0 or 1, so that vertices jump half-way through
+/// their morph instead of sliding. Both sides of an edge jump together, so
+/// nothing cracks: it pops. (The edits leave the morph factor's own line
+/// alone, wherever a fault may be.)
+const SLIDE: [&str; 2] =
+    ["        sample -= odd * f32(step) * k;", "        y = mix(height, height_at(vec2<u32>(neighbour)), k);"];
+const SNAPPED_SLIDE: [&str; 2] = [
+    "        sample -= odd * f32(step) * round(k);",
+    "        y = mix(height, height_at(vec2<u32>(neighbour)), round(k));",
+];
+
+/// The fragment shader's shaded return, and a probe of the geometry in its
+/// place: the world position of the ground each pixel shows.
+const SHADED_RETURN: &str = "            return vec4<f32>(shaded, 1.0);";
+const WORLD_POSITION_RETURN: &str = "            return vec4<f32>(in.world_position, 1.0);";
+
+/// The default terrain drawn with `shader` into a float target from the
+/// fixed `camera`, once for each of `eyes` (the patches chosen and morphed
+/// for it): what each picture holds, texel by texel. One renderer, pipeline
+/// and target for the whole walk.
+fn walk_pictures(shader: &common::ShaderFile, target: Target, camera: &Camera, eyes: &[Camera]) -> Vec<Vec<[f32; 4]>> {
+    let (gpu, data) = default_terrain();
+    let renderer = TerrainRenderer::new(gpu, data);
+    let layout = gpu.device.create_pipeline_layout(&wgpu::PipelineLayoutDescriptor {
+        label: None,
+        bind_group_layouts: &[Some(&renderer.bind_group_layout)],
+        immediate_size: 0,
+    });
+    let pipeline = TerrainRenderer::pipeline(gpu, shader, &layout, (target.format, 1)).unwrap();
+    let mut viewpoint = renderer.viewpoint(&gpu.device);
+    let offscreen = common::headless::Offscreen::new(&gpu.device, target);
+    let depth = common::texture::depth_view(&gpu.device, target.width, target.height);
+    let detail = Detail::lod(target.height);
+    eyes.iter()
+        .map(|eye| {
+            renderer.aim_seen_from(
+                gpu,
+                &mut viewpoint,
+                eye,
+                detail,
+                terrain::Sun::AFTERNOON,
+                terrain::KEEP_ALL,
+                camera,
+            );
+            let mut encoder = gpu.device.create_command_encoder(&Default::default());
+            {
+                let mut pass = common::pipeline::scene_pass(
+                    &mut encoder,
+                    &common::PassTimer::off(),
+                    "walk",
+                    &offscreen.view,
+                    NO_GROUND,
+                    &depth,
+                );
+                pass.set_pipeline(&pipeline);
+                renderer.draw(&mut pass, &viewpoint);
+            }
+            gpu.queue.submit([encoder.finish()]);
+            read_floats(gpu, &offscreen.texture).unwrap()
+        })
+        .collect()
+}
+
+#[test]
+fn walking_across_a_boundary_moves_the_ground_only_as_far_as_the_morph_slides() {
+    // Colour cannot see a pop: the ground is shaded from the height and
+    // normal maps, so a vertex that jumps changes almost no pixel's colour.
+    // Geometry can. The same fixed camera and moving eye as the walk above,
+    // at 160 × 90, each pixel holding the world position of the ground it
+    // shows; between two steps, how far along its ray that ground moved.
+    let (gpu, data) = default_terrain();
+    let target = Target { format: wgpu::TextureFormat::Rgba32Float, width: 160, height: 90, samples: 1 };
+    let camera = looking_down(&data.field, (2000.0, 2200.0), 120.0, 0.0, 60.0, target.aspect());
+    let (steps, step_length) = (80, 1.0f32);
+    let eyes: Vec<Camera> = (0..steps)
+        .map(|step| {
+            let mut eye = camera;
+            eye.position -= camera.forward() * (steps - step) as f32 * step_length;
+            eye
+        })
+        .collect();
+    let largest_move = |slide: [&str; 2]| {
+        let probe =
+            terrain_shader_with(&[(SLIDE[0], slide[0]), (SLIDE[1], slide[1]), (SHADED_RETURN, WORLD_POSITION_RETURN)]);
+        let along_rays: Vec<Vec<f32>> = walk_pictures(&probe, target, &camera, &eyes)
+            .iter()
+            .map(|picture| picture.iter().map(|p| Vec3::new(p[0], p[1], p[2]).distance(camera.position)).collect())
+            .collect();
+        along_rays
+            .windows(2)
+            .map(|pair| pair[0].iter().zip(&pair[1]).map(|(a, b)| (a - b).abs()).fold(0.0, f32::max))
+            .fold(0.0, f32::max)
+    };
+    let (sliding, jumping) = (largest_move(SLIDE), largest_move(SNAPPED_SLIDE));
+    // The second way of knowing, from the CPU's ranges: a step moves the
+    // eye `step_length`, so no vertex's distance from it changes by more,
+    // and its morph factor by no more than `step_length` over its level's
+    // morph zone, the last (1 − morph_start) of its range; level 0's zone
+    // is the shortest. A sliding vertex moves by that share of its whole
+    // slide in a step, where a snapped one moves its whole slide at once:
+    // the largest move of the ground with the morph is at most that share
+    // of the largest jump without it (twice that, for the rays' angles
+    // against the ground and the rasteriser's rounding).
+    let ranges = TerrainRenderer::new(gpu, data.clone()).ranges(&camera, Detail::lod(target.height));
+    let shortest_zone = (1.0 - ranges.morph_start) * ranges.range(0);
+    let allowed = 2.0 * jumping * step_length / shortest_zone;
+    eprintln!(
+        "the ground along a pixel's ray moved at most {sliding:.3} m in a step with the morph (allowed \
+         {allowed:.3} m: the shortest morph zone is {shortest_zone:.1} m), {jumping:.3} m with it snapped"
+    );
+    assert!(jumping > 0.1, "the walk crosses morphing ground: snapped, a vertex jumps ({jumping} m)");
+    assert!(sliding <= allowed, "the ground jumps {sliding} m in a step: it pops (allowed {allowed} m)");
 }
 
 #[test]
