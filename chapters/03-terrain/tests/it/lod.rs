@@ -1,7 +1,9 @@
 //! The level of detail, checked on real pictures of the default terrain:
-//! no hole opens between levels wherever the camera is, moving across a
-//! level's boundary changes no pixel by much (nothing pops), and the ground
-//! a walker stands on is the ground drawn.
+//! no hole opens between levels wherever the camera is, nor where a coarse
+//! patch meets a finer one seen through a long lens, moving across a
+//! level's boundary changes no pixel by much and moves the ground no more
+//! than the morph slides it (nothing pops), and the ground a walker stands
+//! on is the ground drawn.
 
 use common::Camera;
 use common::glam::Vec3;
