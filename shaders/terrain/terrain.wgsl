@@ -170,15 +170,19 @@ fn lit(colour: vec3<f32>, normal: vec3<f32>) -> vec3<f32> {
 // ANCHOR_END: lit
 
 // Lines along the drawn cells and their diagonals, a pixel wide at any
-// distance, fading out where cells get smaller than 2.5 pixels (denser lines
-// would only paint the ground pale).
+// distance, fading out as cells shrink from 1 / WIRE_FADE_START = 2.5 pixels
+// across to 1 / WIRE_FADE_END = 1.4 (denser lines would only paint the
+// ground pale). `fwidth(cell)` is cells a pixel, the inverse of a cell's
+// width in pixels.
+const WIRE_FADE_START: f32 = 0.4;
+const WIRE_FADE_END: f32 = 0.7;
 fn wire(cell: vec2<f32>) -> f32 {
     let width = fwidth(cell);
     let to_line = abs(fract(cell - 0.5) - 0.5) / width;
     let diagonal = cell.x + cell.y;
     let to_diagonal = abs(fract(diagonal - 0.5) - 0.5) / fwidth(diagonal);
     let nearest = min(min(to_line.x, to_line.y), to_diagonal);
-    return (1.0 - clamp(nearest, 0.0, 1.0)) * (1.0 - smoothstep(0.4, 0.7, max(width.x, width.y)));
+    return (1.0 - clamp(nearest, 0.0, 1.0)) * (1.0 - smoothstep(WIRE_FADE_START, WIRE_FADE_END, max(width.x, width.y)));
 }
 
 // A colour for each chunk, from a hash of its index.

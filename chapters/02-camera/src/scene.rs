@@ -59,6 +59,10 @@ impl Placement {
 }
 // ANCHOR_END: placement
 
+/// How much larger the back row's shapes are made than the front row's
+/// (which are as built): larger, and still smaller on the picture.
+pub const BACK_ROW_SCALE: f32 = 1.4;
+
 // ANCHOR: scene
 /// Three rows of the six primitives: as built (front), stretched and
 /// tilted (middle), and spinning at different rates (back).
@@ -96,7 +100,7 @@ pub fn scene() -> Vec<Placement> {
             shape,
             position: Vec3::new(x, 1.2, -4.0),
             rotation: Quat::from_rotation_x(PI / 2.0 * (i % 2) as f32),
-            scale: Vec3::splat(1.4),
+            scale: Vec3::splat(BACK_ROW_SCALE),
             spin: 0.4 + 0.25 * i as f32,
             color,
         });

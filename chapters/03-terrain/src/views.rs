@@ -43,7 +43,7 @@ pub const VIEW_TABLE: [ViewRow<Settings, CameraPreset>; 8] = [
     ),
     ViewRow::mode(
         "wireframe",
-        "the triangles drawn, wherever they are at least 4 pixels apart",
+        "the triangles drawn, the lines fading out as cells shrink from 2.5 to 1.4 pixels across",
         Settings { shading: Shading::Wireframe, ..Settings::DEFAULT },
     ),
     ViewRow::preset(

@@ -63,8 +63,17 @@ fn draw_terrain(
 
 /// `terrain.wgsl` with `replace` in place of `find` (which must be there).
 fn edited_terrain_shader(find: &str, replace: &str) -> ShaderFile {
+    terrain_shader_with(&[(find, replace)])
+}
+
+/// `terrain.wgsl` with each edit's `replace` in place of its `find` (which
+/// must be there), in turn.
+fn terrain_shader_with(edits: &[(&str, &str)]) -> ShaderFile {
     let original = common::shader!("terrain/terrain.wgsl");
-    assert!(original.embedded.contains(find), "terrain.wgsl changed: update the test's edit of {find:?}");
-    let edited = original.embedded.replacen(find, replace, 1);
+    let mut edited = original.embedded.to_string();
+    for (find, replace) in edits {
+        assert!(edited.contains(find), "terrain.wgsl changed: update the test's edit of {find:?}");
+        edited = edited.replacen(find, replace, 1);
+    }
     ShaderFile { embedded: Box::leak(edited.into_boxed_str()), ..original }
 }
