@@ -497,36 +497,62 @@ pub enum OnGl {
 /// draws its first view, or takes its refusal. A panic (a shader the GL
 /// backend cannot translate, a feature it lacks) fails the caller's test.
 pub fn draw_on_gl(record: &Record) -> anyhow::Result<OnGl> {
-    let gpu = match lease_on((record.needs)(), wgpu::Backends::GL) {
+    draw_first_view((record.needs)(), wgpu::Backends::GL, record, "OpenGL", GL_TOLERANCE)
+}
+
+/// Draws `record`'s first view on a device given none of the optional
+/// features the chapter could use (clip distances, a first instance in
+/// indirect draws, timestamps, an RG11B10 target, …), so that every
+/// fallback draws here, where lavapipe has them all; the picture must be
+/// the reference's within [`Tolerance::DEFAULT`].
+pub fn draw_without_optional_features(record: &Record) -> anyhow::Result<OnGl> {
+    let needs = GpuNeeds { optional: wgpu::Features::empty(), ..(record.needs)() };
+    draw_first_view(needs, wgpu::Backends::empty(), record, "a device with no optional features", Tolerance::DEFAULT)
+}
+
+/// Opens `record`'s chapter with `needs` on `backends` (empty: as
+/// `Gpu::headless` chooses), draws its first view and compares it with
+/// the reference, or takes the chapter's one-line refusal.
+fn draw_first_view(
+    needs: GpuNeeds,
+    backends: wgpu::Backends,
+    record: &Record,
+    on: &str,
+    tolerance: Tolerance,
+) -> anyhow::Result<OnGl> {
+    let gpu = match lease_on(needs, backends) {
         Ok(gpu) => gpu,
         Err(error) => {
             let Some(refusal) = error.downcast_ref::<NoAdapter>() else { return Err(error) };
             // What the chapter's binary prints before it exits with 2.
             let line = format!("error: {refusal}");
             anyhow::ensure!(
-                line.contains("cannot do what this chapter needs"),
-                "no OpenGL adapter ({line}): install Debian's libegl1 libegl-mesa0 libgles2 libgl1-mesa-dri \
-                 (`cargo xtask test` does)"
+                refusal.lacking,
+                "no adapter for {on} ({line}): for OpenGL, install Debian's libegl1 libegl-mesa0 libgles2 \
+                 libgl1-mesa-dri (`cargo xtask test` does)"
             );
             anyhow::ensure!(line.lines().count() == 1, "a refusal of more than one line: {line}");
             return Ok(OnGl::Refused(line));
         }
     };
-    let info = gpu.adapter.get_info();
-    anyhow::ensure!(info.backend == wgpu::Backend::Gl, "asked for OpenGL, got {:?}", info.backend);
+    if backends == wgpu::Backends::GL {
+        let info = gpu.adapter.get_info();
+        anyhow::ensure!(info.backend == wgpu::Backend::Gl, "asked for OpenGL, got {:?}", info.backend);
+    }
     let mut chapter = (record.open)(&gpu, target())?;
     let view = record.views.iter().position(|v| v.snapshot).expect("a chapter has a snapshot view");
     chapter.show(view);
     let (picture, _) = chapter.render(&gpu, view, record.snapshot_time)?;
     let reference = reference_path(record.name, record.views[view].name);
-    let shown = std::env::temp_dir().join(format!("{}-{}-gl", record.name, record.views[view].name));
+    let label = if backends == wgpu::Backends::GL { "gl" } else { "no-features" };
+    let shown = std::env::temp_dir().join(format!("{}-{}-{label}", record.name, record.views[view].name));
     let _ = std::fs::create_dir_all(&shown);
     // The reference's copy beside the picture, so a failure's -actual and
     // -diff land in a scratch folder and not beside the reference.
     let copy = shown.join(format!("{}.png", record.views[view].name));
     std::fs::copy(&reference, &copy)?;
-    let comparison = snapshot::check(&picture, &copy, Rule::Perceptual(GL_TOLERANCE))
-        .map_err(|e| anyhow::anyhow!("{}/{} on OpenGL: {e}", record.name, record.views[view].name))?;
+    let comparison = snapshot::check(&picture, &copy, Rule::Perceptual(tolerance))
+        .map_err(|e| anyhow::anyhow!("{}/{} on {on}: {e}", record.name, record.views[view].name))?;
     Ok(OnGl::Drawn(comparison))
 }
 // ANCHOR_END: gl

@@ -1,7 +1,8 @@
 //! Every chapter in the course's records (`course::chapters()`), checked
 //! view by view: against its reference image, for purity (a live instance
 //! after every other view draws what a fresh one draws), and against its
-//! bench table; then the checks on the records themselves: every chapter
+//! bench table; its first view once on OpenGL and once on a device with
+//! none of its optional features; then the checks on the records themselves: every chapter
 //! crate has one, no reference is left over, every reference is in the
 //! bless log, the README and the book's summary follow them, and no
 //! chapter uses another's `Chapter` type.
@@ -33,7 +34,18 @@ fn main() {
         })
         .with_ignored_flag(no_opengl)
     }));
+    // Every chapter once with none of its optional features: each fallback draws.
+    trials.extend(snapshots::chapters().into_iter().map(|entry| {
+        Trial::test(format!("fallbacks::{}", entry.name), move || {
+            match snapshots::draw_without_optional_features(&entry) {
+                Ok(snapshots::OnGl::Drawn(_)) => Ok(()),
+                Ok(snapshots::OnGl::Refused(line)) => Err(format!("refused without optional features: {line}").into()),
+                Err(e) => Err(format!("{e:#}").into()),
+            }
+        })
+    }));
     trials.push(Trial::test("every_chapter_crate_is_registered", every_chapter_crate_is_registered));
+    trials.push(Trial::test("no_unit_test_goes_unrun", no_unit_test_goes_unrun));
     trials.push(Trial::test("no_stale_references", no_stale_references));
     trials.push(Trial::test("every_reference_is_in_the_bless_log", every_reference_is_in_the_bless_log));
     trials.push(Trial::test("readme_and_summary_follow_the_records", readme_and_summary_follow_the_records));
@@ -56,6 +68,36 @@ fn every_chapter_crate_is_registered() -> Result<(), Failed> {
         Ok(())
     } else {
         Err(format!("chapters/ holds {on_disk:?} but course::chapters() registers {registered:?}").into())
+    }
+}
+
+/// A chapter library built with `test = false` never runs its unit tests
+/// in `cargo test --workspace`: one that has some must not say so.
+fn no_unit_test_goes_unrun() -> Result<(), Failed> {
+    let chapters = Path::new(env!("CARGO_MANIFEST_DIR")).join("../chapters");
+    let mut unrun = Vec::new();
+    for dir in std::fs::read_dir(&chapters).map_err(|e| e.to_string())? {
+        let dir = dir.map_err(|e| e.to_string())?.path();
+        let manifest = std::fs::read_to_string(dir.join("Cargo.toml")).map_err(|e| e.to_string())?;
+        let lib = manifest.split("[lib]").nth(1).map(|rest| rest.split("\n[").next().unwrap_or(rest));
+        if !lib.is_some_and(|lib| lib.lines().any(|l| l.trim() == "test = false")) {
+            continue;
+        }
+        let mut sources = vec![dir.join("src")];
+        while let Some(path) = sources.pop() {
+            if path.is_dir() {
+                for entry in std::fs::read_dir(&path).map_err(|e| e.to_string())? {
+                    sources.push(entry.map_err(|e| e.to_string())?.path());
+                }
+            } else if std::fs::read_to_string(&path).is_ok_and(|text| text.contains("#[cfg(test)]")) {
+                unrun.push(path.display().to_string());
+            }
+        }
+    }
+    if unrun.is_empty() {
+        Ok(())
+    } else {
+        Err(format!("unit tests that `cargo test` never runs (their library says `test = false`): {unrun:?}").into())
     }
 }
 
