@@ -726,6 +726,7 @@ fn test_pages(browser: &Browser, base: &str) -> anyhow::Result<()> {
         on_webgl2.push(format!("{chapter}/{view} FLIP mean {:.4}", comparison.mean));
     }
     let on_webgl2 = on_webgl2.join(", ");
+    let others = webgl2_outcomes(browser, base)?;
     lap("WebGL2");
 
     // No WebGPU and no WebGL: the frame says so instead of staying blank.
@@ -741,7 +742,7 @@ fn test_pages(browser: &Browser, base: &str) -> anyhow::Result<()> {
     lap("no adapter");
     println!(
         "browser pages ok: unknown parameter reported, bad view named, panic shown, {panel}, memory flat \
-         ({memory}), on WebGL2 {on_webgl2}, no-adapter message\nbrowser pages took: {}",
+         ({memory}), on WebGL2 {on_webgl2} ({others}), no-adapter message\nbrowser pages took: {}",
         took.join(", ")
     );
     Ok(())
@@ -1012,6 +1013,62 @@ fn longest_task_ms(page: &ChapterPage) -> anyhow::Result<f64> {
          })",
     )?;
     longest.as_f64().context("the Long Tasks API gave no number")
+}
+
+/// Every chapter not drawn by [`WEBGL2_VIEWS`], opened on WebGL2: one
+/// whose needs a WebGL2 adapter cannot meet (`Chapter::gpu_needs`: a
+/// capability WebGL2 may lack, or more than its guaranteed limits) must
+/// be refused with a message naming what it lacks; the others must open a
+/// WebGL2 device and start (whether their picture matches is `cargo xtask
+/// bench web`'s WebGL2 column: a terrain frame takes SwiftShader seconds).
+fn webgl2_outcomes(browser: &Browser, base: &str) -> anyhow::Result<String> {
+    let webgl2 =
+        common::wgpu::Limits { max_texture_dimension_2d: 4097, ..common::wgpu::Limits::downlevel_webgl2_defaults() };
+    let mut refused = Vec::new();
+    let mut opened = Vec::new();
+    for entry in course::chapters() {
+        if WEBGL2_VIEWS.iter().any(|(chapter, _)| *chapter == entry.name) {
+            continue;
+        }
+        let missing =
+            (entry.needs)().missing_on(common::wgpu::Features::empty(), common::wgpu::DownlevelFlags::empty(), &webgl2);
+        let page = ChapterPage::open(browser, &page_url(base, entry.name, "?backend=webgl2"))?;
+        let deadline = Instant::now() + STEP;
+        loop {
+            let status = page.state("status");
+            if status == "error" || !page.state("adapter").is_empty() {
+                break;
+            }
+            ensure!(
+                Instant::now() < deadline,
+                "{} on WebGL2: neither a device nor an error within {STEP:?}",
+                entry.name
+            );
+            std::thread::sleep(Duration::from_millis(100));
+        }
+        if missing.is_empty() {
+            ensure!(
+                page.state("status") != "error",
+                "{} on WebGL2 should start, and the page reports: {}",
+                entry.name,
+                page.state("error")
+            );
+            opened.push(entry.name);
+        } else {
+            let shown = page.eval("document.getElementById('message').textContent")?;
+            let shown = shown.as_str().unwrap_or_default().to_string();
+            // The adapter names what it lacks of the needs: one of them.
+            let needed = missing.iter().flat_map(|phrase| phrase.split([',', ';', ' '])).filter(|w| w.len() > 3);
+            let named = needed.clone().any(|word| shown.contains(word));
+            ensure!(
+                shown.contains("cannot draw this chapter") && named,
+                "{} on WebGL2 lacks {missing:?}, and the page showed '{shown}'",
+                entry.name
+            );
+            refused.push(entry.name);
+        }
+    }
+    Ok(format!("started: {}; refused by name: {}", opened.join(", "), refused.join(", ")))
 }
 
 /// Whether the chapter's first view renders on WebGL2: "FLIP 0.0123"

@@ -204,9 +204,13 @@ pub fn unlogged_references(log: &Log) -> anyhow::Result<Vec<String>> {
 
 /// The adapter a picture was drawn on, as the log writes it: the GPU's
 /// name, the backend and the driver; for a software rasteriser also the
-/// CPU it ran on, whose vector instructions round a few colours their own
-/// way (lavapipe on an AMD EPYC and on an Intel Xeon with AVX-512 differ
-/// by a level here and there in about half of the views).
+/// CPU it ran on, not only its vector width: with every reference held
+/// exact (2026-11-29), 32 of the 206 views blessed on an Intel Xeon with
+/// AVX-512 differed by more than one level on this AMD EPYC, also
+/// AVX-512, by up to 70 levels where FXAA and Sobel edges amplify a
+/// rounding (voronoi-water's `edges`, lighting's `fxaa`). So exactness is
+/// kept to the machine a reference was made on, and every other machine,
+/// CI's included, holds it to FLIP.
 pub fn adapter(gpu: &Gpu) -> String {
     let info = gpu.adapter.get_info();
     // lavapipe's driver is named in its adapter's name already.
