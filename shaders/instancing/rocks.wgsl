@@ -129,8 +129,9 @@ fn fs_flat(in: RockInput) -> @location(0) vec4<f32> {
     return vec4<f32>(0.2, 0.1, 0.07, 1.0);
 }
 
-// The `rock-chunks` view: each rock in its group's colour, the colour
-// chapter 03's `chunks` view gives the chunk, lit but without fog.
+// The `rock-chunks` view: each rock in its group's colour, lit but without
+// fog: a colour per chunk from a hash of the chunk's index (`chunk_colour`,
+// which terrain.wgsl lends), so neighbouring groups differ.
 @fragment
 fn fs_groups(in: RockInput) -> @location(0) vec4<f32> {
     if clipped(in.world_position) {

@@ -103,6 +103,13 @@ impl SkyboxChapter {
         (self.settings.start_phase + time / self.day_seconds).rem_euclid(1.0)
     }
     // ANCHOR_END: time_of_day
+
+    /// The rocks as this view draws them: the full-detail view culls them by
+    /// chunk on the CPU, every kept one whole (`Setup::at_full_detail`). The
+    /// frame and the stats line both read it, so the line counts what was drawn.
+    fn rocks_setup(&self) -> Setup {
+        if self.settings.full_detail { self.rocks.at_full_detail() } else { self.rocks }
+    }
 }
 
 impl Chapter for SkyboxChapter {
@@ -198,8 +205,8 @@ impl Chapter for SkyboxChapter {
         self.phase = self.phase_at(frame.time);
         self.camera.far = self.fog.far_plane();
         self.plain.set_air(&gpu.queue, self.fog, self.sky.fog_colour(self.phase));
+        let rocks = self.rocks_setup();
         let (ground, sky) = &mut self.viewpoint;
-        let rocks = if self.settings.full_detail { self.rocks.at_full_detail() } else { self.rocks };
         self.plain.aim(gpu, ground, &self.camera, rocks.detail(self.target.height), sun_at(self.phase), KEEP_ALL);
         self.sky.aim(&gpu.queue, sky, &self.camera, self.phase);
         self.plain.cull(gpu, frame.encoder, frame.timer, ground, rocks);
@@ -233,7 +240,9 @@ impl Chapter for SkyboxChapter {
 
     fn stats(&mut self, gpu: &Gpu) -> String {
         let calls = self.draw_calls;
-        let drawn = self.plain.rocks_drawn_now(gpu, &self.viewpoint.0, self.rocks);
+        // The setup the frame drew with: the full-detail view culls by chunk,
+        // and asking the GPU's lists for its rocks would read lists it never filled.
+        let drawn = self.plain.rocks_drawn_now(gpu, &self.viewpoint.0, self.rocks_setup());
         let fallback = self.plain.culling_fallback().map_or(String::new(), |line| format!("; {line}"));
         format!(
             "time of day {:.3}; {} of {} rocks drawn, {} rock triangles; {} draw calls ({} terrain chunks, {} for the rocks, 1 for the sky){fallback}",

@@ -38,3 +38,42 @@ fn the_day_draws_the_rock_triangles_of_chapter_05s_default_view() {
     eprintln!("chapter 05's default: {graded:?}; chapter 06: {line}");
     assert_eq!(rock_triangles(&line), graded.triangles, "{line}");
 }
+
+/// The rocks drawn in a stats line: the number before "of … rocks drawn".
+fn rocks_drawn(line: &str) -> u32 {
+    let before = &line[..line.find(" rocks drawn").unwrap_or_else(|| panic!("no rocks drawn in `{line}`"))];
+    let drawn = before.rsplit(" of ").nth(1).unwrap_or_default();
+    let number = drawn.rsplit(' ').next().unwrap_or_default();
+    number.replace(',', "").parse().unwrap_or_else(|_| panic!("`{number}` in `{line}`"))
+}
+
+#[test]
+fn the_full_detail_line_counts_the_rocks_its_chunks_drew() {
+    // The full-detail view culls by chunk on the CPU and draws every rock
+    // kept whole; its stats line once asked the GPU's lists, which that
+    // frame never filled, and said 0. The rocks nearest the start and a
+    // small picture keep it cheap: the counts do not depend on the size.
+    const ROCKS: u32 = 20_000;
+    let gpu = crate::plain_gpu();
+    let target = Target { format: OFFSCREEN_FORMAT, width: 320, height: 180, samples: 1 };
+
+    let mut sky: SkyboxChapter = common::chapter::create(gpu, target, &Default::default()).unwrap();
+    let full = common::chapter::view_index::<SkyboxChapter>("full-detail").unwrap();
+    sky.select_view(full);
+    sky.rocks.rocks = ROCKS;
+    capture(gpu, &mut sky, target, (0.0, full), Default::default()).unwrap();
+    let line = sky.stats(gpu);
+
+    // Chapter 05's own full-detail view, from the same camera, on the same rocks.
+    let mut plain: InstancingChapter = common::chapter::create(gpu, target, &Default::default()).unwrap();
+    let view = common::chapter::view_index::<InstancingChapter>("full-detail").unwrap();
+    plain.select_view(view);
+    plain.setup.rocks = ROCKS;
+    plain.setup.terrain = false;
+    capture(gpu, &mut plain, target, (0.0, view), Default::default()).unwrap();
+    let chunks = plain.plain.rocks_drawn_now(gpu, plain.viewpoint(), plain.setup);
+    eprintln!("chapter 05's full-detail: {chunks:?}; chapter 06: {line}");
+    assert!(chunks.levels.is_none() && chunks.rocks > 0, "culled by chunk: {chunks:?}");
+    assert_eq!(rocks_drawn(&line), chunks.rocks, "{line}");
+    assert_eq!(rock_triangles(&line), chunks.triangles, "{line}");
+}

@@ -14,14 +14,22 @@ use common::{Camera, Gpu, GpuNeeds, PassTimer, ShaderFile, Target, image, shader
 use skybox::{DAY, NIGHT, Sky, SkyboxChapter, celestial_turn, day_blend, sun_at};
 use terrain::noise::perlin3;
 
+/// Exercise 1's day length in the overlay, seconds, and when its midnight
+/// comes, seconds in: the page's figures.
+const EXERCISE_DAY_SECONDS: f32 = 20.0;
+const MIDNIGHT_SECONDS_IN: f32 = 12.0;
+
 #[test]
 fn time_of_day_exercise_1_at_midnight_the_sun_is_73_degrees_below_the_southern_horizon() {
     // A 20 s day, starting mid-morning (phase 0.4): midnight comes 12 s in.
     let gpu = crate::plain_gpu();
     let target = Target { format: OFFSCREEN_FORMAT, width: 64, height: 36, samples: 1 };
     let mut chapter: SkyboxChapter = common::chapter::create(gpu, target, &Default::default()).unwrap();
-    chapter.day_seconds = 20.0;
-    assert!(chapter.phase_at(12.0).abs() < 1e-6, "{}", chapter.phase_at(12.0));
+    chapter.day_seconds = EXERCISE_DAY_SECONDS;
+    let midnight_phase = chapter.phase_at(MIDNIGHT_SECONDS_IN);
+    assert!(midnight_phase.abs() < 1e-6 || (1.0 - midnight_phase).abs() < 1e-6, "{midnight_phase}");
+    // And not before: half a second earlier it is still the day before.
+    assert!(chapter.phase_at(MIDNIGHT_SECONDS_IN - 0.5) > 0.9);
     // The sun turns about the north–south axis, from a sunrise 16.7° south
     // of east. At midnight it is half a turn from noon: 73.3° below the
     // horizon, towards the south (+z), where noon has it 73.3° above.
@@ -462,13 +470,18 @@ impl CloudySky {
     }
 }
 
+/// Exercise 4's figures: the cloud map's mean cover, and the share of the
+/// test's view where clouds show (a difference over 8 levels), fractions.
+const CLOUD_COVER: f32 = 0.28;
+const CLOUDS_SHOWN: f32 = 0.39;
+
 #[test]
 fn time_of_day_exercise_4_clouds_turn_three_times_a_day_over_a_still_sky() {
     let faces = cloud_faces(64);
     let texels = faces.iter().flat_map(|f| f.pixels());
     let cover = texels.map(|p| f32::from(p[0]) / 255.0).sum::<f32>() / (6 * 64 * 64) as f32;
     eprintln!("cloud cover {:.0} %", cover * 100.0);
-    assert!((cover - 0.28).abs() < 0.01, "{cover}");
+    assert!((cover - CLOUD_COVER).abs() < 0.01, "{cover}");
 
     // The clouds alone: the picture with them, against the same sky with
     // a cloud map that is clear everywhere.
@@ -499,6 +512,6 @@ fn time_of_day_exercise_4_clouds_turn_three_times_a_day_over_a_still_sky() {
          by {followed_difference:.1} when the camera turns with them",
         shown * 100.0
     );
-    assert!((shown - 0.39).abs() < 0.03, "{shown}");
+    assert!((shown - CLOUDS_SHOWN).abs() < 0.03, "{shown}");
     assert!((moved - 23.7).abs() < 3.0 && followed_difference < 1.0, "{followed_difference} against {moved}");
 }
