@@ -118,9 +118,9 @@ mod tests {
 
     #[test]
     fn debian_installs_what_is_missing_and_skips_nothing() {
-        let plan = plan(DEBIAN_BARE);
-        assert_eq!(plan, Plan { opengl: Decision::Install, window: Decision::Install, browser: Decision::Install });
-        assert!(plan.skipped().is_empty());
+        let bare = plan(DEBIAN_BARE);
+        assert_eq!(bare, Plan { opengl: Decision::Install, window: Decision::Install, browser: Decision::Install });
+        assert!(bare.skipped().is_empty());
         let ready = System { has_egl: true, has_window_tools: true, has_chromium: true, ..DEBIAN_BARE };
         assert_eq!(plan(ready), Plan { opengl: Decision::Run, window: Decision::Run, browser: Decision::Run });
     }
@@ -128,8 +128,7 @@ mod tests {
     #[test]
     fn macos_and_windows_skip_the_linux_steps_and_say_why() {
         for os in [Os::MacOs, Os::Windows] {
-            let plan = plan(System { os, debian: false, ..DEBIAN_BARE });
-            let skipped = plan.skipped();
+            let skipped = plan(System { os, debian: false, ..DEBIAN_BARE }).skipped();
             assert_eq!(skipped.len(), 3, "{skipped:?}");
             assert!(skipped[0].starts_with("skipped the OpenGL trials: ") && skipped[0].contains("EGL"));
             assert!(skipped[1].starts_with("skipped the window test: ") && skipped[1].contains("Xvfb"));
@@ -146,9 +145,9 @@ mod tests {
     #[test]
     fn another_linux_skips_only_what_it_lacks() {
         let fedora = System { debian: false, has_egl: true, ..DEBIAN_BARE };
-        let plan = plan(fedora);
-        assert_eq!(plan.opengl, Decision::Run);
-        let skipped = plan.skipped();
+        let fedora = plan(fedora);
+        assert_eq!(fedora.opengl, Decision::Run);
+        let skipped = fedora.skipped();
         assert_eq!(skipped.len(), 2, "{skipped:?}");
         assert!(skipped.iter().all(|line| line.contains("only Debian's packages are installed for you")));
     }
