@@ -84,12 +84,7 @@ impl Chapter for LightingChapter {
     ];
 
     fn gpu_needs() -> common::GpuNeeds {
-        common::GpuNeeds {
-            required: wgpu::Features::empty(),
-            optional: PostChain::OPTIONAL_FEATURES,
-            downlevel: crate::scene_lights::DOWNLEVEL,
-            limits: crate::scene_lights::LIMITS,
-        }
+        crate::scene_lights::gpu_needs()
     }
 
     /// Nothing takes long enough to prepare in steps.

@@ -80,6 +80,17 @@ pub const DOWNLEVEL: wgpu::DownlevelFlags = wgpu::DownlevelFlags::VERTEX_STORAGE
 /// with less is refused in one line that names each limit it lacks.
 pub const LIMITS: wgpu::Limits = wgpu::Limits::defaults();
 
+/// What a lit chapter (08-11) asks of an adapter: [`DOWNLEVEL`] and
+/// [`LIMITS`], and the post chain's optional features where it has them.
+pub fn gpu_needs() -> common::GpuNeeds {
+    common::GpuNeeds {
+        required: wgpu::Features::empty(),
+        optional: crate::post::PostChain::OPTIONAL_FEATURES,
+        downlevel: DOWNLEVEL,
+        limits: LIMITS,
+    }
+}
+
 // ANCHOR: scene_lights
 /// The lights of a frame on the GPU: group 0 of `lights.wgsl`, with the
 /// frame's camera and sun, every light, and the cluster lists. A piece with

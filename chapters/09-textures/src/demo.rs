@@ -94,12 +94,7 @@ impl Chapter for TexturesChapter {
     }];
 
     fn gpu_needs() -> common::GpuNeeds {
-        common::GpuNeeds {
-            required: wgpu::Features::empty(),
-            optional: PostChain::OPTIONAL_FEATURES,
-            downlevel: lighting::scene_lights::DOWNLEVEL,
-            limits: lighting::scene_lights::LIMITS,
-        }
+        lighting::scene_lights::gpu_needs()
     }
 
     /// Nothing takes long enough to prepare in steps.
