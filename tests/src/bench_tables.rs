@@ -102,6 +102,21 @@ pub fn check_frames(path: &str, table: &str, chapter: &str, frames: &[(&str, Fin
                 changes.join("; ")
             ));
         }
+        // Each timing row names the frame it timed: the view's, no other.
+        let timed = &table[..table.find(FRAMES_HEADING).unwrap_or(table.len())];
+        for line in timed.lines() {
+            let cells: Vec<&str> = line.split('|').map(str::trim).collect();
+            let is_frame = |c: &str| c.len() == 8 && c.chars().all(|ch| ch.is_ascii_hexdigit());
+            // | view | pass | min | median | max | frame |: eight pieces.
+            if cells.len() == 8 && cells[1] == *view && is_frame(cells[6]) {
+                let row_frame = cells[6];
+                if row_frame != id {
+                    problems.push(format!(
+                        "{path}: a row of `{view}` says it timed frame {row_frame}, its frames section {id}; {again}"
+                    ));
+                }
+            }
+        }
     }
     problems
 }
