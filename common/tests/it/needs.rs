@@ -48,7 +48,7 @@ fn a_layout_past_webgpu_limits_fails_here_naming_the_limit() {
         })
     };
     assert!(groups(4).is_ok(), "WebGPU allows 4 bind groups");
-    let error = groups(5).err().expect("a fifth bind group was allowed");
+    let error = groups(5).expect_err("a fifth bind group was allowed");
     assert!(error.contains("bind group limit 4"), "{error}");
 
     let storage = |count: u32| {
@@ -69,7 +69,7 @@ fn a_layout_past_webgpu_limits_fails_here_naming_the_limit() {
         })
     };
     assert!(storage(8).is_ok(), "WebGPU allows 8 storage buffers a fragment stage");
-    let error = storage(9).err().expect("a ninth fragment-stage storage buffer was allowed");
+    let error = storage(9).expect_err("a ninth fragment-stage storage buffer was allowed");
     assert!(error.contains("max_storage_buffers_per_shader_stage"), "{error}");
 }
 
