@@ -20,7 +20,7 @@ pub struct System {
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum Os {
     Linux,
-    MacOs,
+    Mac,
     Windows,
     Other,
 }
@@ -94,7 +94,7 @@ pub fn this_system() -> System {
     let os = if cfg!(target_os = "linux") {
         Os::Linux
     } else if cfg!(target_os = "macos") {
-        Os::MacOs
+        Os::Mac
     } else if cfg!(target_os = "windows") {
         Os::Windows
     } else {
@@ -127,7 +127,7 @@ mod tests {
 
     #[test]
     fn macos_and_windows_skip_the_linux_steps_and_say_why() {
-        for os in [Os::MacOs, Os::Windows] {
+        for os in [Os::Mac, Os::Windows] {
             let skipped = plan(System { os, debian: false, ..DEBIAN_BARE }).skipped();
             assert_eq!(skipped.len(), 3, "{skipped:?}");
             assert!(skipped[0].starts_with("skipped the OpenGL trials: ") && skipped[0].contains("EGL"));
@@ -138,7 +138,7 @@ mod tests {
 
     #[test]
     fn a_browser_found_elsewhere_runs_the_browser_test_anywhere() {
-        let mac = System { os: Os::MacOs, debian: false, has_chromium: true, ..DEBIAN_BARE };
+        let mac = System { os: Os::Mac, debian: false, has_chromium: true, ..DEBIAN_BARE };
         assert_eq!(plan(mac).browser, Decision::Run);
     }
 
