@@ -255,7 +255,11 @@ pub fn serve_in_background(dir: &Path, port: u16) -> anyhow::Result<u16> {
     let dir = dir.to_path_buf();
     std::thread::spawn(move || {
         for request in server.incoming_requests() {
-            let _ = respond(&dir, request);
+            // A thread each: a response the browser stops reading (a
+            // lazy frame's program, a page closed mid-way) must not hold
+            // up the requests behind it.
+            let dir = dir.clone();
+            std::thread::spawn(move || respond(&dir, request));
         }
     });
     Ok(port)
