@@ -9,6 +9,7 @@ use std::path::Path;
 
 use common::glam::Mat4;
 use shadows::game::{self, Block, Game, Level, PropKind};
+use shadows::light_box::{SECTION_AT, SECTION_LIT_AT, through_box};
 use shadows::point_shadow::CubeFace;
 use shadows::shadow_map::{self, LightBox, fit_light};
 use shadows::{CAMERA_DISTANCE, Settings, ShadowsChapter, scene, side_camera, visible_part};
@@ -206,28 +207,6 @@ impl Panel {
     }
 }
 
-/// Where the line `p + t·d` runs inside the box, as (t in, t out), if it does.
-fn through_box(p: Vec3, d: Vec3, (low, high): (Vec3, Vec3)) -> Option<(f32, f32)> {
-    let (mut enter, mut exit) = (f32::MIN, f32::MAX);
-    for axis in 0..3 {
-        if d[axis].abs() < 1e-9 {
-            if p[axis] < low[axis] || p[axis] > high[axis] {
-                return None;
-            }
-            continue;
-        }
-        let (a, b) = ((low[axis] - p[axis]) / d[axis], (high[axis] - p[axis]) / d[axis]);
-        enter = enter.max(a.min(b));
-        exit = exit.min(a.max(b));
-    }
-    (enter <= exit).then_some((enter, exit))
-}
-
-/// Where the figure's section crosses z = 0 (its shadowed point), and how
-/// far from there towards the sun its lit point lies, metres.
-const SECTION_AT: f32 = 25.6;
-const LIT_AT: f32 = 5.0;
-
 /// The demo's script runs for 21 s (`game::script`); a second later the
 /// player has stopped, and the view with it.
 const DEMO_SECONDS: u32 = 22;
@@ -247,7 +226,7 @@ pub fn shadow_test() -> String {
     // point of the plane stays in the plane.
     let towards = Vec3::new(sun.x, 0.0, sun.z).normalize();
     let shadowed = Vec3::new(SECTION_AT, 0.0, 0.0);
-    let lit = shadowed + towards * LIT_AT;
+    let lit = shadowed + towards * SECTION_LIT_AT;
     let (u_range, y_range) = ((-1.5f32, 8.0f32), (-1.2f32, 3.6f32));
     let blocks: Vec<(Vec3, Vec3)> = f.level.blocks.iter().map(block_box).collect();
     // The props and the player touch neither ray, nor the part of the

@@ -87,3 +87,29 @@ impl LightBox {
         })
     }
 }
+
+/// Where the line `p + t·d` runs inside the box `(low, high)`, as (t in,
+/// t out), if it does: the slab method, one axis at a time. The book's
+/// figure of the shadow test and the test of its numbers follow a ray from
+/// the ground towards the sun through the level's bounds with it.
+pub fn through_box(p: Vec3, d: Vec3, (low, high): (Vec3, Vec3)) -> Option<(f32, f32)> {
+    let (mut enter, mut exit) = (f32::MIN, f32::MAX);
+    for axis in 0..3 {
+        if d[axis].abs() < 1e-9 {
+            if p[axis] < low[axis] || p[axis] > high[axis] {
+                return None;
+            }
+            continue;
+        }
+        let (a, b) = ((low[axis] - p[axis]) / d[axis], (high[axis] - p[axis]) / d[axis]);
+        enter = enter.max(a.min(b));
+        exit = exit.min(a.max(b));
+    }
+    (enter <= exit).then_some((enter, exit))
+}
+
+/// The section the figure of the shadow test draws and its test checks,
+/// metres: B on the ground at x = 25.6 m (under the third platform, 23 to
+/// 26 m), A on the ground 5 m from B towards the sun.
+pub const SECTION_AT: f32 = 25.6;
+pub const SECTION_LIT_AT: f32 = 5.0;

@@ -15,7 +15,7 @@ use terrain::heightfield::HeightField;
 use terrain::quadtree::PATCH_QUADS;
 use terrain::{Detail, LodRanges, Patch, Quadtree, TerrainRenderer};
 
-use crate::{default_terrain, draw_terrain, edited_terrain_shader, terrain_shader_with};
+use crate::{default_terrain, draw_terrain, edited_terrain_shader, pictures, terrain_shader_with};
 
 /// A clear colour no ground has: every ground colour has some red.
 const NO_GROUND: wgpu::Color = wgpu::Color { r: 0.0, g: 0.0, b: 1.0, a: 1.0 };
@@ -213,7 +213,9 @@ fn no_hole_opens_where_a_coarse_patch_meets_a_finer_one() {
             }));
         }
         let holes_seen = |shader: &common::ShaderFile| -> Vec<usize> {
-            pictures(shader, target, &views, detail, |gpu, texture| holes(&read_texture(gpu, texture).unwrap()))
+            pictures(shader, target, NO_GROUND, &views, detail, |gpu, texture| {
+                holes(&read_texture(gpu, texture).unwrap())
+            })
         };
         let morphed = holes_seen(&shaded());
         assert!(morphed.iter().all(|&h| h == 0), "holes where levels meet: {morphed:?}");
@@ -288,60 +290,6 @@ const SNAPPED_SLIDE: [&str; 2] = [
 const SHADED_RETURN: &str = "            return vec4<f32>(shaded, 1.0);";
 const WORLD_POSITION_RETURN: &str = "            return vec4<f32>(in.world_position, 1.0);";
 
-/// The default terrain drawn with `shader` into a target of `target`'s
-/// size and format, once for each of `views` (the camera the picture is
-/// taken from, and the eye the patches are chosen and morphed for, as
-/// finely as `detail` asks), each picture read back by `read`. One renderer, pipeline and target for them
-/// all: a pipeline is the dear part of a small picture.
-fn pictures<T>(
-    shader: &common::ShaderFile,
-    target: Target,
-    views: &[(Camera, Camera)],
-    detail: Detail,
-    read: impl Fn(&common::Gpu, &wgpu::Texture) -> T,
-) -> Vec<T> {
-    let (gpu, data) = default_terrain();
-    let renderer = TerrainRenderer::new(gpu, data);
-    let layout = gpu.device.create_pipeline_layout(&wgpu::PipelineLayoutDescriptor {
-        label: None,
-        bind_group_layouts: &[Some(&renderer.bind_group_layout)],
-        immediate_size: 0,
-    });
-    let pipeline = TerrainRenderer::pipeline(gpu, shader, &layout, (target.format, 1)).unwrap();
-    let mut viewpoint = renderer.viewpoint(&gpu.device);
-    let offscreen = common::headless::Offscreen::new(&gpu.device, target);
-    let depth = common::texture::depth_view(&gpu.device, target.width, target.height);
-    views
-        .iter()
-        .map(|(camera, eye)| {
-            renderer.aim_seen_from(
-                gpu,
-                &mut viewpoint,
-                eye,
-                detail,
-                terrain::Sun::AFTERNOON,
-                terrain::KEEP_ALL,
-                camera,
-            );
-            let mut encoder = gpu.device.create_command_encoder(&Default::default());
-            {
-                let mut pass = common::pipeline::scene_pass(
-                    &mut encoder,
-                    &common::PassTimer::off(),
-                    "walk",
-                    &offscreen.view,
-                    NO_GROUND,
-                    &depth,
-                );
-                pass.set_pipeline(&pipeline);
-                renderer.draw(&mut pass, &viewpoint);
-            }
-            gpu.queue.submit([encoder.finish()]);
-            read(gpu, &offscreen.texture)
-        })
-        .collect()
-}
-
 #[test]
 fn walking_across_a_boundary_moves_the_ground_only_as_far_as_the_morph_slides() {
     // Colour cannot see a pop: the ground is shaded from the height and
@@ -363,12 +311,13 @@ fn walking_across_a_boundary_moves_the_ground_only_as_far_as_the_morph_slides() 
     let largest_move = |slide: [&str; 2]| {
         let probe =
             terrain_shader_with(&[(SLIDE[0], slide[0]), (SLIDE[1], slide[1]), (SHADED_RETURN, WORLD_POSITION_RETURN)]);
-        let along_rays: Vec<Vec<f32>> = pictures(&probe, target, &views, Detail::lod(target.height), |gpu, texture| {
-            read_floats(gpu, texture).unwrap()
-        })
-        .iter()
-        .map(|picture| picture.iter().map(|p| Vec3::new(p[0], p[1], p[2]).distance(camera.position)).collect())
-        .collect();
+        let along_rays: Vec<Vec<f32>> =
+            pictures(&probe, target, NO_GROUND, &views, Detail::lod(target.height), |gpu, texture| {
+                read_floats(gpu, texture).unwrap()
+            })
+            .iter()
+            .map(|picture| picture.iter().map(|p| Vec3::new(p[0], p[1], p[2]).distance(camera.position)).collect())
+            .collect();
         along_rays
             .windows(2)
             .map(|pair| pair[0].iter().zip(&pair[1]).map(|(a, b)| (a - b).abs()).fold(0.0, f32::max))

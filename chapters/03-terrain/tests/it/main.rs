@@ -28,9 +28,7 @@ fn default_terrain() -> (&'static Gpu, Arc<TerrainData>) {
 
 /// The default terrain drawn with `shader` into a new texture of `target`'s
 /// size and format, cleared to `clear`: the patches chosen, and morphed,
-/// for `eye`, the picture taken from `camera`. With `draw` the caller may
-/// draw instead (it gets the pass, the renderer and the aimed viewpoint);
-/// without it, the renderer's own draw.
+/// for `eye`, the picture taken from `camera`.
 fn draw_terrain(
     shader: &ShaderFile,
     target: Target,
@@ -38,6 +36,22 @@ fn draw_terrain(
     (camera, eye): (&Camera, &Camera),
     detail: Detail,
 ) -> wgpu::Texture {
+    let views = [(*camera, *eye)];
+    pictures(shader, target, clear, &views, detail, |_, texture| texture.clone()).remove(0)
+}
+
+/// [`draw_terrain`] once for each of `views` (the camera the picture is
+/// taken from, and the eye the patches are chosen and morphed for), each
+/// picture read back by `read`. One renderer, pipeline and target for them
+/// all: a pipeline is the dear part of a small picture.
+fn pictures<T>(
+    shader: &ShaderFile,
+    target: Target,
+    clear: wgpu::Color,
+    views: &[(Camera, Camera)],
+    detail: Detail,
+    read: impl Fn(&Gpu, &wgpu::Texture) -> T,
+) -> Vec<T> {
     let (gpu, data) = default_terrain();
     let renderer = TerrainRenderer::new(gpu, data);
     let layout = gpu.device.create_pipeline_layout(&wgpu::PipelineLayoutDescriptor {
@@ -47,18 +61,29 @@ fn draw_terrain(
     });
     let pipeline = TerrainRenderer::pipeline(gpu, shader, &layout, (target.format, 1)).unwrap();
     let mut viewpoint = renderer.viewpoint(&gpu.device);
-    renderer.aim_seen_from(gpu, &mut viewpoint, eye, detail, Sun::AFTERNOON, KEEP_ALL, camera);
     let offscreen = Offscreen::new(&gpu.device, target);
     let depth = common::texture::depth_view(&gpu.device, target.width, target.height);
-    let mut encoder = gpu.device.create_command_encoder(&Default::default());
-    {
-        let mut pass =
-            common::pipeline::scene_pass(&mut encoder, &PassTimer::off(), "test", &offscreen.view, clear, &depth);
-        pass.set_pipeline(&pipeline);
-        renderer.draw(&mut pass, &viewpoint);
-    }
-    gpu.queue.submit([encoder.finish()]);
-    offscreen.texture
+    views
+        .iter()
+        .map(|(camera, eye)| {
+            renderer.aim_seen_from(gpu, &mut viewpoint, eye, detail, Sun::AFTERNOON, KEEP_ALL, camera);
+            let mut encoder = gpu.device.create_command_encoder(&Default::default());
+            {
+                let mut pass = common::pipeline::scene_pass(
+                    &mut encoder,
+                    &PassTimer::off(),
+                    "test",
+                    &offscreen.view,
+                    clear,
+                    &depth,
+                );
+                pass.set_pipeline(&pipeline);
+                renderer.draw(&mut pass, &viewpoint);
+            }
+            gpu.queue.submit([encoder.finish()]);
+            read(gpu, &offscreen.texture)
+        })
+        .collect()
 }
 
 /// `terrain.wgsl` with `replace` in place of `find` (which must be there).

@@ -9,6 +9,7 @@ use common::headless::{OFFSCREEN_FORMAT, Offscreen, capture, read_floats};
 use common::{Camera, Chapter, Gpu, Target, primitives, wgpu};
 use lighting::lights::{Daylight, daylight};
 use lighting::{HDR_FORMAT, Highlight, LoopOptions, SceneLights};
+use shadows::light_box::{SECTION_AT, SECTION_LIT_AT, through_box};
 use shadows::shadow_map::{self, Bias, Filter, ShadowMap, ShadowSettings, fit_light};
 use shadows::{ShadowedRenderer, ShadowsChapter, Show, game, scene};
 use textures::materials::{Materials, Uploader};
@@ -361,35 +362,16 @@ mod sun_box {
     pub const WIDTH_M: f32 = 45.0;
     /// The map's column both points of the shadow test's section land in.
     pub const SECTION_COLUMN: u32 = 901;
-    /// The shadow test's section (`diagrams/src/shadows.rs` draws it):
-    /// B on the ground at x = 25.6 m, A 5 m from it towards the sun. A's
-    /// depth in the map (its texel holds the same), what B's texel holds
-    /// (the third platform's top), and B's own depth.
-    pub const SECTION_AT: f32 = 25.6;
-    pub const LIT_AT: f32 = 5.0;
+    /// The shadow test's section (`light_box::SECTION_AT`, drawn by
+    /// `diagrams/src/shadows.rs`): A's depth in the map (its texel holds
+    /// the same), what B's texel holds (the third platform's top), and B's
+    /// own depth.
     pub const LIT_DEPTH: f32 = 0.2407;
     pub const BLOCKER_DEPTH: f32 = 0.2462;
     pub const SHADOWED_DEPTH: f32 = 0.2768;
     /// The depth in the map of the rock beside the player (the foot of the
     /// one at x = 28 m; the player stands at 31 m).
     pub const ROCK_DEPTH: f32 = 0.296;
-}
-
-/// Where the line `p + t·d` runs inside the box, as (t in, t out), if it does.
-fn through_box(p: Vec3, d: Vec3, (low, high): (Vec3, Vec3)) -> Option<(f32, f32)> {
-    let (mut enter, mut exit) = (f32::MIN, f32::MAX);
-    for axis in 0..3 {
-        if d[axis].abs() < 1e-9 {
-            if p[axis] < low[axis] || p[axis] > high[axis] {
-                return None;
-            }
-            continue;
-        }
-        let (a, b) = ((low[axis] - p[axis]) / d[axis], (high[axis] - p[axis]) / d[axis]);
-        enter = enter.max(a.min(b));
-        exit = exit.min(a.max(b));
-    }
-    (enter <= exit).then_some((enter, exit))
 }
 
 #[test]
@@ -455,8 +437,8 @@ fn the_sun_boxs_figures_on_the_pages_are_the_boxs_of_the_default_picture_and_the
     // The shadow test's section: A's ray meets no block before A; B's
     // meets the platform's top, 3.45 m nearer the sun.
     let along_ground = Vec3::new(towards_sun.x, 0.0, towards_sun.z).normalize();
-    let shadowed = Vec3::new(sun_box::SECTION_AT, 0.0, 0.0);
-    let lit = shadowed + along_ground * sun_box::LIT_AT;
+    let shadowed = Vec3::new(SECTION_AT, 0.0, 0.0);
+    let lit = shadowed + along_ground * SECTION_LIT_AT;
     let first_surface = |p: Vec3| {
         let t = level
             .blocks
