@@ -167,7 +167,24 @@ fn record<C: Chapter>(part: &'static Part, figure: &'static str, techniques: &'s
     }
 }
 
+/// The limits of a WebGL2 adapter as the book's pages meet it: WebGL2's
+/// guaranteed ones, with textures as large as the terrain's height map
+/// (4097 texels a side; desktop browsers give 8192 or more, WebGL2 only
+/// promises 2048).
+pub fn webgl2_limits() -> common::wgpu::Limits {
+    common::wgpu::Limits { max_texture_dimension_2d: 4097, ..common::wgpu::Limits::downlevel_webgl2_defaults() }
+}
+
 impl Record {
+    /// Whether the chapter draws on WebGL2: its needs are met by an adapter
+    /// with no optional feature, no downlevel capability and
+    /// [`webgl2_limits`]. (The browser test checks that those draw and the
+    /// others refuse by name.)
+    pub fn draws_on_webgl2(&self) -> bool {
+        let none = (common::wgpu::Features::empty(), common::wgpu::DownlevelFlags::empty());
+        (self.needs)().missing_on(none.0, none.1, &webgl2_limits()).is_empty()
+    }
+
     /// The first view that is a snapshot: the one the browser test and
     /// `bench web` show.
     pub fn first_snapshot_view(&self) -> Option<&'static View> {
