@@ -177,12 +177,53 @@ pub async fn window_instance(mut desc: wgpu::InstanceDescriptor) -> wgpu::Instan
     wgpu::Instance::new(desc)
 }
 
+/// The adapter's downlevel capabilities as a chapter can use them: what
+/// wgpu reports, less compute shaders on an OpenGL context older than 4.3
+/// (or OpenGL ES 3.1). wgpu counts compute there when the driver offers
+/// `GL_ARB_compute_shader` (Mesa does, under any version), but it writes
+/// GLSL for the context's own version, and GLSL 3.30 has no compute stage:
+/// the pipeline would fail to build ("selected version doesn't support
+/// COMPUTE_SHADER") where the chapter could have fallen back or refused.
+pub fn usable_downlevel(adapter: &wgpu::Adapter) -> wgpu::DownlevelCapabilities {
+    let mut capabilities = adapter.get_downlevel_capabilities();
+    let info = adapter.get_info();
+    if info.backend == wgpu::Backend::Gl && !gl_version_compiles_compute(&info.driver_info) {
+        capabilities.flags -= wgpu::DownlevelFlags::COMPUTE_SHADERS;
+    }
+    capabilities
+}
+
+/// Whether an OpenGL context whose `GL_VERSION` string is `version` (wgpu
+/// gives it as the adapter's `driver_info`) takes compute shaders in its
+/// own GLSL version: OpenGL 4.3 or OpenGL ES 3.1 and later. A string this
+/// cannot read is trusted to be what wgpu said.
+pub fn gl_version_compiles_compute(version: &str) -> bool {
+    // "4.6.0 NVIDIA 550.54", "3.3 (Core Profile) Mesa 24.2", "OpenGL ES 3.2
+    // Mesa 24.2", "WebGL 2.0 (OpenGL ES 3.0 Chromium)".
+    let (numbers, least) = match version.rfind(" ES ") {
+        Some(at) => (&version[at + 4..], (3, 1)),
+        None if version.starts_with("WebGL ") => return false,
+        None => (version, (4, 3)),
+    };
+    let mut parts = numbers.split(|c: char| !c.is_ascii_digit()).filter(|p| !p.is_empty());
+    match (parts.next().and_then(|p| p.parse::<u32>().ok()), parts.next().and_then(|p| p.parse::<u32>().ok())) {
+        (Some(major), Some(minor)) => (major, minor) >= least,
+        _ => true,
+    }
+}
+
 /// `COMPUTE_SHADERS, VERTEX_STORAGE`: flags by name, for a one-line message.
 fn names(flags: wgpu::DownlevelFlags) -> String {
     flags.iter_names().map(|(name, _)| name).collect::<Vec<_>>().join(", ")
 }
 
 impl Gpu {
+    /// What the adapter can do of what WebGPU takes for granted, as the
+    /// chapters may rely on it (see [`usable_downlevel`]).
+    pub fn downlevel(&self) -> wgpu::DownlevelCapabilities {
+        usable_downlevel(&self.adapter)
+    }
+
     /// A device with no window: for screenshots, benches and tests.
     ///
     /// `WGPU_BACKEND` (vulkan, gl, metal, dx12) picks the API. Without it
@@ -222,7 +263,7 @@ impl Gpu {
             .map_err(|e| NoAdapter::none(e.to_string()))?;
 
         let has = adapter.limits();
-        let missing = needs.missing_on(adapter.features(), adapter.get_downlevel_capabilities().flags, &has);
+        let missing = needs.missing_on(adapter.features(), usable_downlevel(&adapter).flags, &has);
         if !missing.is_empty() {
             let info = adapter.get_info();
             return Err(NoAdapter {
@@ -402,5 +443,34 @@ impl ShaderRegistry {
         let mut live = self.live.lock().unwrap_or_else(|e| e.into_inner());
         live.retain(|entry| entry.strong_count() > 0);
         live.iter().filter_map(Weak::upgrade).filter(|entry| changed.iter().any(|file| entry.uses(file))).collect()
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::gl_version_compiles_compute;
+
+    /// Compute shaders are core in OpenGL 4.3 and OpenGL ES 3.1 (the
+    /// Khronos specifications' version histories); WebGL2 has none. The
+    /// strings are as drivers write GL_VERSION.
+    #[test]
+    fn compute_is_counted_from_opengl_4_3_and_es_3_1() {
+        for (version, compute) in [
+            ("4.6.0 NVIDIA 550.54.14", true),
+            ("4.5 (Core Profile) Mesa 22.3.6", true),
+            ("4.3 (Core Profile) Mesa 22.3.6", true),
+            ("4.2 (Core Profile) Mesa 22.3.6", false),
+            ("3.3 (Core Profile) Mesa 22.3.6", false),
+            ("4.1 Metal - 88.1", false),
+            ("OpenGL ES 3.2 Mesa 22.3.6", true),
+            ("OpenGL ES 3.1 v1.r38p1", true),
+            ("OpenGL ES 3.0 Mesa 22.3.6", false),
+            ("WebGL 2.0 (OpenGL ES 3.0 Chromium)", false),
+            ("WebGL 2.0", false),
+            // Unreadable: wgpu's word stands.
+            ("unknown", true),
+        ] {
+            assert_eq!(gl_version_compiles_compute(version), compute, "{version}");
+        }
     }
 }

@@ -24,7 +24,7 @@ pub(crate) fn surface_config(
     // Chapters output linear colour and let an sRGB view encode it;
     // WebGPU canvases are never sRGB, but can be viewed as sRGB.
     let srgb = caps.formats.iter().copied().find(|f| f.is_srgb());
-    let views = gpu.adapter.get_downlevel_capabilities().flags.contains(wgpu::DownlevelFlags::SURFACE_VIEW_FORMATS);
+    let views = gpu.downlevel().flags.contains(wgpu::DownlevelFlags::SURFACE_VIEW_FORMATS);
     let (format, scene_format, overlay_format) = match srgb {
         // WebGL2 cannot view a surface in another format: the overlay
         // draws into the sRGB surface as it is (egui handles both).

@@ -1,8 +1,9 @@
 //! Every chapter in the course's records (`course::chapters()`), checked
 //! view by view: against its reference image, for purity (a live instance
 //! after every other view draws what a fresh one draws), and against its
-//! bench table; its first view once on OpenGL and once on a device with
-//! none of its optional features; then the checks on the records themselves: every chapter
+//! bench table; its first view once on OpenGL, once on OpenGL 3.3 (in a
+//! child process) and once on a device with none of its optional
+//! features; then the checks on the records themselves: every chapter
 //! crate has one, no reference is left over, every reference is in the
 //! bless log, the README and the book's summary follow them, and no
 //! chapter uses another's `Chapter` type.
@@ -13,8 +14,20 @@ use std::path::Path;
 use libtest_mimic::{Arguments, Failed, Trial};
 use snapshots::Snapshots as _;
 
+/// The flag a child of this harness is run with to draw one chapter on
+/// OpenGL 3.3 (see [`on_opengl_3_3`]).
+const OPENGL_3_3_CHILD: &str = "--opengl-3.3-child";
+
+/// The chapters that must draw on OpenGL 3.3, as on WebGL2; the others may
+/// refuse there in one line.
+const MUST_DRAW_ON_OPENGL_3_3: [&str; 2] = ["triangle", "camera"];
+
 fn main() {
     common::gpu::quiet_driver_warnings();
+    let args: Vec<String> = std::env::args().collect();
+    if args.get(1).map(String::as_str) == Some(OPENGL_3_3_CHILD) {
+        std::process::exit(opengl_3_3_child(args.get(2).map_or("", String::as_str)));
+    }
     let mut trials: Vec<Trial> = snapshots::chapters()
         .into_iter()
         .map(|entry| {
@@ -33,6 +46,12 @@ fn main() {
             Err(e) => Err(format!("{e:#}").into()),
         })
         .with_ignored_flag(no_opengl)
+    }));
+    // Every chapter once on OpenGL 3.3 (seed 001's Intel HD 4000): drawn,
+    // or refused in one line.
+    trials.extend(snapshots::chapters().into_iter().map(|entry| {
+        Trial::test(format!("opengl-3.3::{}", entry.name), move || on_opengl_3_3(entry.name).map_err(Failed::from))
+            .with_ignored_flag(no_opengl)
     }));
     // Every chapter once with none of its optional features: each fallback draws.
     trials.extend(snapshots::chapters().into_iter().map(|entry| {
@@ -199,4 +218,67 @@ fn rust_files(dir: &Path) -> std::io::Result<Vec<std::path::PathBuf>> {
         }
     }
     Ok(files)
+}
+
+/// `chapter`'s first view drawn on llvmpipe posing as an OpenGL 3.3 driver
+/// (`MESA_GL_VERSION_OVERRIDE=3.3`, GLSL 3.30: no compute stage, no
+/// storage buffers, no clip control), in a child process, since Mesa reads
+/// the override when it makes a context and this process already holds
+/// GL 4.5 ones. It must draw within the GL tolerance of the reference, or
+/// (except [`MUST_DRAW_ON_OPENGL_3_3`]) be refused in one line.
+fn on_opengl_3_3(chapter: &str) -> Result<(), String> {
+    let exe = std::env::current_exe().map_err(|e| e.to_string())?;
+    let output = std::process::Command::new(exe)
+        .args([OPENGL_3_3_CHILD, chapter])
+        .env("WGPU_BACKEND", "gl")
+        .env("MESA_GL_VERSION_OVERRIDE", "3.3")
+        .env("MESA_GLSL_VERSION_OVERRIDE", "330")
+        // Mesa still offers its 4.x extensions under the override; a real
+        // 3.3 driver has no compute. wgpu 30 takes GL_ARB_compute_shader
+        // for GLSL that binds by `layout(binding = …)` (its
+        // SHADER_BINDING_LAYOUT), which GLSL 3.30 cannot write, and every
+        // uniform block then reads binding 0 (chapter 02 drew sky only).
+        .env("MESA_EXTENSION_OVERRIDE", "-GL_ARB_compute_shader")
+        .output()
+        .map_err(|e| format!("cannot run the harness as a child: {e}"))?;
+    let (stdout, stderr) = (String::from_utf8_lossy(&output.stdout), String::from_utf8_lossy(&output.stderr));
+    if !output.status.success() {
+        return Err(format!("on OpenGL 3.3 ({}): {stdout}{stderr}", output.status));
+    }
+    let said = |prefix: &str| stdout.lines().find_map(|l| l.strip_prefix(prefix)).map(str::to_string);
+    let version = said("version: ").unwrap_or_default();
+    if !version.starts_with("3.3") {
+        return Err(format!("Mesa did not pose as OpenGL 3.3: the context is '{version}'"));
+    }
+    match (said("drawn: "), said("refused: ")) {
+        (Some(_), _) => Ok(()),
+        (None, Some(line)) if MUST_DRAW_ON_OPENGL_3_3.contains(&chapter) => {
+            Err(format!("{chapter} must draw on OpenGL 3.3, and was refused: {line}"))
+        }
+        (None, Some(line)) if line.contains("cannot do what this chapter needs") => Ok(()),
+        (None, Some(line)) => Err(format!("refused without naming what it lacks: {line}")),
+        (None, None) => Err(format!("the child said neither drawn nor refused: {stdout}{stderr}")),
+    }
+}
+
+/// The child's side of [`on_opengl_3_3`]: says the context's version, then
+/// draws (or is refused); the exit code is 1 when the picture is wrong.
+fn opengl_3_3_child(chapter: &str) -> i32 {
+    let Some(entry) = snapshots::chapters().into_iter().find(|e| e.name == chapter) else {
+        eprintln!("no chapter {chapter}");
+        return 1;
+    };
+    match common::Gpu::headless_on(common::wgpu::Backends::GL, common::GpuNeeds::default()) {
+        Ok(gpu) => println!("version: {}", gpu.adapter.get_info().driver_info),
+        Err(error) => println!("version: none ({error})"),
+    }
+    match snapshots::draw_on_gl(&entry) {
+        Ok(snapshots::OnGl::Drawn(comparison)) => println!("drawn: {comparison}"),
+        Ok(snapshots::OnGl::Refused(line)) => println!("refused: {line}"),
+        Err(error) => {
+            println!("{error:#}");
+            return 1;
+        }
+    }
+    0
 }

@@ -350,7 +350,7 @@ fn without_compute_shaders_the_plain_culls_by_chunk_and_says_which_capability_is
     assert!(!chapter.stats(gpu).contains("culled by chunk"));
 
     // The same plain on a device that lacks compute shaders.
-    let mut lacking = gpu.adapter.get_downlevel_capabilities();
+    let mut lacking = gpu.downlevel();
     lacking.flags -= wgpu::DownlevelFlags::COMPUTE_SHADERS;
     let terrain = terrain::TerrainData::get(gpu, TerrainSettings::default());
     chapter.plain = MarsPlain::with_capabilities(gpu, (OFFSCREEN_FORMAT, &[1]), terrain, &lacking).unwrap();

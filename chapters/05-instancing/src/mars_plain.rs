@@ -276,7 +276,7 @@ impl MarsPlain {
         samples: &[u32],
         terrain: Arc<TerrainData>,
     ) -> anyhow::Result<Self> {
-        Self::with_capabilities(gpu, (format, samples), terrain, &gpu.adapter.get_downlevel_capabilities())
+        Self::with_capabilities(gpu, (format, samples), terrain, &gpu.downlevel())
     }
 
     /// `new`, as if the device had only `downlevel`'s capabilities: a test

@@ -23,7 +23,7 @@ pub fn lights_per_pixel(
     // Copying a depth texture out is optional on downlevel backends (GL):
     // without it the figure is "n/a" rather than a wgpu validation panic.
     let copies = wgpu::DownlevelFlags::DEPTH_TEXTURE_AND_BUFFER_COPIES;
-    if !gpu.adapter.get_downlevel_capabilities().flags.contains(copies) {
+    if !gpu.downlevel().flags.contains(copies) {
         return None;
     }
     // One depth a pixel: `hdr` is of one sample (see `stats`).

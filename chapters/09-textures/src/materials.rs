@@ -155,7 +155,7 @@ pub fn upload(up: &mut Uploader, image: &RgbaImage, space: ColorSpace, label: &s
 /// Whether a texture's bytes can be viewed in another format; OpenGL and
 /// WebGL2 cannot ([`wgpu::DownlevelFlags::VIEW_FORMATS`]).
 fn can_view_as_other_formats(gpu: &Gpu) -> bool {
-    gpu.adapter.get_downlevel_capabilities().flags.contains(wgpu::DownlevelFlags::VIEW_FORMATS)
+    gpu.downlevel().flags.contains(wgpu::DownlevelFlags::VIEW_FORMATS)
 }
 
 /// Where a texture cannot be viewed in the other colour space: a copy of

@@ -113,8 +113,7 @@ impl TexturedRenderer {
             usage: wgpu::BufferUsages::STORAGE | wgpu::BufferUsages::COPY_DST,
             mapped_at_creation: false,
         });
-        let anisotropy =
-            gpu.adapter.get_downlevel_capabilities().flags.contains(wgpu::DownlevelFlags::ANISOTROPIC_FILTERING);
+        let anisotropy = gpu.downlevel().flags.contains(wgpu::DownlevelFlags::ANISOTROPIC_FILTERING);
         let sampler_groups = SamplerMode::ALL
             .iter()
             .map(|mode| {
