@@ -1038,11 +1038,7 @@ fn webgl2_outcomes(browser: &Browser, base: &str) -> anyhow::Result<String> {
         if WEBGL2_VIEWS.iter().any(|(chapter, _)| *chapter == entry.name) {
             continue;
         }
-        let missing = (entry.needs)().missing_on(
-            common::wgpu::Features::empty(),
-            common::wgpu::DownlevelFlags::empty(),
-            &course::webgl2_limits(),
-        );
+        let missing = entry.lacks_on_webgl2();
         let view = entry.first_snapshot_view().map_or("default", |v| v.name);
         let (width, height) = OUTCOME_SIZE;
         let query = format!("?view={view}&time={}&size={width}x{height}&backend=webgl2", entry.snapshot_time);

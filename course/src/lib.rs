@@ -181,8 +181,14 @@ impl Record {
     /// [`webgl2_limits`]. (The browser test checks that those draw and the
     /// others refuse by name.)
     pub fn draws_on_webgl2(&self) -> bool {
+        self.lacks_on_webgl2().is_empty()
+    }
+
+    /// What the chapter needs that such a WebGL2 adapter lacks, each named
+    /// as the chapter's refusal names it (`GpuNeeds::missing_on`).
+    pub fn lacks_on_webgl2(&self) -> Vec<String> {
         let none = (common::wgpu::Features::empty(), common::wgpu::DownlevelFlags::empty());
-        (self.needs)().missing_on(none.0, none.1, &webgl2_limits()).is_empty()
+        (self.needs)().missing_on(none.0, none.1, &webgl2_limits())
     }
 
     /// The first view that is a snapshot: the one the browser test and

@@ -34,14 +34,13 @@ fn a_2048_texel_adapter_refuses_the_terrain_chapters_by_name() {
 /// more of its limits than that the terrain fits.
 #[test]
 fn every_chapter_fits_webgpu_defaults_and_01_to_04_fit_webgl2() {
-    let webgl2 = wgpu::Limits { max_texture_dimension_2d: 4097, ..wgpu::Limits::downlevel_webgl2_defaults() };
     for record in snapshots::chapters() {
         let needs = (record.needs)();
         let on_webgpu = needs.missing_on(wgpu::Features::all(), wgpu::DownlevelFlags::all(), &wgpu::Limits::defaults());
         assert!(on_webgpu.is_empty(), "{} needs more than WebGPU's defaults: {on_webgpu:?}", record.name);
         if ["triangle", "camera", "terrain", "fog"].contains(&record.name) {
             // An adapter with no optional feature and no downlevel capability.
-            let on_webgl2 = needs.missing_on(wgpu::Features::empty(), wgpu::DownlevelFlags::empty(), &webgl2);
+            let on_webgl2 = record.lacks_on_webgl2();
             assert!(on_webgl2.is_empty(), "{} asks WebGL2 for {on_webgl2:?}", record.name);
         }
     }

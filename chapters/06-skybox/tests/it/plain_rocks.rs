@@ -8,11 +8,21 @@ use common::{Chapter, Target};
 use instancing::InstancingChapter;
 use skybox::SkyboxChapter;
 
+/// The last word of `text` read as a number, commas allowed (`line` is
+/// where it came from, for the message).
+fn last_number(text: &str, line: &str) -> u64 {
+    let number = text.rsplit(' ').next().unwrap_or_default();
+    number.replace(',', "").parse().unwrap_or_else(|_| panic!("`{number}` in `{line}`"))
+}
+
+/// The text of a stats line before `phrase`.
+fn before<'a>(line: &'a str, phrase: &str) -> &'a str {
+    &line[..line.find(phrase).unwrap_or_else(|| panic!("no{phrase} in `{line}`"))]
+}
+
 /// The number before " rock triangles" in a stats line.
 fn rock_triangles(line: &str) -> u64 {
-    let before = &line[..line.find(" rock triangles").unwrap_or_else(|| panic!("no rock triangles in `{line}`"))];
-    let number = before.rsplit(' ').next().unwrap_or_default();
-    number.replace(',', "").parse().unwrap_or_else(|_| panic!("`{number}` in `{line}`"))
+    last_number(before(line, " rock triangles"), line)
 }
 
 #[test]
@@ -40,11 +50,8 @@ fn the_day_draws_the_rock_triangles_of_chapter_05s_default_view() {
 }
 
 /// The rocks drawn in a stats line: the number before "of … rocks drawn".
-fn rocks_drawn(line: &str) -> u32 {
-    let before = &line[..line.find(" rocks drawn").unwrap_or_else(|| panic!("no rocks drawn in `{line}`"))];
-    let drawn = before.rsplit(" of ").nth(1).unwrap_or_default();
-    let number = drawn.rsplit(' ').next().unwrap_or_default();
-    number.replace(',', "").parse().unwrap_or_else(|_| panic!("`{number}` in `{line}`"))
+fn rocks_drawn(line: &str) -> u64 {
+    last_number(before(line, " rocks drawn").rsplit(" of ").nth(1).unwrap_or_default(), line)
 }
 
 #[test]
@@ -74,6 +81,6 @@ fn the_full_detail_line_counts_the_rocks_its_chunks_drew() {
     let chunks = plain.plain.rocks_drawn_now(gpu, plain.viewpoint(), plain.setup);
     eprintln!("chapter 05's full-detail: {chunks:?}; chapter 06: {line}");
     assert!(chunks.levels.is_none() && chunks.rocks > 0, "culled by chunk: {chunks:?}");
-    assert_eq!(rocks_drawn(&line), chunks.rocks, "{line}");
+    assert_eq!(rocks_drawn(&line), u64::from(chunks.rocks), "{line}");
     assert_eq!(rock_triangles(&line), chunks.triangles, "{line}");
 }
