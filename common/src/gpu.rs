@@ -89,7 +89,7 @@ impl GpuNeeds {
 
 /// Instance flags for `backends`: without wgpu's validation of indirect
 /// draws where OpenGL may be chosen. That validation runs a compute shader
-/// that an OpenGL 3.3 driver (seed 001's Intel HD 4000) cannot build, and
+/// that an OpenGL 3.3 driver cannot build, and
 /// the device is lost before the first frame (wgpu issue #8799); the
 /// course's indirect arguments are written by its own compute pass, whose
 /// counts chapter 05's tests check.

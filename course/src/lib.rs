@@ -96,8 +96,9 @@ static ENGINE: Part = Part { title: "The small engine", opening: Some(("The engi
 static OCEAN: Part = Part { title: "The ocean", opening: Some(("The ocean project", "part-ocean.md")) };
 
 /// The pages after the last chapter, as (title, file in `book/src/`).
-pub const APPENDICES: [(&str, &str); 5] = [
+pub const APPENDICES: [(&str, &str); 6] = [
     ("Appendix: Running in the browser", "running-in-the-browser.md"),
+    ("Appendix: On a Mac, on Windows and on older OpenGL", "other-systems.md"),
     ("Appendix: Change it and see it change", "shader-panel.md"),
     ("Appendix: The browser, measured", "browser-numbers.md"),
     ("Appendix: Frame rates, the seeds' and ours", "frame-rates.md"),

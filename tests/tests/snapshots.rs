@@ -47,7 +47,7 @@ fn main() {
         })
         .with_ignored_flag(no_opengl)
     }));
-    // Every chapter once on OpenGL 3.3 (seed 001's Intel HD 4000): drawn,
+    // Every chapter once on an OpenGL 3.3 driver: drawn,
     // or refused in one line.
     trials.extend(snapshots::chapters().into_iter().map(|entry| {
         Trial::test(format!("opengl-3.3::{}", entry.name), move || on_opengl_3_3(entry.name).map_err(Failed::from))
