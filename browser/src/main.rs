@@ -46,6 +46,9 @@ const HEIGHT: u32 = snapshots::HEIGHT;
 /// frame of chapter 07 in seconds, and two pages share its one GPU process:
 /// generous, since only a failing test waits this long.
 const STEP: Duration = Duration::from_secs(300);
+/// How long a page may take to be parsed before it is opened again, once
+/// (see `ChapterPage::open`): the book's pages parse in a second or two.
+const RELOAD_AFTER: Duration = Duration::from_secs(60);
 
 /// The flags that give headless Chromium a WebGPU adapter with no GPU
 /// (SwiftShader's Vulkan), measured on Debian 12 with Chromium 156, and
@@ -197,16 +200,40 @@ impl ChapterPage {
         // quiet, which Chromium decides only once the page's thread is
         // idle, so it would sleep through a chapter's whole preparation.
         let deadline = Instant::now() + STEP;
+        let mut reload_at = Some(Instant::now() + RELOAD_AFTER);
         let parsed = format!("location.href === {} && document.readyState !== 'loading'", serde_json::json!(url));
         while page.eval(&parsed).ok() != Some(serde_json::Value::Bool(true)) {
+            // A page whose parsing stalls on a script that never arrives
+            // (chapter 11's first lesson did in some full runs of the test,
+            // and loaded at once in others) is opened again once, and said
+            // so, with what had not arrived.
+            if reload_at.is_some_and(|at| Instant::now() >= at) {
+                reload_at = None;
+                println!("browser: {url} still loading after {RELOAD_AFTER:?} ({}); opening it again", page.pending());
+                page.tab.navigate_to(url).map_err(|e| anyhow::anyhow!("navigating to {url} again: {e}"))?;
+            }
             if Instant::now() >= deadline {
-                // Where it got to, for whoever reads the failure.
                 let at = page.eval("location.href + ' ' + document.readyState");
-                bail!("{url} did not load within {STEP:?} (the tab is at {at:?})");
+                bail!("{url} did not load within {STEP:?} (the tab is at {at:?}; {})", page.pending());
             }
             std::thread::sleep(Duration::from_millis(50));
         }
         Ok(page)
+    }
+
+    /// Which of the page's scripts, pictures and style sheets have not
+    /// arrived, for whoever reads why it did not load.
+    fn pending(&self) -> String {
+        let pending = self.eval(
+            "(() => { const done = new Set(performance.getEntriesByType('resource').map(e => e.name)); \
+             return [...document.querySelectorAll('script[src], img[src], link[rel=stylesheet]')] \
+             .map(e => e.src || e.href).filter(u => !done.has(u)).join(' ') })()",
+        );
+        match pending {
+            Ok(serde_json::Value::String(list)) if !list.is_empty() => format!("not arrived: {list}"),
+            Ok(_) => "everything it names has arrived".into(),
+            Err(error) => format!("cannot ask what arrived: {error:#}"),
+        }
     }
 
     fn eval(&self, expression: &str) -> anyhow::Result<serde_json::Value> {

@@ -222,7 +222,7 @@ fn rust_files(dir: &Path) -> std::io::Result<Vec<std::path::PathBuf>> {
 
 /// `chapter`'s first view drawn on llvmpipe posing as an OpenGL 3.3 driver
 /// (`MESA_GL_VERSION_OVERRIDE=3.3`, GLSL 3.30: no compute stage, no
-/// storage buffers, no clip control), in a child process, since Mesa reads
+/// storage buffers), in a child process, since Mesa reads
 /// the override when it makes a context and this process already holds
 /// GL 4.5 ones. It must draw within the GL tolerance of the reference, or
 /// (except [`MUST_DRAW_ON_OPENGL_3_3`]) be refused in one line.
@@ -264,7 +264,7 @@ fn on_opengl_3_3(chapter: &str) -> Result<(), String> {
 /// The child's side of [`on_opengl_3_3`]: says the context's version, then
 /// draws (or is refused); the exit code is 1 when the picture is wrong.
 fn opengl_3_3_child(chapter: &str) -> i32 {
-    let Some(entry) = snapshots::chapters().into_iter().find(|e| e.name == chapter) else {
+    let Some(entry) = snapshots::find(chapter) else {
         eprintln!("no chapter {chapter}");
         return 1;
     };
