@@ -16,14 +16,19 @@
 //! This file uses nothing but `std`: `cargo xtask`, which links no GPU
 //! crate, compiles it too (`#[path]`), so the bounds are written once.
 
-/// Frames memory is watched over, at least.
-pub const WATCHED_FRAMES: u64 = 60;
+/// Frames memory is watched over, at least. Thirty: the live heap and
+/// the GPU's buffers and textures are counted exactly, so a leak of the
+/// bound a frame moves them by 240 KB over the watch; only the resident
+/// set jitters, and the stretches below take care of that. (Sixty, until
+/// 2026-11-29: the watch was then 60% of the window test's frames, and on
+/// a software rasteriser a chapter 07 frame takes a second.)
+pub const WATCHED_FRAMES: u64 = 30;
 
-/// Stretches the watched frames are cut into: each at least ten frames, and
-/// enough that two one-off steps still leave the median on a quiet one.
+/// Stretches the watched frames are cut into: enough that two one-off
+/// steps still leave the median on a quiet one.
 pub const STRETCHES: usize = 6;
 
-/// Frames in a stretch, however many frames are watched.
+/// Frames in a stretch, however many frames are watched: five.
 pub const STRETCH_FRAMES: u64 = WATCHED_FRAMES / STRETCHES as u64;
 
 /// Frames watched more when the first [`WATCHED_FRAMES`] judge a leak, cut
@@ -33,9 +38,10 @@ pub const STRETCH_FRAMES: u64 = WATCHED_FRAMES / STRETCHES as u64;
 /// 2026-11-28: chapter 11's resident set rose by 0.3, 0.16 and 0.4 MB in
 /// three steps of a few frames each (one across an edge), on a run of the
 /// window test beside another chapter's, and its median read 8.8 KB a frame
-/// while every run of it alone reads 0. Sixty frames more are twelve
-/// stretches, which those steps cannot move; a steady leak raises them all.
-pub const MORE_WATCHED_FRAMES: u64 = 60;
+/// while every run of it alone reads 0. The frames watched more make
+/// twelve stretches, which those steps cannot move; a steady leak raises
+/// them all.
+pub const MORE_WATCHED_FRAMES: u64 = WATCHED_FRAMES;
 
 /// Resize and minimise cycles the window test runs: a state left stuck by
 /// one shows by the second, and the median of three growths ignores a
@@ -146,64 +152,80 @@ pub fn growth_per_cycle(readings: &[u64]) -> Option<f64> {
 mod tests {
     use super::*;
 
-    /// 61 readings, frame 100 to 160, `bytes(frame)` each.
+    /// One stretch, in frames.
+    const S: u64 = STRETCH_FRAMES;
+
+    /// A reading every frame from frame 100 over [`WATCHED_FRAMES`] frames
+    /// and `more` frames more, `bytes(frame)` each.
+    fn watched_more(more: u64, bytes: impl Fn(u64) -> f64) -> Vec<Reading> {
+        (100..=100 + WATCHED_FRAMES + more).map(|f| (f, bytes(f).round() as u64)).collect()
+    }
+
     fn watched(bytes: impl Fn(u64) -> f64) -> Vec<Reading> {
-        (100..=160).map(|f| (f, bytes(f).round() as u64)).collect()
+        watched_more(0, bytes)
     }
 
     #[test]
     fn a_steady_leak_is_its_slope_whatever_the_steps_and_the_jitter() {
-        // 16 KB a frame, two one-off steps of 30 MB, and jitter of ±200 KB.
-        let jitter = |f: u64| if f.is_multiple_of(2) { 200e3 } else { -200e3 };
-        let step = |f: u64| if f >= 117 { 30e6 } else { 0.0 } + if f >= 148 { 30e6 } else { 0.0 };
+        // 16 KB a frame, two one-off steps of 30 MB (inside the second
+        // stretch and the fifth), and jitter of ±200 KB that repeats every
+        // stretch.
+        let jitter = |f: u64| if (f - 100).is_multiple_of(S) { 200e3 } else { -200e3 };
+        let step = |f: u64| if f >= 100 + S + 2 { 30e6 } else { 0.0 } + if f >= 100 + 4 * S + 3 { 30e6 } else { 0.0 };
         let leak = watched(|f| 500e6 + 16384.0 * (f - 100) as f64 + step(f) + jitter(f));
         let growth = growth_per_frame(&leak).unwrap();
-        // Each stretch runs 10 frames between two readings of the same
-        // jitter's sign: the jitter cancels, the steps stay in theirs.
+        // Each stretch runs between two readings of the same jitter: it
+        // cancels, and the steps stay in theirs.
         assert!((growth - 16384.0).abs() < 1.0, "{growth}");
         assert!(growth > LEAK_BOUND);
     }
 
     #[test]
     fn one_off_steps_and_jitter_are_not_a_leak() {
-        // Pages of 4 KB taken and given back, up to 48 KB, with no trend.
-        let noise = |f: u64| ((f * 7919) % 13) as f64 * 4096.0;
-        let steps =
-            watched(|f| 400e6 + if f >= 125 { 36e6 } else { 0.0 } + if f >= 141 { 9e6 } else { 0.0 } + noise(f));
+        // Pages of 4 KB taken and given back, up to 16 KB, with no trend
+        // (a stretch's slope then errs by at most 16 KB over five frames,
+        // under the bound), and two steps of 36 MB and 9 MB.
+        let noise = |f: u64| ((f * 7919) % 5) as f64 * 4096.0;
+        let steps = watched(|f| {
+            400e6 + if f > 100 + 2 * S { 36e6 } else { 0.0 } + if f >= 100 + 4 * S + 2 { 9e6 } else { 0.0 } + noise(f)
+        });
         let growth = growth_per_frame(&steps).unwrap();
         assert!(growth.abs() <= LEAK_BOUND, "{growth}");
         // The minimum of the stretches would hide a leak under one quiet
         // stretch: the median does not.
         let mut quiet_once = watched(|f| 16384.0 * (f - 100) as f64);
-        for reading in quiet_once.iter_mut().filter(|(f, _)| (130..=140).contains(f)) {
-            reading.1 = 16384 * 30;
+        let (from, to) = (100 + 3 * S, 100 + 4 * S);
+        for reading in quiet_once.iter_mut().filter(|(f, _)| (from..=to).contains(f)) {
+            reading.1 = 16384 * (from - 100);
         }
         assert!(growth_per_frame(&quiet_once).unwrap() > LEAK_BOUND);
     }
 
     #[test]
     fn steps_across_stretch_edges_need_the_longer_watch_and_a_leak_fails_it_too() {
-        // Stretches of frames 100..110, 110..120, ...: a 400 KB step spread
-        // over frames 129 to 131 raises the third and fourth, one of 400 KB
-        // at frame 146 the fifth; three of six is enough to move the median.
-        let steps = |f: u64| (f.clamp(129, 131) - 129) as f64 * 200e3 + if f >= 146 { 400e3 } else { 0.0 };
-        let sixty = watched(|f| 300e6 + steps(f));
-        let judged = growth_per_frame(&sixty).unwrap();
+        // A 400 KB step spread over the three frames around the edge between
+        // the third stretch and the fourth raises both, and one of 400 KB
+        // inside the fifth raises that one: three of six is enough to move
+        // the median.
+        let edge = 100 + 3 * S;
+        let steps =
+            |f: u64| (f.clamp(edge - 1, edge + 1) - (edge - 1)) as f64 * 200e3 + if f > edge + S { 400e3 } else { 0.0 };
+        let six = watched(|f| 300e6 + steps(f));
+        let judged = growth_per_frame(&six).unwrap();
         assert!(judged > LEAK_BOUND, "the median of six: {judged}");
-        let longer = |bytes: &dyn Fn(u64) -> f64| -> Vec<Reading> {
-            (100..=160 + MORE_WATCHED_FRAMES).map(|f| (f, bytes(f).round() as u64)).collect()
-        };
-        let quiet = growth_per_frame(&longer(&|f| 300e6 + steps(f))).unwrap();
+        let quiet = growth_per_frame(&watched_more(MORE_WATCHED_FRAMES, |f| 300e6 + steps(f))).unwrap();
         assert_eq!(quiet, 0.0, "twelve stretches, three raised");
         // A leak just over the bound, with the same steps, stays one.
-        let leaking = growth_per_frame(&longer(&|f| 300e6 + steps(f) + 8500.0 * (f - 100) as f64)).unwrap();
+        let leaking =
+            growth_per_frame(&watched_more(MORE_WATCHED_FRAMES, |f| 300e6 + steps(f) + 8500.0 * (f - 100) as f64))
+                .unwrap();
         assert!(leaking > LEAK_BOUND, "{leaking}");
     }
 
     #[test]
     fn too_few_frames_say_nothing() {
         let short: Vec<Reading> = (0..WATCHED_FRAMES).map(|f| (f, 1000 * f)).collect();
-        assert_eq!(growth_per_frame(&short), None, "59 frames apart");
+        assert_eq!(growth_per_frame(&short), None, "one frame short of the watch");
         let mut enough = short.clone();
         enough.push((WATCHED_FRAMES, 1000 * WATCHED_FRAMES));
         assert_eq!(growth_per_frame(&enough), Some(1000.0));

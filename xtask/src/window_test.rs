@@ -4,7 +4,7 @@
 //! window through 1×1 and back, minimises and restores it (three times
 //! each), drags with the mouse and checks that the camera turned, holds a
 //! key and clicks the overlay and checks that the camera stops once the key
-//! is let go, watches memory over 60 frames, then closes the window with
+//! is let go, watches memory over `leak::WATCHED_FRAMES` frames, then closes the window with
 //! Esc. One chapter runs once more with the shader panel open
 //! (`drive_panel`). Any panic, wgpu validation error, non-zero exit, frame
 //! that never comes, or memory that grows frame after frame or cycle after
