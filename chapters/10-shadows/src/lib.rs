@@ -16,6 +16,9 @@ pub mod shadow_map;
 pub mod shadowed_renderer;
 // The sun's box: fitted to what the camera sees, snapped to texels.
 pub mod light_box;
+// Cascades: the view cut by distance, a map for each slice (for scenes
+// kilometres deep).
+pub mod cascades;
 // The lantern's cube shadow map: six faces, compared by distance.
 pub mod point_shadow;
 // The game: boxes that fall, slide and stop against other boxes,

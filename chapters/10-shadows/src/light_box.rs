@@ -47,13 +47,29 @@ pub struct LightBox {
 /// texel always covers the same ground. And the box moves only in whole
 /// texels, so every texel edge stays where it was on the ground.
 pub fn fit_light(towards_sun: Vec3, focus: &[Vec3], caster_bounds: (Vec3, Vec3), size: u32) -> LightBox {
-    let up = if towards_sun.y.abs() > 0.99 { Vec3::Z } else { Vec3::Y };
-    // A rotation only: light space is world space turned to face the sun.
-    let rotation = Mat4::look_to_rh(Vec3::ZERO, -towards_sun, up);
     let (low, high) = focus.iter().fold((Vec3::MAX, Vec3::MIN), |(lo, hi), p| (lo.min(*p), hi.max(*p)));
     let centre = (low + high) / 2.0;
     let reach = focus.iter().map(|p| p.distance(centre)).fold(0.0, f32::max);
     let radius = (reach * 2.0).ceil() / 2.0;
+    fit_sphere(towards_sun, (centre, radius), focus, caster_bounds, size)
+}
+
+/// The sun's box around a sphere (`centre`, `radius`) for a map of `size`
+/// texels: as wide as the sphere, moved only in whole texels, and as deep
+/// as every caster in `caster_bounds` and every point in `receivers`
+/// (what the box must shade). [`fit_light`] puts a sphere around what the
+/// camera sees; each cascade of [`crate::cascades`] puts one around its
+/// slice of the view.
+pub fn fit_sphere(
+    towards_sun: Vec3,
+    (centre, radius): (Vec3, f32),
+    receivers: &[Vec3],
+    caster_bounds: (Vec3, Vec3),
+    size: u32,
+) -> LightBox {
+    let up = if towards_sun.y.abs() > 0.99 { Vec3::Z } else { Vec3::Y };
+    // A rotation only: light space is world space turned to face the sun.
+    let rotation = Mat4::look_to_rh(Vec3::ZERO, -towards_sun, up);
     let texel = 2.0 * radius / size as f32;
     let middle = rotation.transform_point3(centre);
     let snap = |v: f32| (v / texel).round() * texel;
@@ -67,7 +83,7 @@ pub fn fit_light(towards_sun: Vec3, focus: &[Vec3], caster_bounds: (Vec3, Vec3),
             if i & 4 == 0 { cl.z } else { ch.z },
         )
     });
-    let distances = corners.chain(focus.iter().copied()).map(|p| -rotation.transform_point3(p).z);
+    let distances = corners.chain(receivers.iter().copied()).map(|p| -rotation.transform_point3(p).z);
     let (near, far) = distances.fold((f32::MAX, f32::MIN), |(n, f), d| (n.min(d), f.max(d)));
     let (near, far) = (near - 1.0, far + 1.0);
     let projection = Mat4::orthographic_rh(x - radius, x + radius, y - radius, y + radius, near, far);
