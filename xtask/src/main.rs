@@ -120,16 +120,43 @@ fn quiet_env() -> Vec<(String, String)> {
 /// environment (what `cargo clippy` itself passes).
 const LINTS_AS_ERRORS: &str = "-D__CLIPPY_HACKERY__warnings__CLIPPY_HACKERY__";
 
+/// The CPU time, in seconds, of every program this process has run and
+/// waited for, and theirs (user and system time, from `/proc/self/stat`):
+/// what `cargo xtask test`'s steps cost the machine, beside how long they
+/// took. `None` where there is no `/proc` (macOS, Windows).
+fn children_cpu_seconds() -> Option<f64> {
+    cpu_of_waited_children(&std::fs::read_to_string("/proc/self/stat").ok()?)
+}
+
+/// The `cutime` and `cstime` fields of a `/proc/PID/stat` line, in seconds:
+/// fields 16 and 17, counted after the program's name in parentheses
+/// (which may hold spaces and parentheses itself), in the kernel's
+/// `USER_HZ` ticks, 100 a second on Linux (proc(5)).
+fn cpu_of_waited_children(stat: &str) -> Option<f64> {
+    let after_name = &stat[stat.rfind(')')? + 1..];
+    let fields: Vec<&str> = after_name.split_whitespace().collect();
+    // `after_name` starts at field 3, the state.
+    let ticks = |field: usize| fields.get(field - 3)?.parse::<u64>().ok();
+    Some((ticks(16)? + ticks(17)?) as f64 / 100.0)
+}
+
 fn test() -> anyhow::Result<()> {
     let started = std::time::Instant::now();
     let mut times: Vec<(&str, f64)> = Vec::new();
     let mut step = |name: &'static str, run: &dyn Fn() -> anyhow::Result<()>| -> anyhow::Result<()> {
         let begun = std::time::Instant::now();
+        let cpu_before = children_cpu_seconds();
         let result = run();
         times.push((name, begun.elapsed().as_secs_f64()));
         let so_far: Vec<String> = times.iter().map(|(n, s)| format!("{n} {s:.0} s")).collect();
+        // What the step cost the machine: on two cores, twice its wall time
+        // means both were busy throughout.
+        let cpu = match (cpu_before, children_cpu_seconds()) {
+            (Some(before), Some(after)) => format!(", {:.0} s of CPU", after - before),
+            _ => String::new(),
+        };
         println!(
-            "\nxtask test: {name} {} after {:.0} s ({})",
+            "\nxtask test: {name} {} after {:.0} s{cpu} ({})",
             if result.is_ok() { "passed" } else { "FAILED" },
             begun.elapsed().as_secs_f64(),
             so_far.join(", ")
@@ -188,7 +215,8 @@ fn test() -> anyhow::Result<()> {
     if runs(&plan.browser) {
         step("browser", &|| web::browser_test(&[]))?;
     }
-    println!("\nxtask test: all checks passed in {:.0} s", started.elapsed().as_secs_f64());
+    let cpu = children_cpu_seconds().map_or(String::new(), |cpu| format!(", {cpu:.0} s of CPU"));
+    println!("\nxtask test: all checks passed in {:.0} s{cpu}", started.elapsed().as_secs_f64());
     for line in plan.skipped() {
         println!("xtask test: {line}");
     }
@@ -451,6 +479,25 @@ fn bench(args: &[String]) -> anyhow::Result<()> {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// The fields are found after the name whatever the name holds, and a
+    /// child that burns CPU shows in the count once it has been waited for
+    /// (measured the other way: the shell's loop takes a tenth of a second
+    /// or more on these machines).
+    #[test]
+    fn the_cpu_of_waited_children_is_counted() {
+        let line = "4242 (odd) name) S 1 4242 4242 0 -1 4194560 100 200 0 0 7 3 250 125 20 0 1 0 99 0 0";
+        assert_eq!(cpu_of_waited_children(line), Some(3.75));
+        assert_eq!(cpu_of_waited_children("4242 (cut"), None);
+        let Some(before) = children_cpu_seconds() else { return };
+        let status = Command::new("sh")
+            .args(["-c", "i=0; while [ $i -lt 300000 ]; do i=$((i+1)); done"])
+            .status()
+            .expect("sh runs");
+        assert!(status.success());
+        let after = children_cpu_seconds().expect("read before, so readable after");
+        assert!(after - before >= 0.1, "{before} s then {after} s");
+    }
 
     /// The GPU tables in the book are what `cargo xtask bench saved` makes
     /// of the raw files kept beside them: made again into a temporary
