@@ -117,13 +117,21 @@ impl Args {
     pub fn parse_from_for<C: Chapter>(
         args: impl IntoIterator<Item = impl Into<std::ffi::OsString> + Clone>,
     ) -> Result<Self, clap::Error> {
-        let names: Vec<&'static str> = C::VIEWS.iter().map(|v| v.name).collect();
+        Self::parse_from_of(&crate::chapter::About::of::<C>(), args)
+    }
+
+    /// [`Args::parse_from_for`], whatever the chapter's type.
+    pub fn parse_from_of(
+        about: &crate::chapter::About,
+        args: impl IntoIterator<Item = impl Into<std::ffi::OsString> + Clone>,
+    ) -> Result<Self, clap::Error> {
+        let names: Vec<&'static str> = about.views.iter().map(|v| v.name).collect();
         let mut command = Self::command()
-            .name(C::NAME)
-            .about(format!("{}: opens a window; with --screenshot or --bench, renders headless.", C::TITLE))
+            .name(about.name)
+            .about(format!("{}: opens a window; with --screenshot or --bench, renders headless.", about.title))
             .mut_arg("view", |arg| arg.value_parser(clap::builder::PossibleValuesParser::new(names)))
-            .mut_arg("antialiasing", |arg| arg.value_parser(antialiasing_parser(C::POST_ANTIALIASING)));
-        for flag in C::FLAGS {
+            .mut_arg("antialiasing", |arg| arg.value_parser(antialiasing_parser(about.post_antialiasing)));
+        for flag in about.flags {
             let arg = clap::Arg::new(flag.name).long(flag.name).help(flag.help);
             command = command.arg(if flag.is_switch() {
                 arg.action(clap::ArgAction::SetTrue)
@@ -133,7 +141,7 @@ impl Args {
         }
         let matches = command.try_get_matches_from(args)?;
         let mut parsed = Self::from_arg_matches(&matches)?;
-        for flag in C::FLAGS {
+        for flag in about.flags {
             if flag.is_switch() {
                 if matches.get_flag(flag.name) {
                     parsed.chapter_flags.0.push((flag.name, "true".into()));
@@ -147,7 +155,12 @@ impl Args {
 
     /// Index of the chosen view (0 when none was given).
     pub fn view_index<C: Chapter>(&self) -> usize {
-        self.view.as_deref().and_then(crate::chapter::view_index::<C>).unwrap_or(0)
+        self.view_index_in(C::VIEWS)
+    }
+
+    /// [`Args::view_index`] among `views`.
+    pub fn view_index_in(&self, views: &[crate::View]) -> usize {
+        self.view.as_deref().and_then(|name| views.iter().position(|v| v.name == name)).unwrap_or(0)
     }
 }
 

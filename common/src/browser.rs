@@ -18,8 +18,9 @@ use anyhow::Context as _;
 use wasm_bindgen::JsCast as _;
 
 use crate::args::{Args, check_size};
+use crate::chapter::About;
 use crate::web::{self, canvas, note_backend, prepare, set_state, show_error};
-use crate::{Chapter, Gpu, PassTimer, Target};
+use crate::{Gpu, PassTimer, Target};
 
 /// The URL parameters a chapter page understands.
 const PARAMETERS: &[&str] = &["view", "time", "size", "camera", "antialiasing", "backend", "edit", "at"];
@@ -29,12 +30,13 @@ thread_local! {
     static KEPT: RefCell<Vec<Box<dyn std::any::Any>>> = const { RefCell::new(Vec::new()) };
 }
 
-/// Runs chapter `C` in the page: what `common::run` does in a browser.
-pub fn run<C: Chapter>() -> ExitCode {
+/// Runs the chapter `about` tells of in the page: what `common::run` does
+/// in a browser.
+pub fn run(about: About) -> ExitCode {
     web::show_panics();
     let _ = console_log::init_with_level(log::Level::Warn);
     set_state("status", "starting");
-    let (args, picture) = match page_args::<C>() {
+    let (args, picture) = match page_args(&about) {
         Ok(parsed) => parsed,
         Err(message) => {
             show_error(&message);
@@ -43,12 +45,12 @@ pub fn run<C: Chapter>() -> ExitCode {
     };
     if picture {
         wasm_bindgen_futures::spawn_local(async move {
-            match still_picture::<C>(&args).await {
+            match still_picture(&about, &args).await {
                 Ok(()) => set_state("status", "picture"),
                 Err(error) => show_error(&format!("{error:#}")),
             }
         });
-    } else if let Err(error) = crate::window::spawn::<C>(&args) {
+    } else if let Err(error) = crate::window::spawn(about, &args) {
         show_error(&format!("{error:#}"));
     }
     // The page has no exit code: errors are shown in it.
@@ -59,11 +61,11 @@ pub fn run<C: Chapter>() -> ExitCode {
 /// Reads the page's URL into the flags a chapter binary takes, so that a
 /// bad value gets the same message as a bad flag. True when a `time` was
 /// given: then the page shows a still picture.
-fn page_args<C: Chapter>() -> Result<(Args, bool), String> {
+fn page_args(about: &About) -> Result<(Args, bool), String> {
     let search = web_sys::window().and_then(|w| w.location().search().ok()).unwrap_or_default();
     let params =
         web_sys::UrlSearchParams::new_with_str(&search).map_err(|_| format!("cannot read the URL {search}"))?;
-    let mut flags = vec![C::NAME.to_string()];
+    let mut flags = vec![about.name.to_string()];
     let mut unknown = Vec::new();
     let mut picture = false;
     let mut at = None;
@@ -94,7 +96,7 @@ fn page_args<C: Chapter>() -> Result<(Args, bool), String> {
         log::warn!("{notice}");
         web::set_notice(notice);
     }
-    let args = Args::parse_from_for::<C>(&flags).map_err(|error| {
+    let args = Args::parse_from_of(about, &flags).map_err(|error| {
         let text = error.to_string();
         let text = text.lines().filter(|l| !l.contains("--help")).collect::<Vec<_>>().join("\n");
         format!("bad URL parameter in {search}: {}", text.trim().trim_start_matches("error: ").replace("'--", "'"))
@@ -107,7 +109,7 @@ fn page_args<C: Chapter>() -> Result<(Args, bool), String> {
 // ANCHOR: still
 /// What `--screenshot` does, into the canvas: the chapter made at the
 /// picture's size, switched to the view, one frame at the given time.
-async fn still_picture<C: Chapter>(args: &Args) -> anyhow::Result<()> {
+async fn still_picture(about: &About, args: &Args) -> anyhow::Result<()> {
     let canvas = canvas()?;
     let (width, height) = (args.size.width, args.size.height);
     canvas.set_width(width);
@@ -125,27 +127,35 @@ async fn still_picture<C: Chapter>(args: &Args) -> anyhow::Result<()> {
     let instance = crate::gpu::window_instance(desc).await;
     let surface =
         instance.create_surface(wgpu::SurfaceTarget::Canvas(canvas)).context("cannot draw into the canvas")?;
-    let gpu = Gpu::open(instance, Some(&surface), C::gpu_needs()).await?;
+    let gpu = Gpu::open(instance, Some(&surface), (about.gpu_needs)()).await?;
     note_backend(&gpu);
     check_size(&gpu, args.size)?;
-    let prepared = prepare::<C>(&gpu).await;
+    let prepared = prepare(&gpu, (about.prepare)(&gpu)).await;
     let (config, scene_format, _) = crate::surface::surface_config(&gpu, &surface, width, height)?;
     surface.configure(&gpu.device, &config);
 
-    let view = args.view_index::<C>();
-    let time = args.time.unwrap_or(C::SNAPSHOT_TIME);
-    let target = Target { format: scene_format, width, height, samples: C::VIEWS[view].samples(args.antialiasing) };
-    let mut chapter = crate::chapter::create_prepared::<C>(&gpu, target, prepared, &args.chapter_flags)?;
-    crate::chapter::start(&mut chapter, view, args.camera)?;
+    let view = args.view_index_in(about.views);
+    let time = args.time.unwrap_or(about.snapshot_time);
+    let samples = about.views[view].samples(args.antialiasing);
+    let target = Target { format: scene_format, width, height, samples };
+    let mut chapter = about.create_prepared(&gpu, target, prepared, &args.chapter_flags)?;
+    crate::chapter::start(chapter.as_mut(), view, args.camera)?;
     let frame = match surface.get_current_texture() {
         wgpu::CurrentSurfaceTexture::Success(frame) | wgpu::CurrentSurfaceTexture::Suboptimal(frame) => frame,
         other => anyhow::bail!("the canvas gave no texture to draw into ({other:?})"),
     };
     let frame_view =
         frame.texture.create_view(&wgpu::TextureViewDescriptor { format: Some(scene_format), ..Default::default() });
-    crate::headless::draw_frame(&gpu, &mut chapter, &frame_view, (time, view), args.antialiasing, &PassTimer::off());
+    crate::headless::draw_frame(
+        &gpu,
+        chapter.as_mut(),
+        &frame_view,
+        (time, view),
+        args.antialiasing,
+        &PassTimer::off(),
+    );
     gpu.queue.present(frame);
-    log::info!("{} {} at {time} s on {}", C::NAME, C::VIEWS[view].name, gpu.describe());
+    log::info!("{} {} at {time} s on {}", about.name, about.views[view].name, gpu.describe());
     set_state("adapter", &gpu.describe());
     // Dropping the device could blank the canvas: the page keeps them.
     KEPT.with(|kept| {

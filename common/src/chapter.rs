@@ -416,6 +416,138 @@ pub trait Chapter: Sized + 'static {
     }
 }
 
+// ANCHOR: about
+/// What a chapter has made by [`Chapter::prepare`], whatever its type.
+pub type Prepared = Box<dyn std::any::Any>;
+
+/// A chapter's constants and the two functions that make one, as values:
+/// the runners (the window, the page, the headless picture, the bench)
+/// take an `About` and a [`Runnable`], so that they are compiled once in
+/// `common` for every chapter, not once more in every chapter's binary.
+/// [`About::of`] reads them from a [`Chapter`].
+#[derive(Clone, Copy)]
+pub struct About {
+    pub name: &'static str,
+    pub title: &'static str,
+    pub views: &'static [View],
+    pub snapshot_time: f32,
+    pub bench_frames: u32,
+    pub bench_baseline: Option<&'static str>,
+    pub main_shader: Option<&'static str>,
+    pub post_antialiasing: bool,
+    pub keys: &'static [(&'static str, &'static str)],
+    pub flags: &'static [ChapterFlag],
+    pub gpu_needs: fn() -> GpuNeeds,
+    pub view_settings: fn(usize) -> String,
+    /// [`Chapter::prepare`], its result boxed.
+    pub prepare: fn(&Gpu) -> Preparation<Prepared>,
+    /// [`Chapter::new`] from what `prepare` made.
+    pub make: fn(&Gpu, Target, Prepared) -> anyhow::Result<Box<dyn Runnable>>,
+}
+
+impl About {
+    pub fn of<C: Chapter>() -> Self {
+        Self {
+            name: C::NAME,
+            title: C::TITLE,
+            views: C::VIEWS,
+            snapshot_time: C::SNAPSHOT_TIME,
+            bench_frames: C::BENCH_FRAMES,
+            bench_baseline: C::BENCH_BASELINE,
+            main_shader: C::MAIN_SHADER,
+            post_antialiasing: C::POST_ANTIALIASING,
+            keys: C::KEYS,
+            flags: C::FLAGS,
+            gpu_needs: C::gpu_needs,
+            view_settings: C::view_settings,
+            prepare: |gpu| C::prepare(gpu).map(|prepared| Box::new(prepared) as Prepared),
+            make: |gpu, target, prepared| {
+                let prepared = prepared
+                    .downcast::<C::Prepared>()
+                    .map_err(|_| anyhow::anyhow!("{}: what was prepared is not what the chapter prepares", C::NAME))?;
+                Ok(Box::new(C::new(gpu, target, *prepared)?))
+            },
+        }
+    }
+
+    /// Looks a view up by name.
+    pub fn view_index(&self, name: &str) -> Option<usize> {
+        self.views.iter().position(|v| v.name == name)
+    }
+
+    /// [`create`], whatever the chapter's type.
+    pub fn create(&self, gpu: &Gpu, target: Target, flags: &FlagValues) -> anyhow::Result<Box<dyn Runnable>> {
+        self.create_prepared(gpu, target, (self.prepare)(gpu).finish(gpu), flags)
+    }
+
+    /// [`create_prepared`], whatever the chapter's type.
+    pub fn create_prepared(
+        &self,
+        gpu: &Gpu,
+        target: Target,
+        prepared: Prepared,
+        flags: &FlagValues,
+    ) -> anyhow::Result<Box<dyn Runnable>> {
+        let mut chapter = (self.make)(gpu, target, prepared)?;
+        chapter.apply_flags(gpu, flags)?;
+        Ok(chapter)
+    }
+}
+
+/// What the runners ask of a chapter instance, whatever its type: the
+/// methods of [`Chapter`] that take `self`, and its [`About`]. Every
+/// chapter is one.
+pub trait Runnable {
+    fn about(&self) -> About;
+    fn apply_flags(&mut self, gpu: &Gpu, flags: &FlagValues) -> anyhow::Result<()>;
+    fn resize(&mut self, gpu: &Gpu, target: Target);
+    fn select_view(&mut self, view: usize);
+    fn reset_camera(&mut self, view: usize);
+    fn camera_mut(&mut self) -> Option<&mut Camera>;
+    fn before_first_frame(&mut self, camera_placed: bool);
+    fn update(&mut self, input: &Input, dt: f32);
+    fn render(&mut self, gpu: &Gpu, frame: &mut Frame);
+    fn ui(&mut self, ui: &mut egui::Ui);
+    fn stats(&mut self, gpu: &Gpu) -> String;
+}
+
+impl<C: Chapter> Runnable for C {
+    fn about(&self) -> About {
+        About::of::<C>()
+    }
+    fn apply_flags(&mut self, gpu: &Gpu, flags: &FlagValues) -> anyhow::Result<()> {
+        Chapter::apply_flags(self, gpu, flags)
+    }
+    fn resize(&mut self, gpu: &Gpu, target: Target) {
+        Chapter::resize(self, gpu, target);
+    }
+    fn select_view(&mut self, view: usize) {
+        Chapter::select_view(self, view);
+    }
+    fn reset_camera(&mut self, view: usize) {
+        Chapter::reset_camera(self, view);
+    }
+    fn camera_mut(&mut self) -> Option<&mut Camera> {
+        Chapter::camera_mut(self)
+    }
+    fn before_first_frame(&mut self, camera_placed: bool) {
+        Chapter::before_first_frame(self, camera_placed);
+    }
+    fn update(&mut self, input: &Input, dt: f32) {
+        Chapter::update(self, input, dt);
+    }
+    fn render(&mut self, gpu: &Gpu, frame: &mut Frame) {
+        Chapter::render(self, gpu, frame);
+    }
+    fn ui(&mut self, ui: &mut egui::Ui) {
+        Chapter::ui(self, ui);
+    }
+    fn stats(&mut self, gpu: &Gpu) -> String {
+        Chapter::stats(self, gpu)
+    }
+}
+// ANCHOR_END: about
+
 /// Creates chapter `C` for `target` and gives it its flags: how every
 /// runner (window, screenshot, bench) makes one. Runs `C::prepare` in one
 /// go first.
@@ -431,7 +563,7 @@ pub fn create_prepared<C: Chapter>(
     flags: &FlagValues,
 ) -> anyhow::Result<C> {
     let mut chapter = C::new(gpu, target, prepared)?;
-    chapter.apply_flags(gpu, flags)?;
+    Chapter::apply_flags(&mut chapter, gpu, flags)?;
     Ok(chapter)
 }
 
@@ -439,13 +571,13 @@ pub fn create_prepared<C: Chapter>(
 /// runner: `view` (its settings, and a preset's camera), then `camera`
 /// (`--camera`) over it, then [`Chapter::before_first_frame`]. A chapter
 /// with no camera refuses `--camera`.
-pub fn start<C: Chapter>(chapter: &mut C, view: usize, camera: Option<CameraPlace>) -> Result<(), UsageError> {
+pub fn start(chapter: &mut dyn Runnable, view: usize, camera: Option<CameraPlace>) -> Result<(), UsageError> {
     chapter.select_view(view);
     if let Some(place) = camera {
+        let name = chapter.about().name;
         let camera = chapter.camera_mut().ok_or_else(|| {
             UsageError(format!(
-                "--camera {place}: the {} chapter has no camera to place (it draws from a fixed or following viewpoint)",
-                C::NAME
+                "--camera {place}: the {name} chapter has no camera to place (it draws from a fixed or following viewpoint)"
             ))
         })?;
         place.put(camera);

@@ -9,6 +9,7 @@ use anyhow::Context as _;
 use crate::Chapter;
 #[cfg(not(target_arch = "wasm32"))]
 use crate::args::{Args, UsageError, check_size, check_writable};
+use crate::chapter::About;
 #[cfg(not(target_arch = "wasm32"))]
 use crate::headless::{self, RenderRequest};
 #[cfg(not(target_arch = "wasm32"))]
@@ -18,18 +19,24 @@ use crate::{Gpu, NoAdapter, Stats};
 /// this one call. Errors print as one line and a non-zero exit code, never
 /// a panic: 2 for bad flags and a missing adapter, 1 for anything else.
 pub fn run<C: Chapter>() -> ExitCode {
+    run_chapter(About::of::<C>())
+}
+
+/// [`run`], whatever the chapter's type: the runners below are compiled
+/// once, here, rather than once for each chapter's binary.
+pub fn run_chapter(about: About) -> ExitCode {
     // In a browser the page's URL is the command line.
     #[cfg(target_arch = "wasm32")]
-    return crate::browser::run::<C>();
+    return crate::browser::run(about);
     #[cfg(not(target_arch = "wasm32"))]
-    run_native::<C>()
+    run_native(about)
 }
 
 #[cfg(not(target_arch = "wasm32"))]
-fn run_native<C: Chapter>() -> ExitCode {
+fn run_native(about: About) -> ExitCode {
     crate::gpu::quiet_driver_warnings();
     env_logger::Builder::from_env(env_logger::Env::default().default_filter_or("warn")).init();
-    let args = match Args::parse_for::<C>() {
+    let args = match Args::parse_from_of(&about, std::env::args_os()) {
         Ok(args) => args,
         Err(error) => error.exit(),
     };
@@ -37,15 +44,18 @@ fn run_native<C: Chapter>() -> ExitCode {
         use std::io::Write as _;
         // `--list-views | head -1` closes the pipe early: stop quietly then.
         let mut out = std::io::stdout().lock();
-        for view in C::VIEWS {
+        for view in about.views {
             if writeln!(out, "{:<14} {}", view.name, view.about).is_err() {
                 break;
             }
         }
         return ExitCode::SUCCESS;
     }
-    let result =
-        if args.screenshot.is_some() || args.bench { run_headless::<C>(&args) } else { crate::window::run::<C>(&args) };
+    let result = if args.screenshot.is_some() || args.bench {
+        run_headless(&about, &args)
+    } else {
+        crate::window::run(about, &args)
+    };
     match result {
         Ok(()) => ExitCode::SUCCESS,
         Err(error) => {
@@ -57,18 +67,18 @@ fn run_native<C: Chapter>() -> ExitCode {
 }
 
 #[cfg(not(target_arch = "wasm32"))]
-fn run_headless<C: Chapter>(args: &Args) -> anyhow::Result<()> {
+fn run_headless(about: &About, args: &Args) -> anyhow::Result<()> {
     if let Some(path) = &args.screenshot {
         check_writable(path)?;
     }
-    let mut needs = C::gpu_needs();
+    let mut needs = (about.gpu_needs)();
     if args.bench {
         // GPU pass times, where the adapter can measure them.
         needs.optional |= wgpu::Features::TIMESTAMP_QUERY;
     }
     let gpu = Gpu::headless(needs)?;
     check_size(&gpu, args.size)?;
-    let time = args.time.unwrap_or(C::SNAPSHOT_TIME);
+    let time = args.time.unwrap_or(about.snapshot_time);
     let request = |view| RenderRequest {
         width: args.size.width,
         height: args.size.height,
@@ -79,19 +89,20 @@ fn run_headless<C: Chapter>(args: &Args) -> anyhow::Result<()> {
     };
 
     if let Some(path) = &args.screenshot {
-        let image = headless::render_image_with::<C>(&gpu, &request(args.view_index::<C>()), &args.chapter_flags)?;
+        let shot = request(args.view_index_in(about.views));
+        let image = headless::render_image_of(about, &gpu, &shot, &args.chapter_flags)?;
         image.save(path).with_context(|| format!("cannot write {}", path.display()))?;
         println!("{}", path.display());
     }
     if args.bench {
         let views: Vec<usize> = match &args.view {
-            Some(_) => vec![args.view_index::<C>()],
-            None => (0..C::VIEWS.len()).collect(),
+            Some(_) => vec![args.view_index_in(about.views)],
+            None => (0..about.views.len()).collect(),
         };
-        let frames = args.frames.unwrap_or(C::BENCH_FRAMES);
+        let frames = args.frames.unwrap_or(about.bench_frames);
         println!(
             "{} on {}, {}x{}, {frames} frames per view",
-            C::NAME,
+            about.name,
             gpu.describe(),
             args.size.width,
             args.size.height
@@ -108,8 +119,8 @@ fn run_headless<C: Chapter>(args: &Args) -> anyhow::Result<()> {
         let mut triangles = Vec::new();
         let mut frames_timed = Vec::new();
         for view in views {
-            let report = headless::bench::<C>(&gpu, &request(view), frames, &args.chapter_flags)?;
-            let fingerprint = headless::fingerprint::<C>(&gpu, view, &args.chapter_flags)?;
+            let report = headless::bench_of(about, &gpu, &request(view), frames, &args.chapter_flags)?;
+            let fingerprint = headless::fingerprint_of(about, &gpu, view, &args.chapter_flags)?;
             let frame = fingerprint.id();
             medians.push((report.view, report.frame.median));
             row(report.view, "frame (CPU+GPU)", report.frame, &frame);
@@ -126,7 +137,7 @@ fn run_headless<C: Chapter>(args: &Args) -> anyhow::Result<()> {
             triangles.extend(report.drawn.iter().map(|count| (report.view, *count)));
         }
         if args.view.is_none() {
-            let (file, edit) = headless::edit_to_frame::<C>(&gpu, &request(0), 5, &args.chapter_flags)?;
+            let (file, edit) = headless::edit_to_frame_of(about, &gpu, &request(0), 5, &args.chapter_flags)?;
             notes.push(format!(
                 "- a shader edit to the frame that shows it (`{file}`, 5 edits built with Ctrl+Enter): \
                  median {:.0} ms (min {:.0}, p95 {:.0})",
@@ -138,7 +149,7 @@ fn run_headless<C: Chapter>(args: &Args) -> anyhow::Result<()> {
             print_triangles(&triangles);
         }
         println!("\n{}", crate::fingerprint::frames_section(&frames_timed));
-        let baseline = C::BENCH_BASELINE.and_then(|name| medians.iter().find(|(view, _)| *view == name));
+        let baseline = about.bench_baseline.and_then(|name| medians.iter().find(|(view, _)| *view == name));
         if let Some(&(name, base)) = baseline {
             println!("\nEach view's median frame against `{name}`'s:\n");
             println!("| view | median frame ms | × `{name}` |");

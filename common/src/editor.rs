@@ -378,12 +378,18 @@ pub fn absorb_saved(
 /// `shaders/NAME/scene.wgsl`, else the first of its own files that is not
 /// a module, else its first file.
 pub fn main_file<C: crate::Chapter>(gpu: &Gpu) -> Option<&'static str> {
+    main_file_of(&crate::chapter::About::of::<C>(), gpu)
+}
+
+/// [`main_file`], whatever the chapter's type.
+pub fn main_file_of(about: &crate::chapter::About, gpu: &Gpu) -> Option<&'static str> {
     let files = gpu.shader_files();
     let named = |path: &str| files.iter().find(|file| file.path == path).map(|file| file.path);
-    let own = format!("{}/", C::NAME);
-    C::MAIN_SHADER
+    let own = format!("{}/", about.name);
+    about
+        .main_shader
         .and_then(named)
-        .or_else(|| named(&format!("{own}{}.wgsl", C::NAME)))
+        .or_else(|| named(&format!("{own}{}.wgsl", about.name)))
         .or_else(|| named(&format!("{own}scene.wgsl")))
         .or_else(|| {
             let mut own_files = files.iter().filter(|file| file.path.starts_with(&own));

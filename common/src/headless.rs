@@ -6,10 +6,10 @@ use web_time::Instant;
 
 use anyhow::{Context as _, bail};
 
-use crate::chapter::FlagValues;
+use crate::chapter::{About, FlagValues, Runnable};
 use crate::fingerprint::Fingerprint;
 use crate::memory::{Growth, MemoryUse};
-use crate::{Antialiasing, CameraPlace, Chapter, DrawCounts, Frame, Gpu, PassCount, PassTimer, Stats, Target};
+use crate::{Antialiasing, CameraPlace, Chapter, DrawCounts, Frame, Gpu, PassCount, PassTimer, Stats, Target, View};
 
 /// Offscreen pictures are 8-bit RGBA with sRGB encoding, like a PNG.
 pub const OFFSCREEN_FORMAT: wgpu::TextureFormat = wgpu::TextureFormat::Rgba8UnormSrgb;
@@ -31,7 +31,12 @@ impl RenderRequest {
     /// The offscreen target for this request: its size, and the samples a
     /// pixel its view is drawn with (its own, or `antialiasing`'s).
     pub fn target<C: Chapter>(&self) -> Target {
-        let samples = smoothing::<C>(self.view, self.antialiasing).samples();
+        self.target_in(C::VIEWS)
+    }
+
+    /// [`RenderRequest::target`] for a chapter with `views`.
+    pub fn target_in(&self, views: &[View]) -> Target {
+        let samples = smoothing(views, self.view, self.antialiasing).samples();
         Target { format: OFFSCREEN_FORMAT, width: self.width, height: self.height, samples }
     }
 }
@@ -174,26 +179,28 @@ pub fn read_texture(gpu: &Gpu, texture: &wgpu::Texture) -> anyhow::Result<image:
 }
 // ANCHOR_END: readback
 
-/// How view `view` of `C` smooths edges where the run asks for `asked`
-/// (its own setting, if it has one); `asked` for an index past the views.
-fn smoothing<C: Chapter>(view: usize, asked: Antialiasing) -> Antialiasing {
-    C::VIEWS.get(view).map_or(asked, |v| v.smoothing(asked))
+/// How view `view` of a chapter with `views` smooths edges where the run
+/// asks for `asked` (its own setting, if it has one); `asked` for an index
+/// past the views.
+fn smoothing(views: &[View], view: usize, asked: Antialiasing) -> Antialiasing {
+    views.get(view).map_or(asked, |v| v.smoothing(asked))
 }
 
 /// Records and submits one frame of `chapter` into `target`, its edges
 /// smoothed as the view says or else as `asked`; returns what each pass
 /// drew, as the chapter counted it.
-pub fn draw_frame<C: Chapter>(
+pub fn draw_frame(
     gpu: &Gpu,
-    chapter: &mut C,
+    chapter: &mut dyn Runnable,
     target: &wgpu::TextureView,
     (time, view): (f32, usize),
     asked: Antialiasing,
     timer: &PassTimer,
 ) -> Vec<PassCount> {
-    let mut encoder = gpu.device.create_command_encoder(&wgpu::CommandEncoderDescriptor { label: Some(C::NAME) });
+    let about = chapter.about();
+    let mut encoder = gpu.device.create_command_encoder(&wgpu::CommandEncoderDescriptor { label: Some(about.name) });
     let drawn = DrawCounts::new();
-    let antialiasing = smoothing::<C>(view, asked);
+    let antialiasing = smoothing(about.views, view, asked);
     chapter.render(gpu, &mut Frame { encoder: &mut encoder, target, time, view, timer, drawn: &drawn, antialiasing });
     timer.resolve(&mut encoder);
     gpu.queue.submit([encoder.finish()]);
@@ -201,9 +208,9 @@ pub fn draw_frame<C: Chapter>(
 }
 
 /// Renders one picture of an existing chapter instance at its target size.
-pub fn capture<C: Chapter>(
+pub fn capture(
     gpu: &Gpu,
-    chapter: &mut C,
+    chapter: &mut dyn Runnable,
     target: Target,
     (time, view): (f32, usize),
     asked: Antialiasing,
@@ -222,6 +229,18 @@ pub fn started<C: Chapter>(gpu: &Gpu, request: &RenderRequest, flags: &FlagValue
     Ok(chapter)
 }
 
+/// [`started`], whatever the chapter's type.
+pub fn started_of(
+    about: &About,
+    gpu: &Gpu,
+    request: &RenderRequest,
+    flags: &FlagValues,
+) -> anyhow::Result<Box<dyn Runnable>> {
+    let mut chapter = about.create(gpu, request.target_in(about.views), flags)?;
+    crate::chapter::start(chapter.as_mut(), request.view, request.camera)?;
+    Ok(chapter)
+}
+
 /// Creates the chapter offscreen and renders one picture.
 pub fn render_image<C: Chapter>(gpu: &Gpu, request: &RenderRequest) -> anyhow::Result<image::RgbaImage> {
     render_image_with::<C>(gpu, request, &FlagValues::default())
@@ -233,9 +252,19 @@ pub fn render_image_with<C: Chapter>(
     request: &RenderRequest,
     flags: &FlagValues,
 ) -> anyhow::Result<image::RgbaImage> {
-    let target = request.target::<C>();
-    let mut chapter = started::<C>(gpu, request, flags)?;
-    capture(gpu, &mut chapter, target, (request.time, request.view), request.antialiasing)
+    render_image_of(&About::of::<C>(), gpu, request, flags)
+}
+
+/// [`render_image_with`], whatever the chapter's type.
+pub fn render_image_of(
+    about: &About,
+    gpu: &Gpu,
+    request: &RenderRequest,
+    flags: &FlagValues,
+) -> anyhow::Result<image::RgbaImage> {
+    let mut chapter = started_of(about, gpu, request, flags)?;
+    let target = request.target_in(about.views);
+    capture(gpu, chapter.as_mut(), target, (request.time, request.view), request.antialiasing)
 }
 
 /// Frame-time figures for one chapter view.
@@ -270,11 +299,22 @@ pub fn bench<C: Chapter>(
     frames: u32,
     flags: &FlagValues,
 ) -> anyhow::Result<BenchReport> {
-    let target = request.target::<C>();
+    bench_of(&About::of::<C>(), gpu, request, frames, flags)
+}
+
+/// [`bench`], whatever the chapter's type.
+pub fn bench_of(
+    about: &About,
+    gpu: &Gpu,
+    request: &RenderRequest,
+    frames: u32,
+    flags: &FlagValues,
+) -> anyhow::Result<BenchReport> {
+    let target = request.target_in(about.views);
     let setup = Instant::now();
-    let mut chapter = crate::chapter::create::<C>(gpu, target, flags)?;
+    let mut chapter = about.create(gpu, target, flags)?;
     let setup_ms = setup.elapsed().as_secs_f64() * 1e3;
-    crate::chapter::start(&mut chapter, request.view, request.camera)?;
+    crate::chapter::start(chapter.as_mut(), request.view, request.camera)?;
     let offscreen = Offscreen::new(&gpu.device, target);
     let timer = PassTimer::new(&gpu.device, 16);
 
@@ -293,8 +333,14 @@ pub fn bench<C: Chapter>(
             memory[k] = MemoryUse::now(&gpu.device);
         }
         let start = Instant::now();
-        drawn =
-            draw_frame(gpu, &mut chapter, &offscreen.view, (request.time, request.view), request.antialiasing, &timer);
+        drawn = draw_frame(
+            gpu,
+            chapter.as_mut(),
+            &offscreen.view,
+            (request.time, request.view),
+            request.antialiasing,
+            &timer,
+        );
         gpu.device.poll(wgpu::PollType::wait_indefinitely()).context("waiting for the frame")?;
         let elapsed = start.elapsed().as_secs_f64() * 1e3;
         let timed = timer.read(gpu);
@@ -320,7 +366,7 @@ pub fn bench<C: Chapter>(
         series.into_iter().filter_map(|(l, s)| Some((l, Stats::of(&s)?))).collect()
     };
     Ok(BenchReport {
-        view: C::VIEWS[request.view].name,
+        view: about.views[request.view].name,
         width: request.width,
         height: request.height,
         frame: Stats::of(&wall).context("no frames measured")?,
@@ -338,20 +384,31 @@ pub fn bench<C: Chapter>(
 /// the snapshot test draws it, and its passes counted; a bench view's
 /// from its settings and samples alone.
 pub fn fingerprint<C: Chapter>(gpu: &Gpu, view: usize, flags: &FlagValues) -> anyhow::Result<Fingerprint> {
-    let shown = &C::VIEWS[view];
+    fingerprint_of(&About::of::<C>(), gpu, view, flags)
+}
+
+/// [`fingerprint`], whatever the chapter's type.
+pub fn fingerprint_of(about: &About, gpu: &Gpu, view: usize, flags: &FlagValues) -> anyhow::Result<Fingerprint> {
+    let shown = &about.views[view];
     let samples = shown.samples(Antialiasing::default());
-    let settings = C::view_settings(view);
+    let settings = (about.view_settings)(view);
     if !shown.snapshot {
         return Ok(Fingerprint::new(settings, samples, &[]));
     }
     let (width, height) = crate::fingerprint::SIZE;
     let target = Target { format: OFFSCREEN_FORMAT, width, height, samples };
-    let mut chapter = crate::chapter::create::<C>(gpu, target, flags)?;
-    crate::chapter::start(&mut chapter, view, None)?;
+    let mut chapter = about.create(gpu, target, flags)?;
+    crate::chapter::start(chapter.as_mut(), view, None)?;
     let offscreen = Offscreen::new(&gpu.device, target);
     let timer = PassTimer::off();
-    let counted =
-        draw_frame(gpu, &mut chapter, &offscreen.view, (C::SNAPSHOT_TIME, view), Antialiasing::default(), &timer);
+    let counted = draw_frame(
+        gpu,
+        chapter.as_mut(),
+        &offscreen.view,
+        (about.snapshot_time, view),
+        Antialiasing::default(),
+        &timer,
+    );
     gpu.device.poll(wgpu::PollType::wait_indefinitely()).context("waiting for the frame")?;
     Ok(Fingerprint::new(settings, samples, &counted))
 }
@@ -369,10 +426,21 @@ pub fn edit_to_frame<C: Chapter>(
     edits: usize,
     flags: &FlagValues,
 ) -> anyhow::Result<(&'static str, Stats)> {
-    let target = request.target::<C>();
-    let mut chapter = started::<C>(gpu, request, flags)?;
+    edit_to_frame_of(&About::of::<C>(), gpu, request, edits, flags)
+}
+
+/// [`edit_to_frame`], whatever the chapter's type.
+pub fn edit_to_frame_of(
+    about: &About,
+    gpu: &Gpu,
+    request: &RenderRequest,
+    edits: usize,
+    flags: &FlagValues,
+) -> anyhow::Result<(&'static str, Stats)> {
+    let target = request.target_in(about.views);
+    let mut chapter = started_of(about, gpu, request, flags)?;
     let offscreen = Offscreen::new(&gpu.device, target);
-    let file = crate::editor::main_file::<C>(gpu).context("the chapter builds no pipeline from WGSL")?;
+    let file = crate::editor::main_file_of(about, gpu).context("the chapter builds no pipeline from WGSL")?;
     let mut editor = crate::editor::ShaderEditor::new();
     editor.open_on(gpu, file, None)?;
     let original = editor.text().unwrap_or_default().to_string();
@@ -387,7 +455,7 @@ pub fn edit_to_frame<C: Chapter>(
         }
         draw_frame(
             gpu,
-            &mut chapter,
+            chapter.as_mut(),
             &offscreen.view,
             (request.time, request.view),
             request.antialiasing,

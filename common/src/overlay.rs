@@ -6,9 +6,10 @@ use std::collections::VecDeque;
 
 use winit::window::Window;
 
+use crate::chapter::{About, Runnable};
 use crate::draw_counts::{thousands, total};
 use crate::memory::MemoryUse;
-use crate::{CameraPlace, Chapter, Gpu, PassCount};
+use crate::{CameraPlace, Gpu, PassCount};
 
 /// Keys the window runner handles for every chapter (its `window_event`),
 /// as the key help lists them after the chapter's own.
@@ -176,8 +177,10 @@ fn triangle_lines(ui: &mut egui::Ui, drawn: &[PassCount]) {
 }
 
 /// The overlay's panel: what it shows and edits, borrowed for one frame.
-pub struct Panel<'a, C: Chapter> {
-    pub chapter: &'a mut C,
+pub struct Panel<'a> {
+    /// The chapter's constants: its title, views and keys.
+    pub about: &'a About,
+    pub chapter: &'a mut dyn Runnable,
     pub view: &'a mut usize,
     pub time: &'a mut f32,
     pub paused: &'a mut bool,
@@ -197,18 +200,18 @@ pub struct Panel<'a, C: Chapter> {
     pub can_multisample: bool,
 }
 
-impl<C: Chapter> Panel<'_, C> {
+impl Panel<'_> {
     /// The anti-aliasing switch: one sample a pixel or multisampling
     /// (chapter 02), and in chapters with a post chain the post-process
     /// pass, alone or after multisampling (chapter 08). Switching the
     /// samples makes the chapter again, since pipelines are built for one
     /// number of samples; switching the post pass does not.
     fn antialiasing_switch(&mut self, ui: &mut egui::Ui) {
-        let view = C::VIEWS[*self.view];
+        let view = self.about.views[*self.view];
         ui.horizontal(|ui| {
             ui.label("edges:");
             ui.add_enabled_ui(view.antialiasing.is_none(), |ui| {
-                for choice in crate::Antialiasing::offered(C::POST_ANTIALIASING) {
+                for choice in crate::Antialiasing::offered(self.about.post_antialiasing) {
                     let about = if choice.samples() == self.antialiasing.samples() {
                         "the post-process pass switches from one frame to the next"
                     } else {
@@ -231,7 +234,8 @@ impl<C: Chapter> Panel<'_, C> {
     /// was clicked.
     pub fn show(&mut self, ctx: &egui::Context) -> bool {
         let mut toggle_shaders = false;
-        egui::Window::new(C::TITLE).default_pos([12.0, 12.0]).default_width(260.0).show(ctx, |ui| {
+        let about = self.about;
+        egui::Window::new(about.title).default_pos([12.0, 12.0]).default_width(260.0).show(ctx, |ui| {
             // Scene time is an input like any other: type or drag it.
             ui.horizontal(|ui| {
                 ui.label("time");
@@ -244,15 +248,15 @@ impl<C: Chapter> Panel<'_, C> {
             ui.small(format!("memory: {}", self.memory.describe()))
                 .on_hover_text("read twice a second; it should not grow while nothing changes");
             let before = *self.view;
-            egui::ComboBox::from_label("view").selected_text(C::VIEWS[*self.view].name).show_ui(ui, |ui| {
-                for (i, view) in C::VIEWS.iter().enumerate() {
+            egui::ComboBox::from_label("view").selected_text(about.views[*self.view].name).show_ui(ui, |ui| {
+                for (i, view) in about.views.iter().enumerate() {
                     ui.selectable_value(self.view, i, view.name).on_hover_text(view.about);
                 }
             });
             if *self.view != before {
                 self.chapter.select_view(*self.view);
             }
-            ui.small(C::VIEWS[*self.view].about);
+            ui.small(about.views[*self.view].about);
             self.antialiasing_switch(ui);
             triangle_lines(ui, self.drawn);
             if let Some(camera) = self.chapter.camera_mut() {
@@ -295,7 +299,7 @@ impl<C: Chapter> Panel<'_, C> {
         });
         egui::Window::new("Keys").open(self.show_help).default_pos([300.0, 12.0]).show(ctx, |ui| {
             egui::Grid::new("keys").striped(true).show(ui, |ui| {
-                for (key, what) in C::KEYS.iter().chain(RUNNER_KEYS) {
+                for (key, what) in about.keys.iter().chain(RUNNER_KEYS) {
                     ui.monospace(*key);
                     ui.label(*what);
                     ui.end_row();

@@ -63,3 +63,19 @@ impl<T> Preparation<T> {
     }
 }
 // ANCHOR_END: preparation
+
+impl<T: 'static> Preparation<T> {
+    /// The same work, its result passed through `f`: how a runner that
+    /// takes any chapter ([`crate::chapter::About`]) gets every chapter's
+    /// result as one type.
+    pub fn map<U>(self, f: impl Fn(T) -> U + 'static) -> Preparation<U> {
+        let work = match self.work {
+            Work::Ready(value) => Work::Ready(value.map(f)),
+            Work::Steps(mut step) => Work::Steps(Box::new(move |gpu| match step(gpu) {
+                Step::Progress(done) => Step::Progress(done),
+                Step::Done(value) => Step::Done(f(value)),
+            })),
+        };
+        Preparation { what: self.what, work }
+    }
+}

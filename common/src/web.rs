@@ -10,8 +10,8 @@ use std::cell::RefCell;
 use anyhow::{Context as _, anyhow};
 use wasm_bindgen::JsCast as _;
 
+use crate::Gpu;
 use crate::preparation::Step;
-use crate::{Chapter, Gpu};
 
 const WEBGL_ADVICE: &str = "\n\nThis browser offers no WebGPU, and this chapter needs more than WebGL2 \
      gives (the book's page on running in the browser says what). Open it in a browser with WebGPU: \
@@ -136,12 +136,11 @@ pub fn show_error(message: &str) {
 }
 
 // ANCHOR: prepare
-/// Runs the chapter's [`Chapter::prepare`] a step at a time and returns
-/// what it made. Between steps the page gets its thread back: it paints the
-/// progress message, and handles input, resizes and the test's questions.
-/// `data-progress` says how far it got.
-pub async fn prepare<C: Chapter>(gpu: &Gpu) -> C::Prepared {
-    let mut preparation = C::prepare(gpu);
+/// Runs a chapter's preparation ([`crate::Chapter::prepare`]) a step at a time
+/// and returns what it made. Between steps the page gets its thread back:
+/// it paints the progress message, and handles input, resizes and the
+/// test's questions. `data-progress` says how far it got.
+pub async fn prepare<T: 'static>(gpu: &Gpu, mut preparation: crate::Preparation<T>) -> T {
     let message = web_sys::window().and_then(|w| w.document()).and_then(|d| d.get_element_by_id("message"));
     for steps in 0.. {
         let done = match preparation.step(gpu) {

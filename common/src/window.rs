@@ -22,55 +22,57 @@ use winit::keyboard::{KeyCode, PhysicalKey};
 use winit::window::{CursorGrabMode, Window, WindowId};
 
 use crate::args::{Args, check_size};
+use crate::chapter::{About, Runnable};
 use crate::editor::{Request, ShaderEditor};
 use crate::memory::MemoryUse;
 use crate::overlay::{FrameHistory, Overlay, Panel};
 use crate::probe::{self, Probe};
 use crate::shader;
 use crate::surface::surface_config;
-use crate::{Chapter, DrawCounts, Frame, Gpu, Input, PassCount, PassTimer, Target};
+use crate::{DrawCounts, Frame, Gpu, Input, PassCount, PassTimer, Target};
 
-/// Opens a window and runs chapter `C` until it is closed.
+/// Opens a window and runs the chapter `about` tells of until it is closed.
 #[cfg(not(target_arch = "wasm32"))]
-pub fn run<C: Chapter>(args: &Args) -> anyhow::Result<()> {
+pub fn run(about: About, args: &Args) -> anyhow::Result<()> {
     let event_loop = EventLoop::with_user_event().build().map_err(|e| {
         anyhow!(
             "cannot open a window ({e}). With no display, render headless instead: \
              --screenshot out.png (or run under `xvfb-run -a`)"
         )
     })?;
-    let mut app = App::<C>::new(args, &event_loop);
+    let mut app = App::new(about, args, &event_loop);
     event_loop.run_app(&mut app).context("the event loop failed")?;
     app.error.map_or(Ok(()), Err)
 }
 
-/// Runs chapter `C` in the page's canvas. This returns at once: the
-/// browser owns the event loop and calls back into it every frame.
+/// Runs the chapter `about` tells of in the page's canvas. This returns at
+/// once: the browser owns the event loop and calls back into it every frame.
 #[cfg(target_arch = "wasm32")]
-pub fn spawn<C: Chapter>(args: &Args) -> anyhow::Result<()> {
+pub fn spawn(about: About, args: &Args) -> anyhow::Result<()> {
     use winit::platform::web::EventLoopExtWebSys as _;
     let event_loop = EventLoop::with_user_event().build().map_err(|e| anyhow!("cannot start the event loop: {e}"))?;
-    let app = App::<C>::new(args, &event_loop);
+    let app = App::new(about, args, &event_loop);
     event_loop.spawn_app(app);
     Ok(())
 }
 
-struct App<C: Chapter> {
+struct App {
+    about: About,
     args: Args,
-    running: Option<Running<C>>,
+    running: Option<Running>,
     error: Option<anyhow::Error>,
     /// Delivers the opened window once its device exists (at once on the
     /// desktop, a few promises later in the browser).
-    proxy: EventLoopProxy<Opened<C>>,
+    proxy: EventLoopProxy<Opened>,
     opening: bool,
 }
 
 /// The window, its surface and device, ready or failed.
-struct Opened<C: Chapter>(anyhow::Result<Running<C>>);
+struct Opened(anyhow::Result<Running>);
 
-impl<C: Chapter> App<C> {
-    fn new(args: &Args, event_loop: &EventLoop<Opened<C>>) -> Self {
-        Self { args: args.clone(), running: None, error: None, proxy: event_loop.create_proxy(), opening: false }
+impl App {
+    fn new(about: About, args: &Args, event_loop: &EventLoop<Opened>) -> Self {
+        Self { about, args: args.clone(), running: None, error: None, proxy: event_loop.create_proxy(), opening: false }
     }
 
     fn fail(&mut self, event_loop: &ActiveEventLoop, error: anyhow::Error) {
@@ -83,7 +85,9 @@ impl<C: Chapter> App<C> {
 }
 
 /// Everything that exists while the window is open.
-struct Running<C: Chapter> {
+struct Running {
+    /// The chapter's constants, and how to make it again.
+    about: About,
     window: Arc<Window>,
     surface: wgpu::Surface<'static>,
     config: wgpu::SurfaceConfiguration,
@@ -101,7 +105,7 @@ struct Running<C: Chapter> {
     /// The surface's format without sRGB encoding, for the overlay.
     overlay_format: wgpu::TextureFormat,
     gpu: Gpu,
-    chapter: C,
+    chapter: Box<dyn Runnable>,
     overlay: Overlay,
     input: Input,
     view: usize,
@@ -147,13 +151,13 @@ struct Running<C: Chapter> {
     reported: Option<u64>,
 }
 
-impl<C: Chapter> ApplicationHandler<Opened<C>> for App<C> {
+impl ApplicationHandler<Opened> for App {
     // ANCHOR: resumed
     fn resumed(&mut self, event_loop: &ActiveEventLoop) {
         if self.running.is_some() || self.opening {
             return;
         }
-        let opening = match Opening::start::<C>(event_loop, &self.args) {
+        let opening = match Opening::start(self.about, event_loop, &self.args) {
             Ok(opening) => opening,
             Err(error) => return self.fail(event_loop, error),
         };
@@ -165,7 +169,7 @@ impl<C: Chapter> ApplicationHandler<Opened<C>> for App<C> {
         let proxy = self.proxy.clone();
         let open = async move {
             // Only fails once the loop has ended, when nobody waits for it.
-            let _ = proxy.send_event(Opened(opening.finish::<C>().await));
+            let _ = proxy.send_event(Opened(opening.finish().await));
         };
         #[cfg(not(target_arch = "wasm32"))]
         pollster::block_on(open);
@@ -174,7 +178,7 @@ impl<C: Chapter> ApplicationHandler<Opened<C>> for App<C> {
     }
     // ANCHOR_END: resumed
 
-    fn user_event(&mut self, event_loop: &ActiveEventLoop, Opened(result): Opened<C>) {
+    fn user_event(&mut self, event_loop: &ActiveEventLoop, Opened(result): Opened) {
         self.opening = false;
         match result {
             Ok(running) => {
@@ -278,6 +282,7 @@ impl<C: Chapter> ApplicationHandler<Opened<C>> for App<C> {
 
 /// A window whose device is still being asked for.
 struct Opening {
+    about: About,
     window: Arc<Window>,
     instance: wgpu::InstanceDescriptor,
     args: Args,
@@ -286,8 +291,8 @@ struct Opening {
 impl Opening {
     /// Creates the window: on the desktop at `--size`; in a browser it is
     /// the page's canvas, as large as the page lays it out.
-    fn start<C: Chapter>(event_loop: &ActiveEventLoop, args: &Args) -> anyhow::Result<Self> {
-        let attributes = Window::default_attributes().with_title(format!("{} — From Triangle to Ocean", C::TITLE));
+    fn start(about: About, event_loop: &ActiveEventLoop, args: &Args) -> anyhow::Result<Self> {
+        let attributes = Window::default_attributes().with_title(format!("{} — From Triangle to Ocean", about.title));
         #[cfg(not(target_arch = "wasm32"))]
         let attributes = attributes.with_inner_size(winit::dpi::PhysicalSize::new(args.size.width, args.size.height));
         #[cfg(target_arch = "wasm32")]
@@ -301,13 +306,13 @@ impl Opening {
         // In a browser the page's URL may narrow the backends (`?backend=`).
         #[cfg(target_arch = "wasm32")]
         let instance = wgpu::InstanceDescriptor { backends: crate::web::backends(), ..instance };
-        Ok(Self { window, instance, args: args.clone() })
+        Ok(Self { about, window, instance, args: args.clone() })
     }
 
     /// Asks for a device that can draw into the window, then builds the
     /// chapter and the overlay for it.
-    async fn finish<C: Chapter>(self) -> anyhow::Result<Running<C>> {
-        let Self { window, instance, args } = self;
+    async fn finish(self) -> anyhow::Result<Running> {
+        let Self { about, window, instance, args } = self;
         let instance = crate::gpu::window_instance(instance).await;
         let surface = instance.create_surface(window.clone());
         // In a browser, a canvas no backend can draw into means no WebGPU and no WebGL2.
@@ -315,7 +320,7 @@ impl Opening {
         let surface = surface.map_err(|e| crate::NoAdapter::none(e.to_string()))?;
         #[cfg(not(target_arch = "wasm32"))]
         let surface = surface.context("cannot create a surface for the window")?;
-        let gpu = Gpu::open(instance, Some(&surface), C::gpu_needs()).await?;
+        let gpu = Gpu::open(instance, Some(&surface), (about.gpu_needs)()).await?;
         #[cfg(target_arch = "wasm32")]
         crate::web::note_backend(&gpu);
         check_size(&gpu, args.size)?;
@@ -323,20 +328,20 @@ impl Opening {
         // Long work in steps, so that the page shows progress; the desktop
         // does it in one go.
         #[cfg(target_arch = "wasm32")]
-        let prepared = crate::web::prepare::<C>(&gpu).await;
+        let prepared = crate::web::prepare(&gpu, (about.prepare)(&gpu)).await;
         #[cfg(not(target_arch = "wasm32"))]
-        let prepared = C::prepare(&gpu).finish(&gpu);
+        let prepared = (about.prepare)(&gpu).finish(&gpu);
 
         let size = window.inner_size();
         let (config, scene_format, overlay_format) = surface_config(&gpu, &surface, size.width, size.height)?;
         surface.configure(&gpu.device, &config);
 
-        let view = args.view_index::<C>();
+        let view = args.view_index_in(about.views);
         let target = Target {
             format: scene_format,
             width: config.width,
             height: config.height,
-            samples: C::VIEWS[view].samples(args.antialiasing),
+            samples: about.views[view].samples(args.antialiasing),
         };
         // Shaders are read from the source tree from the start, so that an
         // edit saved before this run is what the first frame shows.
@@ -344,23 +349,23 @@ impl Opening {
         gpu.read_shaders_from(watcher.as_ref().map(|_| PathBuf::from(shader::SHADER_DIR)));
         // A page starts with the reader's stored edits, or a shared link's.
         #[cfg(target_arch = "wasm32")]
-        gpu.start_with_shader_edits(crate::web::stored_edits(C::NAME));
+        gpu.start_with_shader_edits(crate::web::stored_edits(about.name));
         let restored = !gpu.shader_edits().is_empty();
         let mut edits_failed = None;
-        let mut chapter = match crate::chapter::create_prepared::<C>(&gpu, target, prepared, &args.chapter_flags) {
+        let mut chapter = match about.create_prepared(&gpu, target, prepared, &args.chapter_flags) {
             Err(error) if restored => {
                 // Edits that no longer build must not keep the chapter from starting.
                 gpu.drop_shader_edits();
                 edits_failed = Some(format!("the stored shader edits did not build, so they are set aside: {error:#}"));
-                let prepared = C::prepare(&gpu).finish(&gpu);
-                crate::chapter::create_prepared::<C>(&gpu, target, prepared, &args.chapter_flags)?
+                let prepared = (about.prepare)(&gpu).finish(&gpu);
+                about.create_prepared(&gpu, target, prepared, &args.chapter_flags)?
             }
             made => made?,
         };
-        crate::chapter::start(&mut chapter, view, args.camera)?;
+        crate::chapter::start(chapter.as_mut(), view, args.camera)?;
         let overlay = Overlay::new(&window, &gpu, overlay_format);
         let mut editor = ShaderEditor::new();
-        let main_shader = crate::editor::main_file::<C>(&gpu);
+        let main_shader = crate::editor::main_file_of(&about, &gpu);
         if let Some(file) = &args.edit {
             // `--edit` alone: the chapter's main file.
             let file = if file.is_empty() { main_shader.unwrap_or_default() } else { file };
@@ -377,6 +382,7 @@ impl Opening {
         let status = crate::web::notice().unwrap_or(status);
         let status = edits_failed.unwrap_or(status);
         Ok(Running {
+            about,
             window,
             surface,
             config,
@@ -424,13 +430,13 @@ impl Opening {
     }
 }
 
-impl<C: Chapter> Running<C> {
+impl Running {
     fn target(&self) -> Target {
         Target {
             format: self.scene_format,
             width: self.config.width,
             height: self.config.height,
-            samples: C::VIEWS[self.view].samples(self.antialiasing),
+            samples: self.about.views[self.view].samples(self.antialiasing),
         }
     }
 
@@ -464,8 +470,8 @@ impl<C: Chapter> Running<C> {
             return;
         }
         let camera = self.chapter.camera_mut().map(|camera| *camera);
-        let prepared = C::prepare(&self.gpu).finish(&self.gpu);
-        match crate::chapter::create_prepared::<C>(&self.gpu, target, prepared, &self.chapter_flags) {
+        let prepared = (self.about.prepare)(&self.gpu).finish(&self.gpu);
+        match self.about.create_prepared(&self.gpu, target, prepared, &self.chapter_flags) {
             Ok(mut chapter) => {
                 chapter.select_view(self.view);
                 if let (Some(camera), Some(placed)) = (camera, chapter.camera_mut()) {
@@ -539,11 +545,17 @@ impl<C: Chapter> Running<C> {
             self.status = "F12 saves screenshots on the desktop (`cargo run -p <chapter>`)".into();
             return;
         }
-        let path = PathBuf::from(format!("{}-{}-{:.2}s.png", C::NAME, C::VIEWS[self.view].name, self.time));
+        let path =
+            PathBuf::from(format!("{}-{}-{:.2}s.png", self.about.name, self.about.views[self.view].name, self.time));
         let target = self.target();
-        let result =
-            crate::headless::capture(&self.gpu, &mut self.chapter, target, (self.time, self.view), self.antialiasing)
-                .and_then(|image| image.save(&path).with_context(|| format!("cannot write {}", path.display())));
+        let result = crate::headless::capture(
+            &self.gpu,
+            self.chapter.as_mut(),
+            target,
+            (self.time, self.view),
+            self.antialiasing,
+        )
+        .and_then(|image| image.save(&path).with_context(|| format!("cannot write {}", path.display())));
         self.status = match result {
             Ok(()) => format!("saved {}", path.display()),
             Err(error) => format!("screenshot failed: {error:#}"),
@@ -647,7 +659,7 @@ impl<C: Chapter> Running<C> {
                 view: self.view,
                 timer: &timer,
                 drawn: &counts,
-                antialiasing: C::VIEWS[self.view].smoothing(self.antialiasing),
+                antialiasing: self.about.views[self.view].smoothing(self.antialiasing),
             },
         );
         self.last_counts = counts.take();
@@ -659,7 +671,8 @@ impl<C: Chapter> Running<C> {
         let extra = {
             let Self { overlay, window, gpu, editor, .. } = self;
             let mut panel = Panel {
-                chapter: &mut self.chapter,
+                about: &self.about,
+                chapter: self.chapter.as_mut(),
                 view: &mut self.view,
                 time: &mut self.time,
                 paused: &mut self.paused,
@@ -726,7 +739,7 @@ impl<C: Chapter> Running<C> {
         if cfg!(target_arch = "wasm32") && self.reported != Some(self.editor.revision()) {
             #[cfg(target_arch = "wasm32")]
             {
-                crate::web::store_edits(C::NAME, &self.gpu.shader_edits());
+                crate::web::store_edits(self.about.name, &self.gpu.shader_edits());
                 crate::web::show_editor_state(&self.editor);
             }
             self.reported = Some(self.editor.revision());
@@ -742,7 +755,7 @@ impl<C: Chapter> Running<C> {
             drawn: self.drawn,
             skipped: self.skipped,
             surface: (self.config.width, self.config.height),
-            view: C::VIEWS[self.view].name,
+            view: self.about.views[self.view].name,
             typing: self.overlay.ctx.egui_wants_keyboard_input(),
             memory: MemoryUse::now(&self.gpu.device),
             camera: self.chapter.camera_mut().map(|camera| &*camera),

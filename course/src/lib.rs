@@ -11,6 +11,7 @@
 
 use std::process::ExitCode;
 
+use common::chapter::{About, Runnable};
 use common::headless::{Offscreen, draw_frame, read_texture};
 use common::{Camera, Chapter, Gpu, GpuNeeds, PassCount, PassTimer, Target, Tolerance, View, anyhow, image};
 
@@ -162,7 +163,7 @@ fn record<C: Chapter>(part: &'static Part, figure: &'static str, techniques: &'s
         view_settings: C::view_settings,
         run: common::run::<C>,
         open: |gpu, target| {
-            let chapter = common::chapter::create::<C>(gpu, target, &Default::default())?;
+            let chapter = About::of::<C>().create(gpu, target, &Default::default())?;
             Ok(Box::new(Instance { chapter, target }))
         },
     }
@@ -281,12 +282,13 @@ pub trait AnyChapter {
     ) -> anyhow::Result<(image::RgbaImage, Vec<&'static str>, Vec<PassCount>)>;
 }
 
-struct Instance<C: Chapter> {
-    chapter: C,
+/// Any chapter, made and driven through the runners' own [`Runnable`].
+struct Instance {
+    chapter: Box<dyn Runnable>,
     target: Target,
 }
 
-impl<C: Chapter> AnyChapter for Instance<C> {
+impl AnyChapter for Instance {
     fn show(&mut self, view: usize) {
         self.chapter.select_view(view);
     }
@@ -311,11 +313,17 @@ impl<C: Chapter> AnyChapter for Instance<C> {
         view: usize,
         time: f32,
     ) -> anyhow::Result<(image::RgbaImage, Vec<&'static str>, Vec<PassCount>)> {
-        debug_assert!(view < C::VIEWS.len());
+        debug_assert!(view < self.chapter.about().views.len());
         let offscreen = Offscreen::new(&gpu.device, self.target);
         let timer = PassTimer::off();
-        let counted =
-            draw_frame(gpu, &mut self.chapter, &offscreen.view, (time, view), common::Antialiasing::default(), &timer);
+        let counted = draw_frame(
+            gpu,
+            self.chapter.as_mut(),
+            &offscreen.view,
+            (time, view),
+            common::Antialiasing::default(),
+            &timer,
+        );
         let mut passes = timer.take_labels();
         passes.extend(timer.take_cpu().into_iter().map(|(label, _)| label));
         Ok((read_texture(gpu, &offscreen.texture)?, passes, counted))
