@@ -917,7 +917,8 @@ fn picture_alone(page: &ChapterPage) -> anyhow::Result<image::RgbaImage> {
 const MEMORY_CHAPTERS: [(&str, &str); 2] = [("triangle", ""), ("textures", "?view=car")];
 
 /// Watches the page's live heap (the bytes its allocator has handed out
-/// and not taken back) at every frame for `common::leak::WATCHED_FRAMES`
+/// and not taken back) between frames, over `common::leak::STRETCHES`
+/// stretches of `common::leak::SPARSE_STRETCH_FRAMES`
 /// frames, on a small canvas after ten frames to settle; fails when it
 /// grew by more than `common::leak::HEAP_LEAK_BOUND` a frame (the median of the
 /// stretches' slopes: a leak raises every stretch, a one-off one).
@@ -927,7 +928,10 @@ fn memory_stays_flat(browser: &Browser, base: &str, chapter: &str, query: &str) 
     page.eval("document.getElementById('chapter').style.cssText = 'width: 256px; height: 144px', 1")?;
     let settled = page.wait_for("ten frames", |p| p.drawn >= 10)?;
     let mut readings = vec![settled.clone()];
-    while let Some(last) = readings.last().filter(|l| l.drawn < settled.drawn + common::leak::WATCHED_FRAMES) {
+    // The page is read between frames, not at each: stretches long enough
+    // to hold two readings each.
+    let (stretch, watched) = (common::leak::SPARSE_STRETCH_FRAMES, common::leak::STRETCHES as u64);
+    while let Some(last) = readings.last().filter(|l| l.drawn < settled.drawn + stretch * watched) {
         let drawn = last.drawn;
         readings.push(page.wait_for("the next frame while watching memory", |p| p.drawn > drawn)?);
     }
@@ -936,7 +940,7 @@ fn memory_stays_flat(browser: &Browser, base: &str, chapter: &str, query: &str) 
         .map(|p| Some((p.drawn, p.memory?)))
         .collect::<Option<_>>()
         .context("the page reports no memory")?;
-    let per_frame = common::leak::growth_per_frame(&values).context("too few readings")?;
+    let per_frame = common::leak::growth_per_frame_in(&values, stretch).context("too few readings")?;
     let frames = values.last().map_or(0, |r| r.0) - values[0].0;
     let bound = common::leak::HEAP_LEAK_BOUND;
     ensure!(
