@@ -38,6 +38,8 @@ pub const STRETCH_FRAMES: u64 = WATCHED_FRAMES / STRETCHES as u64;
 /// failed "too few readings" once, 2026-11-29); ten always have. Such a
 /// watch spans [`STRETCHES`] of them.
 pub const SPARSE_STRETCH_FRAMES: u64 = 10;
+// A sparse watch is one of longer stretches, or there is no point to it.
+const _: () = assert!(SPARSE_STRETCH_FRAMES > STRETCH_FRAMES);
 
 /// Frames watched more when the first [`WATCHED_FRAMES`] judge a leak, cut
 /// into stretches of the same length. Why: a step that falls across the
