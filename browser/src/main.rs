@@ -930,8 +930,8 @@ fn memory_stays_flat(browser: &Browser, base: &str, chapter: &str, query: &str) 
     let mut readings = vec![settled.clone()];
     // The page is read between frames, not at each: stretches long enough
     // to hold two readings each.
-    let (stretch, watched) = (common::leak::SPARSE_STRETCH_FRAMES, common::leak::STRETCHES as u64);
-    while let Some(last) = readings.last().filter(|l| l.drawn < settled.drawn + stretch * watched) {
+    let (stretch, stretches) = (common::leak::SPARSE_STRETCH_FRAMES, common::leak::STRETCHES as u64);
+    while let Some(last) = readings.last().filter(|l| l.drawn < settled.drawn + stretch * stretches) {
         let drawn = last.drawn;
         readings.push(page.wait_for("the next frame while watching memory", |p| p.drawn > drawn)?);
     }
